@@ -1,0 +1,41 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - polyhedral and ellipsoidal DEM for LAMMPS
+   Shared definitions for the header-only kernels (host and device).
+   This header includes nothing from LAMMPS (DESIGN.md section 4.1).
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_DEFS_H
+#define POLYDEM_DEFS_H
+
+#if defined(LMP_KOKKOS) || defined(POLYDEM_USE_KOKKOS)
+#include <Kokkos_Macros.hpp>
+#define POLYDEM_FN KOKKOS_INLINE_FUNCTION
+#else
+#define POLYDEM_FN inline
+#endif
+
+#include <cfloat>
+
+namespace polydem {
+
+// Kernel status codes (DESIGN.md section 4.3). The host turns them into
+// warnings/errors; device code counts them.
+enum Status : int {
+  STATUS_OK = 0,           // result valid
+  STATUS_SEPARATED = 1,    // no overlap (result valid: zero)
+  STATUS_OVERFLOW = 2,     // fixed-size workspace too small; result invalid
+  STATUS_NO_CONVERGENCE = 3,    // iteration cap hit; result invalid
+  STATUS_DEGENERATE = 4    // input degenerate (NaN, zero size...); result invalid
+};
+
+template <typename T> struct Eps;
+template <> struct Eps<double> {
+  static constexpr double value = DBL_EPSILON;
+};
+template <> struct Eps<float> {
+  static constexpr float value = FLT_EPSILON;
+};
+
+}    // namespace polydem
+
+#endif

@@ -1,0 +1,46 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - plain-data view of one convex shape template, as the kernels
+   see it (host or device). The host class PolyShapeTemplate owns the
+   storage; the Kokkos styles copy all templates into flat device arrays
+   and hand out views into them. No LAMMPS includes (DESIGN.md 4.1).
+
+   Template frame: centroid at the origin, axes = principal axes of
+   inertia, unit scale. A particle is the template scaled by s, rotated by
+   its quaternion q and translated to x:  p_lab = x + s R(q) p_body.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_SHAPE_VIEW_H
+#define POLYDEM_SHAPE_VIEW_H
+
+#include "polydem_math.h"
+
+namespace polydem {
+
+// Compile-time caps for templates (fixed workspaces are sized from these).
+constexpr int MAX_TEMPLATE_VERTS = 128;
+constexpr int MAX_TEMPLATE_FACES = 128;
+
+template <typename T> struct ShapeView {
+  int nverts;             // number of hull vertices
+  int nfaces;             // number of (merged, planar, convex) faces
+  int nedges;             // number of hull edges
+  const T *verts;         // 3*nverts, body frame, unit scale
+  const T *planes;        // 4*nfaces: outward unit normal n, offset d; inside: n.p <= d
+  const int *face_start;  // nfaces+1 offsets into face_verts
+  const int *face_verts;  // vertex loops, counter-clockwise seen from outside
+  const int *edges;       // 2*nedges vertex indices
+  T radius;               // bounding radius about the origin (unit scale)
+  T volume;               // volume at unit scale
+  T inertia[3];           // principal moments per unit density, unit scale (I ~ s^5)
+};
+
+// Pose of one particle: position, orientation, scale.
+template <typename T> struct Pose {
+  Vec3<T> x;
+  Quat<T> q;    // unit quaternion, body -> lab
+  T s;          // scale factor
+};
+
+}    // namespace polydem
+
+#endif
