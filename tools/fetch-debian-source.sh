@@ -1,0 +1,103 @@
+#!/bin/sh
+# fetch-debian-source.sh PKG VERSION DESTDIR
+#
+# Downloads the tarballs of Debian (bookworm) source package PKG=VERSION into
+# DESTDIR with apt-get, using a private apt configuration (deb-src sources
+# file and package lists under DESTDIR/.apt): the system's apt configuration
+# is never touched, no root needed. apt verifies the checksums against the
+# signed Release file. Idempotent: when the orig tarball(s) are already in
+# DESTDIR nothing is downloaded.
+#
+# Prints the absolute path of each orig tarball (one per line) on stdout;
+# everything else goes to stderr.
+#
+# Environment: POLYDEM_DEBIAN_MIRROR (default http://deb.debian.org/debian),
+#              POLYDEM_DEBIAN_SUITE  (default bookworm).
+set -eu
+
+if [ $# -ne 3 ]; then
+  echo "usage: $0 PKG VERSION DESTDIR" >&2
+  exit 2
+fi
+pkg=$1
+version=$2
+destdir=$3
+
+mirror=${POLYDEM_DEBIAN_MIRROR:-http://deb.debian.org/debian}
+suite=${POLYDEM_DEBIAN_SUITE:-bookworm}
+keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+
+# upstream version: drop the epoch and the Debian revision
+upver=${version#*:}
+upver=${upver%-*}
+
+list_origs() {
+  # orig tarballs (main + components), not their signatures
+  for f in "$destdir/${pkg}_${upver}.orig.tar."* "$destdir/${pkg}_${upver}.orig-"*.tar.*; do
+    case $f in
+      *.asc | *'*'*) continue ;;
+    esac
+    [ -f "$f" ] && echo "$f"
+  done
+  return 0
+}
+
+mkdir -p "$destdir"
+destdir=$(cd "$destdir" && pwd)
+
+# complete when the .dsc (or, if it is not served, the stamp written after a
+# successful apt-get run) and at least one orig tarball are present
+stamp="$destdir/.fetched-${pkg}_${version}"
+if [ -f "$stamp" ] && [ -n "$(list_origs)" ]; then
+  echo "fetch-debian-source: ${pkg}=${version} already in $destdir" >&2
+  list_origs
+  exit 0
+fi
+
+if [ ! -r "$keyring" ]; then
+  echo "fetch-debian-source: $keyring missing (apt-get install debian-archive-keyring)" >&2
+  exit 1
+fi
+
+apt_dir="$destdir/.apt"
+mkdir -p "$apt_dir/sources.list.d" "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial"
+cat > "$apt_dir/sources.list.d/polydem-src.sources" <<EOF
+Types: deb-src
+URIs: $mirror
+Suites: $suite
+Components: main
+Signed-By: $keyring
+EOF
+
+# Dir::Cache keeps apt from writing (or needing to lock) the system cache;
+# APT::Sandbox::User=root avoids the _apt user, which cannot write into a
+# user's directory when we run as root.
+set -- \
+  -o Dir::Etc::SourceList=/dev/null \
+  -o Dir::Etc::SourceParts="$apt_dir/sources.list.d" \
+  -o Dir::State::Lists="$apt_dir/lists" \
+  -o Dir::Cache="$apt_dir/cache" \
+  -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache= \
+  -o Debug::NoLocking=1
+if [ "$(id -u)" = 0 ]; then
+  set -- "$@" -o APT::Sandbox::User=root
+fi
+
+echo "fetch-debian-source: apt-get update (private deb-src $suite list)" >&2
+apt-get "$@" -q update >&2
+
+echo "fetch-debian-source: apt-get source --download-only ${pkg}=${version}" >&2
+rc=0
+(cd "$destdir" && apt-get "$@" -q source --download-only "${pkg}=${version}" >&2) || rc=$?
+
+if [ -z "$(list_origs)" ]; then
+  echo "fetch-debian-source: no orig tarball for ${pkg}=${version} in $destdir" >&2
+  exit 1
+fi
+if [ $rc -ne 0 ]; then
+  # e.g. trixie's lammps: the .dsc answers 404 but the tarballs (each
+  # checked against the signed Sources index) arrive
+  echo "fetch-debian-source: warning: apt-get exited with $rc; using the orig tarball(s) it fetched" >&2
+fi
+touch "$stamp"
+list_origs
