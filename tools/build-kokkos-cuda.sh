@@ -1,0 +1,157 @@
+#!/bin/bash
+# build-kokkos-cuda.sh CACHE_DIR
+#
+# Builds Kokkos 3.4.01 for CUDA (sm_80) + Serial, for POLYDEM's CUDA compile
+# check (compile only: no GPU is needed or used), and installs it into
+# CACHE_DIR/kokkos-cuda. Prints that prefix on stdout (last line); progress
+# goes to stderr.
+#
+#   source : packages/kokkos of Debian's trilinos 13.2.0-4 source package,
+#            fetched with tools/fetch-debian-source.sh into CACHE_DIR/src/trilinos
+#   patch  : tools/kokkos-cuda13.patch (CUDA 13 fixes)
+#   build  : CACHE_DIR/kokkos-cuda-build, compiler = Kokkos's bin/nvcc_wrapper
+#            (installed as CACHE_DIR/kokkos-cuda/bin/nvcc_wrapper), ccache if present
+#
+# Idempotent: does nothing when the install is complete and was made from the
+# same patch and options (stamp CACHE_DIR/kokkos-cuda/.polydem-stamp).
+# Concurrent runs on the same CACHE_DIR serialise on a lock file.
+#
+# Environment: NVCC (default: nvcc on PATH, else /usr/local/cuda/bin/nvcc),
+#              POLYDEM_JOBS (default 2), POLYDEM_CUDA_ARCH (default 80).
+set -euo pipefail
+
+if [ $# -ne 1 ]; then
+  echo "usage: $0 CACHE_DIR" >&2
+  exit 2
+fi
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+mkdir -p "$1"
+cache=$(cd "$1" && pwd)
+
+tri_pkg=trilinos
+tri_version=13.2.0-4
+patch_file="$here/kokkos-cuda13.patch"
+jobs=${POLYDEM_JOBS:-2}
+arch=${POLYDEM_CUDA_ARCH:-80}
+case $arch in
+  70) arch_opt=Kokkos_ARCH_VOLTA70 ;;
+  75) arch_opt=Kokkos_ARCH_TURING75 ;;
+  80) arch_opt=Kokkos_ARCH_AMPERE80 ;;
+  86) arch_opt=Kokkos_ARCH_AMPERE86 ;;
+  *) echo "build-kokkos-cuda: unsupported POLYDEM_CUDA_ARCH=$arch (70, 75, 80, 86)" >&2; exit 2 ;;
+esac
+
+src="$cache/kokkos-3.4.01-src"    # patched packages/kokkos
+build="$cache/kokkos-cuda-build"
+prefix="$cache/kokkos-cuda"
+stamp="$prefix/.polydem-stamp"
+
+log() { echo "build-kokkos-cuda: $*" >&2; }
+
+# nvcc: nvcc_wrapper calls `nvcc` from PATH
+if [ -n "${NVCC:-}" ]; then
+  PATH="$(dirname "$NVCC"):$PATH"
+elif ! command -v nvcc > /dev/null 2>&1 && [ -x /usr/local/cuda/bin/nvcc ]; then
+  PATH="/usr/local/cuda/bin:$PATH"
+fi
+export PATH
+if ! command -v nvcc > /dev/null 2>&1; then
+  log "nvcc not found (set NVCC or put it on PATH)"
+  exit 1
+fi
+nvcc_path=$(command -v nvcc)
+nvcc_version=$(nvcc --version | sed -n 's/.*release \([0-9.]*\).*/\1/p')
+
+patch_sum=$(sha256sum "$patch_file" | cut -d' ' -f1)
+# what the stamp certifies; any change rebuilds
+want_stamp="kokkos=3.4.01 trilinos=$tri_version patch=$patch_sum arch=sm_$arch nvcc=$nvcc_path:$nvcc_version"
+
+if [ -f "$stamp" ] && [ "$(head -n1 "$stamp")" = "$want_stamp" ] &&
+  [ -f "$prefix/lib/cmake/Kokkos/KokkosConfig.cmake" ] && [ -x "$prefix/bin/nvcc_wrapper" ]; then
+  log "up to date: $prefix"
+  echo "$prefix"
+  exit 0
+fi
+
+exec 9> "$cache/.kokkos-cuda.lock"
+log "waiting for the lock $cache/.kokkos-cuda.lock" 
+flock 9
+# another run may have finished while we waited
+if [ -f "$stamp" ] && [ "$(head -n1 "$stamp")" = "$want_stamp" ] &&
+  [ -f "$prefix/lib/cmake/Kokkos/KokkosConfig.cmake" ] && [ -x "$prefix/bin/nvcc_wrapper" ]; then
+  log "up to date: $prefix"
+  echo "$prefix"
+  exit 0
+fi
+
+t0=$(date +%s)
+
+# --- 1. source: only packages/kokkos, patched --------------------------------
+if [ ! -f "$src/.polydem-patched" ] || [ "$(cat "$src/.polydem-patched")" != "$patch_sum" ]; then
+  tarball=$("$here/fetch-debian-source.sh" "$tri_pkg" "$tri_version" "$cache/src/$tri_pkg" | head -n1)
+  log "extracting packages/kokkos from $(basename "$tarball")"
+  tmp="$cache/.kokkos-extract.$$"
+  rm -rf "$tmp" "$src"
+  mkdir -p "$tmp"
+  tar -xf "$tarball" -C "$tmp" --wildcards --no-wildcards-match-slash '*/packages/kokkos'
+  mv "$tmp"/*/packages/kokkos "$src"
+  rm -rf "$tmp"
+  log "applying $(basename "$patch_file")"
+  patch -p1 -d "$src" --forward --batch < "$patch_file" >&2
+  echo "$patch_sum" > "$src/.polydem-patched"
+  rm -rf "$build"    # configured from the old tree
+fi
+
+# --- 2. configure + build + install ------------------------------------------
+launcher=()
+if command -v ccache > /dev/null 2>&1; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER="$(command -v ccache)")
+fi
+
+configure() {    # $1 = C++ standard
+  rm -rf "$build"
+  cmake -S "$src" -B "$build" \
+    -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_INSTALL_PREFIX="$prefix" \
+    -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" \
+    -DCMAKE_CXX_FLAGS="-arch=sm_$arch" \
+    -DCMAKE_CXX_STANDARD="$1" \
+    -DCMAKE_CXX_EXTENSIONS=OFF \
+    -DCMAKE_POSITION_INDEPENDENT_CODE=ON \
+    "${launcher[@]}" \
+    -DKokkos_ENABLE_CUDA=ON \
+    -DKokkos_ENABLE_SERIAL=ON \
+    -DKokkos_ENABLE_OPENMP=OFF \
+    -DKokkos_ENABLE_CUDA_LAMBDA=ON \
+    -DKokkos_ENABLE_TESTS=OFF \
+    -DKokkos_ENABLE_EXAMPLES=OFF \
+    -D"$arch_opt"=ON >&2
+}
+
+rm -rf "$prefix"
+std=""
+for s in 17 14; do
+  log "configuring (C++$s, sm_$arch, $(basename "$nvcc_path") $nvcc_version)"
+  if configure "$s" && cmake --build "$build" -j "$jobs" >&2; then
+    std=$s
+    break
+  fi
+  log "C++$s failed"
+done
+if [ -z "$std" ]; then
+  log "Kokkos CUDA build failed (see the output above)"
+  exit 1
+fi
+cmake --install "$build" >&2
+
+# sanity: the installed wrapper and config are what the check uses
+[ -x "$prefix/bin/nvcc_wrapper" ] || { log "no $prefix/bin/nvcc_wrapper after install"; exit 1; }
+[ -f "$prefix/lib/cmake/Kokkos/KokkosConfig.cmake" ] || { log "no KokkosConfig.cmake after install"; exit 1; }
+
+{
+  echo "$want_stamp"
+  echo "cxx_standard=$std"
+  echo "built=$(date -u +%Y-%m-%dT%H:%M:%SZ) seconds=$(($(date +%s) - t0))"
+} > "$stamp"
+log "installed in $prefix (C++$std, $(($(date +%s) - t0)) s)"
+echo "$prefix"
