@@ -1,0 +1,119 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - host-side convex shape template (seed polyhedral 2.1).
+
+   Reads a shape file (doc/Howto_polyhedron_shapes.rst) or a point list,
+   builds the convex hull with CGAL, computes volume, centroid and inertia
+   exactly (rational arithmetic), moves the centroid to the origin, rotates
+   into the principal frame, merges coplanar hull triangles into convex
+   polygonal faces and hands the result to the kernels as ShapeView<T>.
+
+   Host only. No LAMMPS includes and no CGAL here: CGAL lives in the .cpp
+   so that LAMMPS translation units can include this header cheaply.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_SHAPE_TEMPLATE_H
+#define POLYDEM_SHAPE_TEMPLATE_H
+
+#include "polydem_shape_view.h"
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+// Every problem with a shape (unreadable file, bad numbers, degenerate or
+// non-convex geometry, caps exceeded). what() names the source and, for
+// files, the line: "cube.shape:7: expected 3 numbers, got 2".
+class ShapeError : public std::runtime_error {
+ public:
+  explicit ShapeError(const std::string &msg) : std::runtime_error(msg) {}
+};
+
+struct ShapeOptions {
+  // Accept points strictly inside the hull (non-convex input) and use the
+  // hull, with a warning. Default: such input is an error.
+  bool hull = false;
+  // Extra factor applied to the coordinates after the file's own `scale`.
+  double scale = 1.0;
+};
+
+class PolyShapeTemplate {
+ public:
+  using Point = std::array<double, 3>;
+
+  // Load a shape file. Throws ShapeError.
+  static PolyShapeTemplate from_file(const std::string &path,
+                                     const ShapeOptions &opt = ShapeOptions());
+  // Build from points (+ optional faces, 0-based indices, used only for
+  // validation). `name` is used in messages and as name(). Throws ShapeError.
+  static PolyShapeTemplate from_points(const std::vector<Point> &pts,
+                                       const std::vector<std::vector<int>> &faces = {},
+                                       const ShapeOptions &opt = ShapeOptions(),
+                                       const std::string &name = "points");
+
+  // Kernel view into this object's storage: valid while the object lives
+  // (a move keeps the storage, a copy has its own).
+  ShapeView<double> view() const;
+  ShapeView<float> view_float() const;
+
+  const std::string &name() const { return name_; }    // file name or given name
+  const std::string &file() const { return file_; }    // path as given ("" if from points)
+  const std::vector<std::string> &warnings() const { return warnings_; }
+
+  int nverts() const { return (int) verts_.size() / 3; }
+  int nfaces() const { return (int) face_start_.size() - 1; }
+  int nedges() const { return (int) edges_.size() / 2; }
+  int ninput_verts() const { return ninput_; }      // points read
+  int nhull_triangles() const { return ntri_; }     // hull triangles before merging
+
+  Point vertex(int i) const { return {verts_[3 * i], verts_[3 * i + 1], verts_[3 * i + 2]}; }
+  // Face i: vertex indices (CCW seen from outside) and plane n.p = d (|n| = 1).
+  std::vector<int> face(int i) const;
+  std::array<double, 4> plane(int i) const
+  {
+    return {planes_[4 * i], planes_[4 * i + 1], planes_[4 * i + 2], planes_[4 * i + 3]};
+  }
+  std::array<int, 2> edge(int i) const { return {edges_[2 * i], edges_[2 * i + 1]}; }
+
+  double volume() const { return volume_; }    // unit scale, length^3
+  double radius() const { return radius_; }    // max |vertex| about the centroid
+  // Principal moments per unit density (length^5), ascending.
+  const std::array<double, 3> &moments() const { return moments_; }
+
+  // Where the template came from: p_input = centroid + R p_body, with R's
+  // columns the principal axes in input coordinates (proper rotation).
+  const Point &input_centroid() const { return centroid_; }
+  const std::array<std::array<double, 3>, 3> &rotation() const { return rot_; }
+  // Same rotation as a unit quaternion (w,x,y,z). A particle with this
+  // orientation at position x appears exactly as written in the file, with
+  // the file's centroid at x.
+  Quat<double> input_orientation() const;
+
+ private:
+  PolyShapeTemplate() = default;
+  // vlines/flines: file line of each vertex/face (empty: from points);
+  // vkey: line of the `vertices` keyword.
+  void build(const std::vector<Point> &pts, const std::vector<std::vector<int>> &faces,
+             const std::vector<int> &vlines, const std::vector<int> &flines, int vkey,
+             const ShapeOptions &opt);
+  void make_float_copy();
+
+  std::string name_, file_;
+  std::vector<std::string> warnings_;
+  int ninput_ = 0, ntri_ = 0;
+
+  std::vector<double> verts_, planes_;
+  std::vector<int> face_start_, face_verts_, edges_;
+  std::vector<float> verts_f_, planes_f_;
+
+  double volume_ = 0.0, radius_ = 0.0;
+  std::array<double, 3> moments_ = {0.0, 0.0, 0.0};
+  Point centroid_ = {0.0, 0.0, 0.0};
+  std::array<std::array<double, 3>, 3> rot_ = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+};
+
+}    // namespace polydem
+
+#endif
