@@ -92,7 +92,7 @@ Moments exact_moments(const std::vector<Pt> &v, const std::vector<std::array<int
       s[i] = a[i] + b[i] + c[i];
     }
     Q det = a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
-        a[2] * (b[0] * c[1] - b[1] * c[0]);
+            a[2] * (b[0] * c[1] - b[1] * c[0]);
     m.vol6 += det;
     for (int i = 0; i < 3; ++i) {
       m.m1_24[i] += det * s[i];
@@ -139,8 +139,8 @@ void jacobi3(const double a_in[3][3], long double w[3], long double e[3][3])
       for (int q = p + 1; q < 3; ++q) {
         if (a[p][q] == 0.0L) continue;
         long double theta = (a[q][q] - a[p][p]) / (2.0L * a[p][q]);
-        long double t = (theta >= 0 ? 1.0L : -1.0L) /
-            (std::fabs(theta) + std::sqrt(theta * theta + 1.0L));
+        long double t =
+            (theta >= 0 ? 1.0L : -1.0L) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0L));
         long double c = 1.0L / std::sqrt(t * t + 1.0L), s = t * c;
         for (int k = 0; k < 3; ++k) {    // A <- A J
           long double akp = a[k][p], akq = a[k][q];
@@ -163,12 +163,18 @@ void jacobi3(const double a_in[3][3], long double w[3], long double e[3][3])
 }
 
 using V3 = std::array<long double, 3>;
-V3 col(const long double e[3][3], int j) { return {e[0][j], e[1][j], e[2][j]}; }
+V3 col(const long double e[3][3], int j)
+{
+  return {e[0][j], e[1][j], e[2][j]};
+}
 V3 vcross(const V3 &a, const V3 &b)
 {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-long double vdot(const V3 &a, const V3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+long double vdot(const V3 &a, const V3 &b)
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 V3 vunit(const V3 &a)
 {
   long double n = std::sqrt(vdot(a, a));
@@ -243,10 +249,13 @@ void choose_axes(const double inertia[3][3], double rot[3][3])
     }
   }
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) rot[i][j] = (double) c[j][i];
+    for (int j = 0; j < 3; ++j) rot[i][j] = (double)c[j][i];
 }
 
-V3 vsub(const Pt &a, const Pt &b) { return {(long double) a[0] - b[0], (long double) a[1] - b[1], (long double) a[2] - b[2]}; }
+V3 vsub(const Pt &a, const Pt &b)
+{
+  return {(long double)a[0] - b[0], (long double)a[1] - b[1], (long double)a[2] - b[2]};
+}
 
 // Newell normal (area-weighted, not normalised) of a vertex loop.
 V3 newell(const std::vector<Pt> &v, const std::vector<int> &loop)
@@ -254,9 +263,9 @@ V3 newell(const std::vector<Pt> &v, const std::vector<int> &loop)
   V3 n = {0, 0, 0};
   for (size_t i = 0; i < loop.size(); ++i) {
     const Pt &a = v[loop[i]], &b = v[loop[(i + 1) % loop.size()]];
-    n[0] += ((long double) a[1] - b[1]) * ((long double) a[2] + b[2]);
-    n[1] += ((long double) a[2] - b[2]) * ((long double) a[0] + b[0]);
-    n[2] += ((long double) a[0] - b[0]) * ((long double) a[1] + b[1]);
+    n[0] += ((long double)a[1] - b[1]) * ((long double)a[2] + b[2]);
+    n[1] += ((long double)a[2] - b[2]) * ((long double)a[0] + b[0]);
+    n[2] += ((long double)a[0] - b[0]) * ((long double)a[1] + b[1]);
   }
   return n;
 }
@@ -285,7 +294,8 @@ double to_number(const std::string &tok, const std::string &where, const char *w
   char *end = nullptr;
   errno = 0;
   double x = std::strtod(b, &end);
-  if (end == b || *end != '\0') throw ShapeError(where + ": " + what + " '" + tok + "' is not a number");
+  if (end == b || *end != '\0')
+    throw ShapeError(where + ": " + what + " '" + tok + "' is not a number");
   if (!std::isfinite(x)) throw ShapeError(where + ": " + what + " '" + tok + "' is not finite");
   return x;
 }
@@ -342,8 +352,9 @@ PolyShapeTemplate PolyShapeTemplate::from_file(const std::string &path, const Sh
       std::vector<int> f;
       for (const auto &w : t) {
         long k = to_int(w, where, "vertex index");
-        if (k < 0 || k > 1000000000L) throw ShapeError(where + ": vertex index " + w + " out of range");
-        f.push_back((int) k);
+        if (k < 0 || k > 1000000000L)
+          throw ShapeError(where + ": vertex index " + w + " out of range");
+        f.push_back((int)k);
       }
       faces.push_back(f);
       flines.push_back(lineno);
@@ -359,20 +370,28 @@ PolyShapeTemplate PolyShapeTemplate::from_file(const std::string &path, const Sh
       long n = to_int(t[1], where, "count");
       if (n < 1) throw ShapeError(where + ": '" + key + "' count must be positive, got " + t[1]);
       if (key == "vertices") {
-        if (vkey) throw ShapeError(where + ": second 'vertices' section (first at line " + std::to_string(vkey) + ")");
+        if (vkey)
+          throw ShapeError(where + ": second 'vertices' section (first at line " +
+                           std::to_string(vkey) + ")");
         vkey = lineno;
         nv_expect = n;
         mode = VERTS;
       } else {
-        if (fkey) throw ShapeError(where + ": second 'faces' section (first at line " + std::to_string(fkey) + ")");
+        if (fkey)
+          throw ShapeError(where + ": second 'faces' section (first at line " +
+                           std::to_string(fkey) + ")");
         fkey = lineno;
         nf_expect = n;
         mode = FACES;
       }
       left = n;
     } else if (key == "scale") {
-      if (t.size() != 2) throw ShapeError(where + ": expected 'scale s', got " + std::to_string(t.size()) + " words");
-      if (skey) throw ShapeError(where + ": second 'scale' line (first at line " + std::to_string(skey) + ")");
+      if (t.size() != 2)
+        throw ShapeError(where + ": expected 'scale s', got " + std::to_string(t.size()) +
+                         " words");
+      if (skey)
+        throw ShapeError(where + ": second 'scale' line (first at line " + std::to_string(skey) +
+                         ")");
       skey = lineno;
       scale = to_number(t[1], where, "scale");
       if (!(scale > 0)) throw ShapeError(where + ": scale must be positive, got " + t[1]);
@@ -391,7 +410,7 @@ PolyShapeTemplate PolyShapeTemplate::from_file(const std::string &path, const Sh
 
   for (size_t f = 0; f < faces.size(); ++f)
     for (int k : faces[f])
-      if (k >= (int) pts.size())
+      if (k >= (int)pts.size())
         throw ShapeError(path + ":" + std::to_string(flines[f]) + ": vertex index " +
                          std::to_string(k) + " out of range 0.." + std::to_string(pts.size() - 1));
 
@@ -431,7 +450,7 @@ PolyShapeTemplate PolyShapeTemplate::from_points(const std::vector<Point> &pts_i
     if (faces[f].size() < 3)
       throw ShapeError(name + ": face " + std::to_string(f) + " has fewer than 3 vertices");
     for (int k : faces[f])
-      if (k < 0 || k >= (int) pts.size())
+      if (k < 0 || k >= (int)pts.size())
         throw ShapeError(name + ": face " + std::to_string(f) + ": vertex index " +
                          std::to_string(k) + " out of range");
   }
@@ -463,8 +482,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   };
   const std::string head = vkey > 0 ? src + ":" + std::to_string(vkey) : src;
   warnings_.clear();
-  const int n = (int) pts.size();
-  ninput_ = n;
+  const int n = (int)pts.size();
+  input_ = pts;
   if (n < 4)
     throw ShapeError(head + ": a polyhedron needs at least 4 vertices, got " + std::to_string(n));
 
@@ -476,9 +495,9 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   for (int k = 1; k < n; ++k)
     if (pts[ord[k]] == pts[ord[k - 1]]) {
       int a = std::min(ord[k], ord[k - 1]), b = std::max(ord[k], ord[k - 1]);
-      throw ShapeError(vat(b) + ": vertex " + std::to_string(b) + " duplicates vertex " +
-                       std::to_string(a) +
-                       (vlines.empty() ? std::string() : " (line " + std::to_string(vlines[a]) + ")"));
+      throw ShapeError(
+          vat(b) + ": vertex " + std::to_string(b) + " duplicates vertex " + std::to_string(a) +
+          (vlines.empty() ? std::string() : " (line " + std::to_string(vlines[a]) + ")"));
     }
 
   double lo[3], hi[3];
@@ -535,7 +554,7 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     tri_in.push_back(t);
     fidx.push_back(f);
   }
-  ntri_ = (int) tri_in.size();
+  ntri_ = (int)tri_in.size();
 
   // unit normal (long double) and signed distance to a hull triangle's plane
   auto tri_normal = [&](const std::array<int, 3> &t) {
@@ -560,7 +579,7 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   }
   if (ninterior > 0) {
     std::string what = vat(first_interior) + ": vertex " + std::to_string(first_interior) +
-        " lies inside the convex hull of the other vertices";
+                       " lies inside the convex hull of the other vertices";
     if (!opt.hull)
       throw ShapeError(what + ": the shape is not convex (the 'hull' option uses its convex hull)");
     warnings_.push_back(what + "; using the convex hull (" + std::to_string(ninterior) +
@@ -574,15 +593,15 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     std::vector<int> s = loop;
     std::sort(s.begin(), s.end());
     if (std::adjacent_find(s.begin(), s.end()) != s.end())
-      throw ShapeError(fat((int) f) + ": face repeats a vertex index");
+      throw ShapeError(fat((int)f) + ": face repeats a vertex index");
     V3 nn = newell(pts, loop);
     long double len = std::sqrt(vdot(nn, nn));
-    if (!(len > 0)) throw ShapeError(fat((int) f) + ": face has zero area");
+    if (!(len > 0)) throw ShapeError(fat((int)f) + ": face has zero area");
     nn = vunit(nn);
     long double d0 = vdot(nn, vsub(pts[loop[0]], pts[0]));
     for (int k : loop)
       if (std::fabs(vdot(nn, vsub(pts[k], pts[0])) - d0) > tol)
-        throw ShapeError(fat((int) f) + ": face is not planar (vertex " + std::to_string(k) + ")");
+        throw ShapeError(fat((int)f) + ": face is not planar (vertex " + std::to_string(k) + ")");
     long double smin = 0, smax = 0;
     for (int i = 0; i < n; ++i) {
       long double sd = vdot(nn, vsub(pts[i], pts[0])) - d0;
@@ -590,9 +609,10 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
       smax = std::max(smax, sd);
     }
     if (smax > tol && smin < -tol) {
-      std::string what = fat((int) f) + ": vertices lie on both sides of this face";
+      std::string what = fat((int)f) + ": vertices lie on both sides of this face";
       if (!opt.hull)
-        throw ShapeError(what + ": the shape is not convex (the 'hull' option uses its convex hull)");
+        throw ShapeError(what +
+                         ": the shape is not convex (the 'hull' option uses its convex hull)");
       if (!face_warned) warnings_.push_back(what + "; faces ignored, using the convex hull");
       face_warned = true;
     }
@@ -603,10 +623,10 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   std::vector<Pt> hv;
   for (int i = 0; i < n; ++i)
     if (on_hull[i]) {
-      newid[i] = (int) hv.size();
+      newid[i] = (int)hv.size();
       hv.push_back(pts[i]);
     }
-  const int nh = (int) hv.size();
+  const int nh = (int)hv.size();
   if (nh > MAX_TEMPLATE_VERTS)
     throw ShapeError(src + ": the hull has " + std::to_string(nh) + " vertices, more than " +
                      "MAX_TEMPLATE_VERTS = " + std::to_string(MAX_TEMPLATE_VERTS));
@@ -616,13 +636,13 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   // ---- merge coplanar hull triangles (before any rotation: exact test
   // first, tolerance only for rounded irrational coordinates)
   std::map<Mesh::Face_index, int> tri_of;
-  for (size_t k = 0; k < fidx.size(); ++k) tri_of[fidx[k]] = (int) k;
+  for (size_t k = 0; k < fidx.size(); ++k) tri_of[fidx[k]] = (int)k;
   std::vector<int> group(tri.size(), -1);
   int ngroups = 0;
   for (size_t seed = 0; seed < tri.size(); ++seed) {
     if (group[seed] >= 0) continue;
     group[seed] = ngroups;
-    std::vector<int> stack = {(int) seed};
+    std::vector<int> stack = {(int)seed};
     while (!stack.empty()) {
       int t = stack.back();
       stack.pop_back();
@@ -633,7 +653,7 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
         if (group[u] >= 0) continue;
         int w = vid[sm.target(sm.next(ho))];    // vertex of u not on the shared edge
         bool flat = CGAL::orientation(P[a[0]], P[a[1]], P[a[2]], P[w]) == CGAL::COPLANAR ||
-            std::fabs(vdot(tnorm[t], vsub(pts[w], pts[a[0]]))) <= tol;
+                    std::fabs(vdot(tnorm[t], vsub(pts[w], pts[a[0]]))) <= tol;
         if (flat) {
           group[u] = ngroups;
           stack.push_back(u);
@@ -686,7 +706,7 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   for (int k = 0; k < nh; ++k) {
     V3 d = vsub(hv[k], cen);
     for (int j = 0; j < 3; ++j)
-      bv[k][j] = (double) (R[0][j] * d[0] + R[1][j] * d[1] + R[2][j] * d[2]);
+      bv[k][j] = (double)(R[0][j] * d[0] + R[1][j] * d[1] + R[2][j] * d[2]);
   }
 
   // ---- final properties, exactly, of the vertices actually stored
@@ -707,12 +727,11 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   edges_.clear();
   for (int g = 0; g < ngroups; ++g) {
     face_verts_.insert(face_verts_.end(), loops[g].begin(), loops[g].end());
-    face_start_.push_back((int) face_verts_.size());
+    face_start_.push_back((int)face_verts_.size());
     V3 nn = vunit(newell(bv, loops[g]));
     long double d = -1e300L;
-    for (int k : loops[g])
-      d = std::max(d, nn[0] * bv[k][0] + nn[1] * bv[k][1] + nn[2] * bv[k][2]);
-    planes_.insert(planes_.end(), {(double) nn[0], (double) nn[1], (double) nn[2], (double) d});
+    for (int k : loops[g]) d = std::max(d, nn[0] * bv[k][0] + nn[1] * bv[k][1] + nn[2] * bv[k][2]);
+    planes_.insert(planes_.end(), {(double)nn[0], (double)nn[1], (double)nn[2], (double)d});
     for (size_t k = 0; k < loops[g].size(); ++k) {
       int a = loops[g][k], b = loops[g][(k + 1) % loops[g].size()];
       if (a < b) edges_.insert(edges_.end(), {a, b});
@@ -749,24 +768,24 @@ static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, c
   s.face_start = fs;
   s.face_verts = fv;
   s.edges = ed;
-  s.radius = (T) r;
-  s.volume = (T) vol;
-  for (int i = 0; i < 3; ++i) s.inertia[i] = (T) mom[i];
+  s.radius = (T)r;
+  s.volume = (T)vol;
+  for (int i = 0; i < 3; ++i) s.inertia[i] = (T)mom[i];
   return s;
 }
 
 ShapeView<double> PolyShapeTemplate::view() const
 {
   return make_view<double>(nverts(), nfaces(), nedges(), verts_.data(), planes_.data(),
-                           face_start_.data(), face_verts_.data(), edges_.data(), radius_,
-                           volume_, moments_);
+                           face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
+                           moments_);
 }
 
 ShapeView<float> PolyShapeTemplate::view_float() const
 {
   return make_view<float>(nverts(), nfaces(), nedges(), verts_f_.data(), planes_f_.data(),
-                          face_start_.data(), face_verts_.data(), edges_.data(), radius_,
-                          volume_, moments_);
+                          face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
+                          moments_);
 }
 
 // rotation matrix -> unit quaternion (Shepperd's method: largest pivot)

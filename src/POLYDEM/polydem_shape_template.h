@@ -62,11 +62,15 @@ class PolyShapeTemplate {
   const std::string &file() const { return file_; }    // path as given ("" if from points)
   const std::vector<std::string> &warnings() const { return warnings_; }
 
-  int nverts() const { return (int) verts_.size() / 3; }
-  int nfaces() const { return (int) face_start_.size() - 1; }
-  int nedges() const { return (int) edges_.size() / 2; }
-  int ninput_verts() const { return ninput_; }      // points read
-  int nhull_triangles() const { return ntri_; }     // hull triangles before merging
+  int nverts() const { return (int)verts_.size() / 3; }
+  int nfaces() const { return (int)face_start_.size() - 1; }
+  int nedges() const { return (int)edges_.size() / 2; }
+  int ninput_verts() const { return (int)input_.size(); }    // points read
+  // The points exactly as they entered the hull computation (all scales
+  // applied). from_points(input_points(), {}, {hull}) rebuilds this
+  // template bit for bit (used for restart records).
+  const std::vector<Point> &input_points() const { return input_; }
+  int nhull_triangles() const { return ntri_; }    // hull triangles before merging
 
   Point vertex(int i) const { return {verts_[3 * i], verts_[3 * i + 1], verts_[3 * i + 2]}; }
   // Face i: vertex indices (CCW seen from outside) and plane n.p = d (|n| = 1).
@@ -102,7 +106,8 @@ class PolyShapeTemplate {
 
   std::string name_, file_;
   std::vector<std::string> warnings_;
-  int ninput_ = 0, ntri_ = 0;
+  std::vector<Point> input_;
+  int ntri_ = 0;
 
   std::vector<double> verts_, planes_;
   std::vector<int> face_start_, face_verts_, edges_;
