@@ -688,6 +688,9 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     if (loops[g].size() != nx.size())
       throw ShapeError(src + ": internal error: merged face boundary is not one loop");
   }
+  // canonical order (CGAL's face order is not guaranteed reproducible):
+  // each loop starts at its smallest vertex; loops sorted lexicographically
+  std::sort(loops.begin(), loops.end());
 
   // ---- exact mass properties in input coordinates
   double vol0, inertia0[3][3];
@@ -737,6 +740,11 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
       if (a < b) edges_.insert(edges_.end(), {a, b});
     }
   }
+  std::vector<std::array<int, 2>> es;
+  for (size_t k = 0; k < edges_.size(); k += 2) es.push_back({edges_[k], edges_[k + 1]});
+  std::sort(es.begin(), es.end());
+  edges_.clear();
+  for (const auto &e : es) edges_.insert(edges_.end(), {e[0], e[1]});
   if (nverts() - nedges() + nfaces() != 2)
     throw ShapeError(src + ": internal error: hull fails Euler's formula V - E + F = 2");
   make_float_copy();
