@@ -1,0 +1,193 @@
+# Builds LAMMPS with POLYDEM compiled in.
+#
+# LAMMPS's own CMake only builds packages that live in its src/ folder, so we
+# stage a LAMMPS tree in the build directory: symbolic links to the pristine
+# LAMMPS source, plus
+#   src/POLYDEM        links to our non-Kokkos files
+#   src/KOKKOS         LAMMPS's KOKKOS files plus links to our *_kokkos.* files
+#   src/atom.{h,cpp}   copies with three per-atom fields added (quat, pshape,
+#                      pscale), see "atom.h / atom.cpp" below
+#   cmake/             a copy whose package list knows POLYDEM and that
+#                      compiles as C++17
+# and add that tree's cmake/ folder as a subdirectory.
+
+set(POLYDEM_LAMMPS_DEB_VERSION "20220106.git7586adbb6a+ds1-2" CACHE STRING
+    "Version of Debian's lammps source package used when LAMMPS_SOURCE_DIR is not given")
+set(LAMMPS_SOURCE_DIR "" CACHE PATH "A LAMMPS source tree (with src/ and cmake/); empty: fetch Debian's")
+
+# ---------------------------------------------------------------------------
+# 1. the pristine LAMMPS source
+if(NOT LAMMPS_SOURCE_DIR)
+  set(_lmp_cache ${POLYDEM_CACHE_DIR}/lammps-${POLYDEM_LAMMPS_DEB_VERSION})
+  set(_lmp_stamp ${_lmp_cache}/.extracted)
+  if(NOT EXISTS ${_lmp_stamp})
+    message(STATUS "POLYDEM: fetching Debian's lammps ${POLYDEM_LAMMPS_DEB_VERSION} source with apt")
+    execute_process(
+      COMMAND bash ${CMAKE_SOURCE_DIR}/tools/fetch-debian-source.sh lammps
+              ${POLYDEM_LAMMPS_DEB_VERSION} ${_lmp_cache}/download
+      RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+    if(NOT _rc EQUAL 0)
+      message(FATAL_ERROR "POLYDEM: could not fetch the LAMMPS source:\n${_out}\n${_err}\n"
+                          "Run tools/install-deps.sh first, or pass -DLAMMPS_SOURCE_DIR=...")
+    endif()
+    file(GLOB _tarball ${_lmp_cache}/download/lammps_*.orig.tar.*)
+    if(NOT _tarball)
+      message(FATAL_ERROR "POLYDEM: no lammps orig tarball in ${_lmp_cache}/download")
+    endif()
+    message(STATUS "POLYDEM: extracting ${_tarball}")
+    file(REMOVE_RECURSE ${_lmp_cache}/src)
+    file(ARCHIVE_EXTRACT INPUT ${_tarball} DESTINATION ${_lmp_cache}/src)
+    file(TOUCH ${_lmp_stamp})
+  endif()
+  file(GLOB _lmp_top LIST_DIRECTORIES true ${_lmp_cache}/src/*)
+  list(GET _lmp_top 0 _lmp_top)
+  set(_lammps_pristine ${_lmp_top})
+else()
+  set(_lammps_pristine ${LAMMPS_SOURCE_DIR})
+endif()
+if(NOT EXISTS ${_lammps_pristine}/src/atom.cpp OR NOT EXISTS ${_lammps_pristine}/cmake/CMakeLists.txt)
+  message(FATAL_ERROR "POLYDEM: ${_lammps_pristine} is not a LAMMPS source tree (no src/atom.cpp, cmake/CMakeLists.txt)")
+endif()
+message(STATUS "POLYDEM: LAMMPS source: ${_lammps_pristine}")
+
+# ---------------------------------------------------------------------------
+# 2. the staged tree
+set(POLYDEM_STAGE ${CMAKE_BINARY_DIR}/lammps-stage)
+file(MAKE_DIRECTORY ${POLYDEM_STAGE}/src)
+
+function(polydem_link target link)
+  if(NOT EXISTS ${link} AND NOT IS_SYMLINK ${link})
+    file(CREATE_LINK ${target} ${link} SYMBOLIC)
+  endif()
+endfunction()
+
+# replace FROM by FROM+TO in the string VAR, failing loudly if FROM is absent
+function(polydem_insert_after var from what file)
+  string(FIND "${${var}}" "${from}" _pos)
+  if(_pos EQUAL -1)
+    message(FATAL_ERROR "POLYDEM: cannot patch ${file}: anchor '${from}' not found. "
+                        "This LAMMPS version is not supported (tested: ${POLYDEM_LAMMPS_DEB_VERSION}).")
+  endif()
+  string(REPLACE "${from}" "${from}${what}" _new "${${var}}")
+  set(${var} "${_new}" PARENT_SCOPE)
+endfunction()
+
+# top level: everything but src/ and cmake/
+file(GLOB _entries RELATIVE ${_lammps_pristine} ${_lammps_pristine}/*)
+foreach(e ${_entries})
+  if(NOT e STREQUAL "src" AND NOT e STREQUAL "cmake")
+    polydem_link(${_lammps_pristine}/${e} ${POLYDEM_STAGE}/${e})
+  endif()
+endforeach()
+
+# src/: links, except KOKKOS, atom.h, atom.cpp
+file(GLOB _entries RELATIVE ${_lammps_pristine}/src ${_lammps_pristine}/src/*)
+foreach(e ${_entries})
+  if(NOT e MATCHES "^(KOKKOS|atom\\.h|atom\\.cpp|POLYDEM)$")
+    polydem_link(${_lammps_pristine}/src/${e} ${POLYDEM_STAGE}/src/${e})
+  endif()
+endforeach()
+file(MAKE_DIRECTORY ${POLYDEM_STAGE}/src/KOKKOS ${POLYDEM_STAGE}/src/POLYDEM)
+file(GLOB _entries RELATIVE ${_lammps_pristine}/src/KOKKOS ${_lammps_pristine}/src/KOKKOS/*)
+foreach(e ${_entries})
+  polydem_link(${_lammps_pristine}/src/KOKKOS/${e} ${POLYDEM_STAGE}/src/KOKKOS/${e})
+endforeach()
+
+# our package: *_kokkos.* files go to KOKKOS (LAMMPS pairs them with their base
+# style there), everything else to POLYDEM. Links are refreshed on every configure.
+file(GLOB _ours CONFIGURE_DEPENDS RELATIVE ${POLYDEM_SOURCE_DIR}
+     ${POLYDEM_SOURCE_DIR}/*.h ${POLYDEM_SOURCE_DIR}/*.cpp)
+file(GLOB _old ${POLYDEM_STAGE}/src/POLYDEM/*)
+if(_old)
+  file(REMOVE ${_old})
+endif()
+foreach(f ${_ours})
+  if(f MATCHES "^polydem_.*\\.cpp$")
+    # host-only helpers that need CGAL: built as the library polydem_shapes so
+    # that CGAL's flags (-frounding-math) stay out of LAMMPS's own files
+  elseif(f MATCHES "_kokkos\\.(h|cpp)$")
+    polydem_link(${POLYDEM_SOURCE_DIR}/${f} ${POLYDEM_STAGE}/src/KOKKOS/${f})
+  else()
+    polydem_link(${POLYDEM_SOURCE_DIR}/${f} ${POLYDEM_STAGE}/src/POLYDEM/${f})
+  endif()
+endforeach()
+
+# atom.h / atom.cpp: add the per-atom fields quat[4], pshape, pscale to LAMMPS's
+# Atom class so that the generic AtomVec machinery grows, copies, communicates,
+# restarts and reads/writes them (this LAMMPS predates Atom::quat).
+file(READ ${_lammps_pristine}/src/atom.h _ah)
+polydem_insert_after(_ah "double **omega, **angmom, **torque;"
+  "\n  double **quat;     // POLYDEM: orientation (w,x,y,z)\n  int *pshape;       // POLYDEM: shape-template index\n  double *pscale;    // POLYDEM: scale factor\n" atom.h)
+polydem_insert_after(_ah "int rmass_flag, radius_flag, omega_flag, torque_flag, angmom_flag;"
+  "\n  int quat_flag, pshape_flag;    // POLYDEM\n" atom.h)
+file(READ ${_lammps_pristine}/src/atom.cpp _ac)
+polydem_insert_after(_ac "omega = angmom = torque = nullptr;"
+  "\n  quat = nullptr;\n  pshape = nullptr;\n  pscale = nullptr;\n" atom.cpp)
+polydem_insert_after(_ac "add_peratom(\"angmom\",&angmom,DOUBLE,3);"
+  "\n  add_peratom(\"quat\",&quat,DOUBLE,4);\n  add_peratom(\"pshape\",&pshape,INT,0);\n  add_peratom(\"pscale\",&pscale,DOUBLE,0);\n" atom.cpp)
+polydem_insert_after(_ac "rmass_flag = radius_flag = omega_flag = torque_flag = angmom_flag = 0;"
+  "\n  quat_flag = pshape_flag = 0;\n" atom.cpp)
+polydem_insert_after(_ac "if (strcmp(name,\"angmom\") == 0) return (void *) angmom;"
+  "\n  if (strcmp(name,\"quat\") == 0) return (void *) quat;\n  if (strcmp(name,\"pshape\") == 0) return (void *) pshape;\n  if (strcmp(name,\"pscale\") == 0) return (void *) pscale;\n" atom.cpp)
+polydem_insert_after(_ac "if (strcmp(name,\"angmom\") == 0) return LAMMPS_DOUBLE_2D;"
+  "\n  if (strcmp(name,\"quat\") == 0) return LAMMPS_DOUBLE_2D;\n  if (strcmp(name,\"pshape\") == 0) return LAMMPS_INT;\n  if (strcmp(name,\"pscale\") == 0) return LAMMPS_DOUBLE;\n" atom.cpp)
+foreach(f atom.h atom.cpp)
+  if(f STREQUAL "atom.h")
+    set(_content "${_ah}")
+  else()
+    set(_content "${_ac}")
+  endif()
+  file(WRITE ${POLYDEM_STAGE}/src/${f}.tmp "${_content}")
+  file(COPY_FILE ${POLYDEM_STAGE}/src/${f}.tmp ${POLYDEM_STAGE}/src/${f} ONLY_IF_DIFFERENT)
+  file(REMOVE ${POLYDEM_STAGE}/src/${f}.tmp)
+endforeach()
+
+# cmake/: copy, then add POLYDEM to the package list and raise C++11 to C++17
+if(NOT EXISTS ${POLYDEM_STAGE}/cmake/.copied)
+  file(COPY ${_lammps_pristine}/cmake DESTINATION ${POLYDEM_STAGE})
+  file(TOUCH ${POLYDEM_STAGE}/cmake/.copied)
+endif()
+file(READ ${_lammps_pristine}/cmake/CMakeLists.txt _cm)
+polydem_insert_after(_cm "set(STANDARD_PACKAGES\n" "  POLYDEM\n" cmake/CMakeLists.txt)
+string(REPLACE "set(CMAKE_CXX_STANDARD 11)" "set(CMAKE_CXX_STANDARD 17)" _cm "${_cm}")
+file(WRITE ${POLYDEM_STAGE}/cmake/CMakeLists.txt.tmp "${_cm}")
+file(COPY_FILE ${POLYDEM_STAGE}/cmake/CMakeLists.txt.tmp ${POLYDEM_STAGE}/cmake/CMakeLists.txt ONLY_IF_DIFFERENT)
+file(REMOVE ${POLYDEM_STAGE}/cmake/CMakeLists.txt.tmp)
+
+# ---------------------------------------------------------------------------
+# 3. Kokkos: Debian's libtrilinos-kokkos-dev (Serial) unless Kokkos_DIR is given.
+# Debian's KokkosConfig.cmake points its include directory at /usr/lib/include
+# (it forgets the multiarch level); use a corrected copy (DESIGN.md section 5).
+option(POLYDEM_KOKKOS "Build the KOKKOS package and the /kk styles" ON)
+if(POLYDEM_KOKKOS AND NOT Kokkos_DIR)
+  set(_deb_kokkos /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake)
+  if(NOT EXISTS ${_deb_kokkos}/Kokkos/KokkosConfig.cmake)
+    message(FATAL_ERROR "POLYDEM: Kokkos not found: install libtrilinos-kokkos-dev (tools/install-deps.sh) "
+                        "or pass -DKokkos_DIR=..., or -DPOLYDEM_KOKKOS=OFF")
+  endif()
+  set(_fixed ${CMAKE_BINARY_DIR}/kokkos-config)
+  file(READ ${_deb_kokkos}/Kokkos/KokkosConfig.cmake _kc)
+  string(REPLACE "\${CMAKE_CURRENT_LIST_DIR}/../" "${_deb_kokkos}/" _kc "${_kc}")
+  string(REPLACE "\${CMAKE_CURRENT_LIST_DIR}/../../../../include/trilinos" "/usr/include/trilinos" _kc "${_kc}")
+  string(REPLACE "\${KOKKOS_IMPORT_PREFIX}/include" "/usr/include/trilinos" _kc "${_kc}")
+  file(WRITE ${_fixed}/KokkosConfig.cmake "${_kc}")
+  file(COPY_FILE ${_deb_kokkos}/Kokkos/KokkosConfigVersion.cmake ${_fixed}/KokkosConfigVersion.cmake)
+  set(Kokkos_DIR ${_fixed} CACHE PATH "Kokkos CMake config directory" FORCE)
+endif()
+
+# ---------------------------------------------------------------------------
+# 4. LAMMPS options and the subdirectory
+set(PKG_POLYDEM ON CACHE BOOL "" FORCE)
+set(PKG_ASPHERE ON CACHE BOOL "")
+set(PKG_GRANULAR ON CACHE BOOL "")
+set(PKG_KOKKOS ${POLYDEM_KOKKOS} CACHE BOOL "" FORCE)
+set(EXTERNAL_KOKKOS ON CACHE BOOL "" FORCE)
+set(BUILD_MPI ON CACHE BOOL "")
+set(LAMMPS_EXCEPTIONS ON CACHE BOOL "" FORCE)
+set(BUILD_TOOLS OFF CACHE BOOL "")
+set(BUILD_DOC OFF CACHE BOOL "")
+set(ENABLE_TESTING OFF CACHE BOOL "LAMMPS's own tests" FORCE)
+add_subdirectory(${POLYDEM_STAGE}/cmake ${CMAKE_BINARY_DIR}/lammps)
+# lmp goes to the top of the build tree: build/lmp
+set_target_properties(lmp PROPERTIES RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR})
+target_link_libraries(lammps PRIVATE polydem_shapes)

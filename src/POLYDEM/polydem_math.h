@@ -15,6 +15,8 @@ namespace polydem {
 
 using std::fabs;
 using std::sqrt;
+using std::cos;
+using std::sin;
 
 template <typename T> struct Vec3 {
   T x, y, z;

@@ -1,0 +1,47 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - compute erotate/polyhedron
+------------------------------------------------------------------------- */
+
+#include "compute_erotate_polyhedron.h"
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "error.h"
+#include "force.h"
+#include "polydem_rigid.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+
+ComputeERotatePolyhedron::ComputeERotatePolyhedron(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), avec(nullptr)
+{
+  if (narg != 3) error->all(FLERR, "Illegal compute erotate/polyhedron command: no arguments expected");
+  scalar_flag = 1;
+  extscalar = 1;
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  if (!avec) error->all(FLERR, "Compute erotate/polyhedron requires atom_style polyhedron");
+}
+
+void ComputeERotatePolyhedron::init()
+{
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  if (!avec) error->all(FLERR, "Compute erotate/polyhedron requires atom_style polyhedron");
+}
+
+double ComputeERotatePolyhedron::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  double **angmom = atom->angmom, **quat = atom->quat;
+  int *mask = atom->mask;
+  double e = 0.0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) {
+      double inertia[3];
+      avec->inertia(i, inertia);
+      e += polydem::rotational_energy(inertia, angmom[i], quat[i]);
+    }
+  MPI_Allreduce(&e, &scalar, 1, MPI_DOUBLE, MPI_SUM, world);
+  scalar *= force->mvv2e;
+  return scalar;
+}

@@ -1,0 +1,43 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - dump polyhedron/vtk: every particle as its true polyhedron,
+   legacy-VTK polydata (ParaView reads it), one file per snapshot.
+   Only id, type, shape, scale, position and quaternion travel to the
+   writing rank; it rebuilds the faces from the templates.
+------------------------------------------------------------------------- */
+
+#ifdef DUMP_CLASS
+// clang-format off
+DumpStyle(polyhedron/vtk,DumpPolyhedronVTK);
+// clang-format on
+#else
+
+#ifndef LMP_DUMP_POLYHEDRON_VTK_H
+#define LMP_DUMP_POLYHEDRON_VTK_H
+
+#include "dump.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class DumpPolyhedronVTK : public Dump {
+ public:
+  DumpPolyhedronVTK(class LAMMPS *, int, char **);
+
+ protected:
+  void init_style() override;
+  void write_header(bigint) override;
+  void pack(tagint *) override;
+  void write_data(int, double *) override;
+
+ private:
+  class AtomVecPolyhedron *avec;
+  bigint nexpected;             // particles in this snapshot
+  std::vector<double> records;  // gathered on the writing rank
+  void write_snapshot();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,98 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - fix nve/polyhedron
+------------------------------------------------------------------------- */
+
+#include "fix_nve_polyhedron.h"
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "error.h"
+#include "polydem_rigid.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+
+/* ---------------------------------------------------------------------- */
+
+FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg) :
+    FixNVE(lmp, narg, arg), avec(nullptr)
+{
+  if (narg != 3) error->all(FLERR, "Illegal fix nve/polyhedron command: no arguments expected");
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  if (!avec) error->all(FLERR, "Fix nve/polyhedron requires atom_style polyhedron");
+}
+
+/* ----------------------------------------------------------------------
+   omega follows from angmom, orientation and inertia (so that pair styles
+   see consistent spins before the first step)
+------------------------------------------------------------------------- */
+
+void FixNVEPolyhedron::init()
+{
+  FixNVE::init();
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  if (!avec) error->all(FLERR, "Fix nve/polyhedron requires atom_style polyhedron");
+
+  double **angmom = atom->angmom, **omega = atom->omega, **quat = atom->quat;
+  int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (mask[i] & groupbit) {
+      double inertia[3];
+      avec->inertia(i, inertia);
+      polydem::omega_from_angmom(inertia, angmom[i], quat[i], omega[i]);
+    }
+}
+
+/* ----------------------------------------------------------------------
+   kick (v, L by dt/2), drift (x by dt), free rotation (q, L by dt)
+------------------------------------------------------------------------- */
+
+void FixNVEPolyhedron::initial_integrate(int /*vflag*/)
+{
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **angmom = atom->angmom, **torque = atom->torque, **omega = atom->omega;
+  double **quat = atom->quat;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) {
+      const double dtfm = dtf / rmass[i];
+      for (int k = 0; k < 3; k++) {
+        v[i][k] += dtfm * f[i][k];
+        x[i][k] += dtv * v[i][k];
+        angmom[i][k] += dtf * torque[i][k];
+      }
+      double inertia[3];
+      avec->inertia(i, inertia);
+      polydem::free_rotor_step(dtv, inertia, angmom[i], quat[i]);
+      polydem::omega_from_angmom(inertia, angmom[i], quat[i], omega[i]);
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixNVEPolyhedron::final_integrate()
+{
+  double **v = atom->v, **f = atom->f;
+  double **angmom = atom->angmom, **torque = atom->torque, **omega = atom->omega;
+  double **quat = atom->quat;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) {
+      const double dtfm = dtf / rmass[i];
+      for (int k = 0; k < 3; k++) {
+        v[i][k] += dtfm * f[i][k];
+        angmom[i][k] += dtf * torque[i][k];
+      }
+      double inertia[3];
+      avec->inertia(i, inertia);
+      polydem::omega_from_angmom(inertia, angmom[i], quat[i], omega[i]);
+    }
+}

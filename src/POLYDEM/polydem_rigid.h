@@ -1,0 +1,111 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - rigid-body rotation kernels shared by fix nve/polyhedron and
+   fix nve/polyhedron/kk (host and device). No LAMMPS includes.
+
+   Free-rotor step: symmetric splitting of the torque-free Euler equations
+   into exact rotations about the principal axes (Dullweber, Leimkuhler &
+   McLachlan, J. Chem. Phys. 107, 5840 (1997); seed polyhedral §2.5):
+       R1(h/2) R2(h/2) R3(h) R2(h/2) R1(h/2).
+   Each sub-flow is exact, so the composition is symplectic, time reversible,
+   keeps |L| exactly and the lab-frame L up to round-off; the gyroscopic term
+   of the body-frame Euler equations is integrated, not dropped.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_RIGID_H
+#define POLYDEM_RIGID_H
+
+#include "polydem_math.h"
+
+namespace polydem {
+
+// Exact rotation about body axis k for time h: body-frame angular momentum
+// Lb rotates by -phi about e_k, orientation q by +phi about e_k (body frame),
+// phi = h Lb_k / I_k. Lab-frame L = R(q) Lb is unchanged.
+template <typename T> POLYDEM_FN void free_rotor_substep(int k, T h, const T inertia[3], T Lb[3], T q[4])
+{
+  if (!(inertia[k] > T(0))) return;    // massless axis (degenerate template): no rotation
+  const T phi = h * Lb[k] / inertia[k];
+  const T c = cos(phi), s = sin(phi);
+  const int a = (k + 1) % 3, b = (k + 2) % 3;
+  // Lb <- Rot_k(-phi) Lb
+  const T la = Lb[a], lb = Lb[b];
+  Lb[a] = c * la + s * lb;
+  Lb[b] = -s * la + c * lb;
+  // q <- q * (cos(phi/2), sin(phi/2) e_k)
+  const T ch = cos(T(0.5) * phi), sh = sin(T(0.5) * phi);
+  T e[3] = {T(0), T(0), T(0)};
+  e[k] = sh;
+  const Quat<T> qq = qmul(make_quat(q[0], q[1], q[2], q[3]), make_quat(ch, e[0], e[1], e[2]));
+  q[0] = qq.w;
+  q[1] = qq.x;
+  q[2] = qq.y;
+  q[3] = qq.z;
+}
+
+// One free-rotor step of length h. L (lab, in/out) is recomputed from the
+// rotated frame so that it stays consistent with q; q is renormalised.
+template <typename T> POLYDEM_FN void free_rotor_step(T h, const T inertia[3], T L[3], T q[4])
+{
+  Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
+  Vec3<T> lb = matTvec(r, make_vec3(L[0], L[1], L[2]));
+  T Lb[3] = {lb.x, lb.y, lb.z};
+  free_rotor_substep(0, T(0.5) * h, inertia, Lb, q);
+  free_rotor_substep(1, T(0.5) * h, inertia, Lb, q);
+  free_rotor_substep(2, h, inertia, Lb, q);
+  free_rotor_substep(1, T(0.5) * h, inertia, Lb, q);
+  free_rotor_substep(0, T(0.5) * h, inertia, Lb, q);
+  const Quat<T> qn = qnormalize(make_quat(q[0], q[1], q[2], q[3]));
+  q[0] = qn.w;
+  q[1] = qn.x;
+  q[2] = qn.y;
+  q[3] = qn.z;
+  r = quat_to_mat(qn);
+  const Vec3<T> ll = matvec(r, make_vec3(Lb[0], Lb[1], Lb[2]));
+  L[0] = ll.x;
+  L[1] = ll.y;
+  L[2] = ll.z;
+}
+
+// Lab-frame angular velocity from lab angular momentum: w = R I^-1 R^T L.
+template <typename T> POLYDEM_FN void omega_from_angmom(const T inertia[3], const T L[3], const T q[4], T w[3])
+{
+  const Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
+  Vec3<T> b = matTvec(r, make_vec3(L[0], L[1], L[2]));
+  b.x = inertia[0] > T(0) ? b.x / inertia[0] : T(0);
+  b.y = inertia[1] > T(0) ? b.y / inertia[1] : T(0);
+  b.z = inertia[2] > T(0) ? b.z / inertia[2] : T(0);
+  const Vec3<T> o = matvec(r, b);
+  w[0] = o.x;
+  w[1] = o.y;
+  w[2] = o.z;
+}
+
+// Lab angular momentum from lab angular velocity: L = R I R^T w.
+template <typename T> POLYDEM_FN void angmom_from_omega(const T inertia[3], const T w[3], const T q[4], T L[3])
+{
+  const Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
+  Vec3<T> b = matTvec(r, make_vec3(w[0], w[1], w[2]));
+  b.x *= inertia[0];
+  b.y *= inertia[1];
+  b.z *= inertia[2];
+  const Vec3<T> o = matvec(r, b);
+  L[0] = o.x;
+  L[1] = o.y;
+  L[2] = o.z;
+}
+
+// Rotational kinetic energy 1/2 sum_k Lb_k^2 / I_k.
+template <typename T> POLYDEM_FN T rotational_energy(const T inertia[3], const T L[3], const T q[4])
+{
+  const Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
+  const Vec3<T> b = matTvec(r, make_vec3(L[0], L[1], L[2]));
+  T e = T(0);
+  if (inertia[0] > T(0)) e += b.x * b.x / inertia[0];
+  if (inertia[1] > T(0)) e += b.y * b.y / inertia[1];
+  if (inertia[2] > T(0)) e += b.z * b.z / inertia[2];
+  return T(0.5) * e;
+}
+
+}    // namespace polydem
+
+#endif

@@ -1,0 +1,90 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - shape-template records for restart files.
+
+   A record holds the points exactly as they entered the hull computation
+   (after the file's own scale), printed with 17 significant digits, which
+   round-trips IEEE doubles exactly, plus the hull option. Rebuilding from
+   the same points runs the same deterministic processing, so the rebuilt
+   template equals the original bit for bit.
+   Format: "polydem-shape-1 <hull 0|1> <name> <npoints> x y z x y z ..."
+------------------------------------------------------------------------- */
+
+#include "polydem_shape_record.h"
+
+#include "polydem_shape_template.h"
+
+#include <cstdio>
+#include <sstream>
+
+namespace polydem {
+
+static const char *RECORD_TAG = "polydem-shape-1";
+
+static std::string make_record(const PolyShapeTemplate &t, bool hull)
+{
+  std::string name = t.name();
+  for (char &c : name)
+    if (c == ' ' || c == '\t' || c == '\n') c = '_';
+  if (name.empty()) name = "shape";
+  const auto &pts = t.input_points();
+  std::string rec = std::string(RECORD_TAG) + " " + (hull ? "1" : "0") + " " + name + " " +
+      std::to_string(pts.size());
+  char buf[32];
+  for (const auto &p : pts)
+    for (int k = 0; k < 3; k++) {
+      snprintf(buf, sizeof(buf), " %.17g", p[k]);
+      rec += buf;
+    }
+  return rec;
+}
+
+std::unique_ptr<PolyShapeTemplate> shape_from_file(const std::string &file, bool hull,
+                                                   std::string &record,
+                                                   std::vector<std::string> &warnings,
+                                                   std::string &err)
+{
+  try {
+    ShapeOptions opt;
+    opt.hull = hull;
+    auto t = std::make_unique<PolyShapeTemplate>(PolyShapeTemplate::from_file(file, opt));
+    warnings = t->warnings();
+    record = make_record(*t, hull);
+    return t;
+  } catch (std::exception &e) {
+    err = e.what();
+    return nullptr;
+  }
+}
+
+std::unique_ptr<PolyShapeTemplate> shape_from_record(const std::string &record, std::string &err)
+{
+  std::istringstream in(record);
+  std::string tag, name;
+  int hull = 0;
+  long n = 0;
+  if (!(in >> tag >> hull >> name >> n) || tag != RECORD_TAG || n < 4 || n > 1000000) {
+    err = "not a POLYDEM shape record";
+    return nullptr;
+  }
+  std::vector<PolyShapeTemplate::Point> pts((size_t) n);
+  for (auto &p : pts)
+    for (int k = 0; k < 3; k++) {
+      std::string tok;
+      if (!(in >> tok)) {
+        err = "record truncated";
+        return nullptr;
+      }
+      p[k] = std::strtod(tok.c_str(), nullptr);
+    }
+  try {
+    ShapeOptions opt;
+    opt.hull = hull != 0;
+    return std::make_unique<PolyShapeTemplate>(
+        PolyShapeTemplate::from_points(pts, {}, opt, name));
+  } catch (std::exception &e) {
+    err = e.what();
+    return nullptr;
+  }
+}
+
+}    // namespace polydem

@@ -1,0 +1,30 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - loading shape templates for LAMMPS commands, and their exact
+   text record (stored in restart files so that a restart needs no shape
+   files and continues bit for bit). Host only; no LAMMPS includes.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_SHAPE_RECORD_H
+#define POLYDEM_SHAPE_RECORD_H
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+class PolyShapeTemplate;
+
+// Load a shape file. On failure returns nullptr and sets err (file:line: what).
+std::unique_ptr<PolyShapeTemplate> shape_from_file(const std::string &file, bool hull,
+                                                   std::string &record,
+                                                   std::vector<std::string> &warnings,
+                                                   std::string &err);
+
+// Rebuild a template from its record, bit-identical to the one recorded.
+std::unique_ptr<PolyShapeTemplate> shape_from_record(const std::string &record,
+                                                     std::string &err);
+
+}    // namespace polydem
+
+#endif

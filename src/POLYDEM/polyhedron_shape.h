@@ -1,0 +1,28 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - command polyhedron_shape ID file [hull yes|no]
+   Loads a shape template (potentials/*.shape) into atom_style polyhedron.
+------------------------------------------------------------------------- */
+
+#ifdef COMMAND_CLASS
+// clang-format off
+CommandStyle(polyhedron_shape,PolyhedronShape);
+// clang-format on
+#else
+
+#ifndef LMP_POLYHEDRON_SHAPE_H
+#define LMP_POLYHEDRON_SHAPE_H
+
+#include "command.h"
+
+namespace LAMMPS_NS {
+
+class PolyhedronShape : public Command {
+ public:
+  PolyhedronShape(class LAMMPS *lmp) : Command(lmp) {}
+  void command(int, char **) override;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,90 @@
+// Test helpers: a LAMMPS instance driven through its C++ interface.
+#ifndef POLYDEM_TEST_LMP_H
+#define POLYDEM_TEST_LMP_H
+
+#include "atom.h"
+#include "error.h"
+#include "input.h"
+#include "lammps.h"
+#include "library.h"
+
+#include <mpi.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace polydem_test {
+
+inline std::string potentials() { return POLYDEM_POTENTIALS_DIR; }
+
+class Lmp {
+ public:
+  // extra: e.g. {"-k","on","-sf","kk"}
+  explicit Lmp(const std::vector<std::string> &extra = {}, MPI_Comm comm = MPI_COMM_WORLD)
+  {
+    std::vector<std::string> args = {"lmp", "-log", "none", "-screen", "none", "-nocite"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    std::vector<char *> argv;
+    for (auto &a : args) argv.push_back(const_cast<char *>(a.c_str()));
+    lmp = new LAMMPS_NS::LAMMPS((int) argv.size(), argv.data(), comm);
+  }
+  ~Lmp() { delete lmp; }
+  Lmp(const Lmp &) = delete;
+  Lmp &operator=(const Lmp &) = delete;
+
+  void cmd(const std::string &line) { lmp->input->one(line); }
+  void cmds(const std::vector<std::string> &lines)
+  {
+    for (auto &l : lines) cmd(l);
+  }
+  // run a command that must fail; returns the error message
+  std::string error_of(const std::string &line)
+  {
+    try {
+      lmp->input->one(line);
+    } catch (LAMMPS_NS::LAMMPSAbortException &e) {
+      return e.message;
+    } catch (LAMMPS_NS::LAMMPSException &e) {
+      return e.message;
+    }
+    return "";
+  }
+  double thermo(const std::string &keyword)
+  {
+    return lammps_get_thermo(lmp, keyword.c_str());
+  }
+
+  // per-atom state of local atoms, keyed by atom ID
+  struct State {
+    double x[3], v[3], q[4], L[3], w[3], m, r, s;
+    int shape;
+  };
+  std::map<long, State> local_state()
+  {
+    std::map<long, State> out;
+    auto *a = lmp->atom;
+    for (int i = 0; i < a->nlocal; i++) {
+      State s;
+      for (int k = 0; k < 3; k++) {
+        s.x[k] = a->x[i][k];
+        s.v[k] = a->v[i][k];
+        s.L[k] = a->angmom[i][k];
+        s.w[k] = a->omega[i][k];
+      }
+      for (int k = 0; k < 4; k++) s.q[k] = a->quat[i][k];
+      s.m = a->rmass[i];
+      s.r = a->radius[i];
+      s.s = a->pscale[i];
+      s.shape = a->pshape[i];
+      out[(long) a->tag[i]] = s;
+    }
+    return out;
+  }
+
+  LAMMPS_NS::LAMMPS *lmp;
+};
+
+}    // namespace polydem_test
+
+#endif

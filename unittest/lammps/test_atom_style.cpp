@@ -1,0 +1,310 @@
+// atom_style polyhedron, polyhedron_shape, polyhedron_set, fix nve/polyhedron,
+// compute erotate/polyhedron, dump polyhedron/vtk through LAMMPS (issue 2).
+
+#include "polydem_lmp.h"
+
+#include "atom_vec_polyhedron.h"
+#include "polydem_rigid.h"
+#include "polydem_shape_template.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+using polydem_test::Lmp;
+using polydem_test::potentials;
+
+namespace {
+
+std::string tmpfile(const std::string &name)
+{
+  return ::testing::TempDir() + "polydem_" + name;
+}
+
+// a periodic box of non-interacting, randomly oriented, spinning particles
+// of two shapes (cube: type 1, dodecahedron: type 2)
+void gas(Lmp &l, int n = 40)
+{
+  l.cmds({"units lj", "atom_style polyhedron", "boundary p p p",
+          "region box block 0 12 0 12 0 12", "create_box 2 box",
+          "polyhedron_shape cube " + potentials() + "/cube.shape",
+          "polyhedron_shape dodeca " + potentials() + "/dodecahedron.shape",
+          "create_atoms 1 random " + std::to_string(n / 2) + " 4711 NULL",
+          "create_atoms 2 random " + std::to_string(n - n / 2) + " 4712 NULL",
+          "polyhedron_set type 1 scale 1.3 density 2.0 quat/random 99",
+          "polyhedron_set type 2 shape dodeca scale 0.6 density 1.5 quat/random 98",
+          "velocity all create 3.0 12345 loop geom", "polyhedron_set type 1 omega 0.3 -1.2 2.0",
+          "polyhedron_set type 2 angmom 0.5 0.1 -0.7", "neighbor 0.3 bin",
+          "fix 1 all nve/polyhedron", "timestep 0.005"});
+}
+
+void expect_same_state(const std::map<long, Lmp::State> &a, const std::map<long, Lmp::State> &b,
+                       double rel)
+{
+  ASSERT_EQ(a.size(), b.size());
+  for (auto &kv : a) {
+    auto it = b.find(kv.first);
+    ASSERT_NE(it, b.end()) << "atom " << kv.first << " missing";
+    const auto &p = kv.second, &q = it->second;
+    auto close = [rel](double u, double v) {
+      return std::fabs(u - v) <= rel * std::fmax(1.0, std::fmax(std::fabs(u), std::fabs(v)));
+    };
+    for (int k = 0; k < 3; k++) {
+      EXPECT_PRED2(close, p.x[k], q.x[k]) << "x of atom " << kv.first;
+      EXPECT_PRED2(close, p.v[k], q.v[k]) << "v of atom " << kv.first;
+      EXPECT_PRED2(close, p.L[k], q.L[k]) << "angmom of atom " << kv.first;
+    }
+    for (int k = 0; k < 4; k++) EXPECT_PRED2(close, p.q[k], q.q[k]) << "quat of atom " << kv.first;
+    EXPECT_EQ(p.shape, q.shape);
+    EXPECT_PRED2(close, p.s, q.s);
+    EXPECT_PRED2(close, p.m, q.m);
+  }
+}
+
+}    // namespace
+
+// Free fall under fix gravity: velocity Verlet is exact for a constant force,
+// so z(t) = z0 + vz0 t - g t^2 / 2 holds to round-off.
+TEST(AtomStyle, FreeFallMatchesAnalytic)
+{
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "boundary f f f",
+          "region box block -1 1 -1 1 -10 10", "create_box 1 box",
+          "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
+          "create_atoms 1 single 0.1 0.2 5.0", "polyhedron_set atom 1 scale 0.01 density 2500",
+          "velocity all set 0.5 0 2.0", "fix 1 all nve/polyhedron",
+          "fix 2 all gravity 9.81 vector 0 0 -1", "timestep 1e-4", "run 10000"});
+  auto s = l.local_state().at(1);
+  const double t = 1.0;
+  EXPECT_NEAR(s.x[2], 5.0 + 2.0 * t - 0.5 * 9.81 * t * t, 1e-12 * 5.0);
+  EXPECT_NEAR(s.x[0], 0.1 + 0.5 * t, 1e-12);
+  EXPECT_NEAR(s.v[2], 2.0 - 9.81 * t, 1e-12 * 9.81);
+  EXPECT_NEAR(s.m, 2500 * 7.6631189606246319 * 1e-6, 1e-12 * s.m);
+}
+
+// A torque-free cuboid through LAMMPS follows the free-rotor kernel exactly,
+// and conserves rotational energy (compute erotate/polyhedron).
+TEST(AtomStyle, TorqueFreeCuboidFollowsKernel)
+{
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "boundary f f f",
+          "region box block -1 1 -1 1 -1 1", "create_box 1 box",
+          "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
+          "create_atoms 1 single 0 0 0", "polyhedron_set atom 1 density 2500 quat 1 2 3 40",
+          "polyhedron_set atom 1 omega 0.5 30.0 0.4", "fix 1 all nve/polyhedron",
+          "compute er all erotate/polyhedron", "thermo_style custom step c_er",
+          "timestep 1e-4", "run 0"});
+  const double e0 = l.thermo("c_er");
+  auto s0 = l.local_state().at(1);
+  auto avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+  ASSERT_NE(avec, nullptr);
+  double inertia[3];
+  avec->inertia(0, inertia);
+  EXPECT_NEAR(e0, polydem::rotational_energy(inertia, s0.L, s0.q), 1e-14 * e0);
+
+  l.cmd("run 20000");
+  auto s1 = l.local_state().at(1);
+  double q[4] = {s0.q[0], s0.q[1], s0.q[2], s0.q[3]}, L[3] = {s0.L[0], s0.L[1], s0.L[2]};
+  for (int i = 0; i < 20000; i++) polydem::free_rotor_step(1e-4, inertia, L, q);
+  for (int k = 0; k < 4; k++) EXPECT_EQ(s1.q[k], q[k]);
+  for (int k = 0; k < 3; k++) EXPECT_EQ(s1.L[k], L[k]);
+  EXPECT_NEAR(l.thermo("c_er"), e0, 1e-6 * e0);
+  const double qn = q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+  EXPECT_NEAR(qn, 1.0, 1e-14);
+}
+
+// write_restart -> read_restart continues bit for bit, with the templates
+// carried by the restart file (no polyhedron_shape after read_restart).
+TEST(AtomStyle, RestartContinuesBitIdentically)
+{
+  const std::string rfile = tmpfile("restart.bin");
+  std::map<long, Lmp::State> a, b;
+  {
+    Lmp l;
+    gas(l);
+    l.cmds({"run 300", "write_restart " + rfile, "run 300"});
+    a = l.local_state();
+  }
+  {
+    Lmp l;
+    l.cmds({"read_restart " + rfile, "neighbor 0.3 bin", "fix 1 all nve/polyhedron",
+            "timestep 0.005", "run 300"});
+    b = l.local_state();
+    auto avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+    ASSERT_EQ(avec->ntemplates(), 2);
+    EXPECT_EQ(avec->shape_id(1), "dodeca");
+  }
+  expect_same_state(a, b, 0.0);
+  std::remove(rfile.c_str());
+}
+
+// write_data -> read_data reproduces every per-atom value (mass through the
+// density column, to round-off).
+TEST(AtomStyle, DataFileRoundTrip)
+{
+  const std::string dfile = tmpfile("data.txt");
+  std::map<long, Lmp::State> a, b;
+  {
+    Lmp l;
+    gas(l);
+    l.cmds({"run 50", "write_data " + dfile});
+    a = l.local_state();
+  }
+  {
+    Lmp l;
+    l.cmds({"units lj", "atom_style polyhedron", "boundary p p p",
+            "polyhedron_shape cube " + potentials() + "/cube.shape",
+            "polyhedron_shape dodeca " + potentials() + "/dodecahedron.shape",
+            "read_data " + dfile});
+    b = l.local_state();
+  }
+  ASSERT_EQ(a.size(), b.size());
+  for (auto &kv : a) {
+    const auto &p = kv.second, &q = b.at(kv.first);
+    for (int k = 0; k < 3; k++) {
+      EXPECT_EQ(p.x[k], q.x[k]);
+      EXPECT_EQ(p.v[k], q.v[k]);
+      EXPECT_EQ(p.L[k], q.L[k]);
+    }
+    for (int k = 0; k < 4; k++) EXPECT_EQ(p.q[k], q.q[k]);
+    EXPECT_EQ(p.shape, q.shape);
+    EXPECT_EQ(p.s, q.s);
+    EXPECT_EQ(p.r, q.r);
+    EXPECT_NEAR(p.m, q.m, 1e-14 * p.m);
+  }
+  std::remove(dfile.c_str());
+}
+
+// dump polyhedron/vtk: every particle's faces; its points lie at distance
+// <= scale * bounding radius from its centre, with equality for some vertex.
+TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
+{
+  const std::string vfile = tmpfile("snap.*.vtk");
+  Lmp l;
+  gas(l, 10);
+  l.cmds({"dump d all polyhedron/vtk 10 " + vfile, "dump_modify d sort id", "run 10"});
+  l.cmd("undump d");
+  const std::string f10 = tmpfile("snap.10.vtk");
+  std::ifstream in(f10);
+  ASSERT_TRUE(in.good()) << f10;
+  std::string line;
+  long npoints = -1, npolys = -1;
+  std::vector<std::array<double, 3>> pts;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string w;
+    ls >> w;
+    if (w == "POINTS") {
+      ls >> npoints;
+      for (long i = 0; i < npoints; i++) {
+        std::array<double, 3> p;
+        in >> p[0] >> p[1] >> p[2];
+        pts.push_back(p);
+      }
+    } else if (w == "POLYGONS")
+      ls >> npolys;
+  }
+  // 5 cubes (8 vertices, 6 faces) + 5 dodecahedra (20 vertices, 12 faces)
+  EXPECT_EQ(npoints, 5 * 8 + 5 * 20);
+  EXPECT_EQ(npolys, 5 * 6 + 5 * 12);
+  auto st = l.local_state();
+  auto avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+  size_t off = 0;
+  for (auto &kv : st) {
+    const auto v = avec->shape(kv.second.shape).view();
+    double rmax = 0.0;
+    for (int k = 0; k < v.nverts; k++) {
+      double d2 = 0.0;
+      for (int c = 0; c < 3; c++) d2 += std::pow(pts[off + k][c] - kv.second.x[c], 2);
+      rmax = std::fmax(rmax, std::sqrt(d2));
+    }
+    EXPECT_NEAR(rmax, kv.second.s * v.radius, 1e-7 * kv.second.s * v.radius);
+    off += v.nverts;
+  }
+  std::remove(f10.c_str());
+  std::remove(tmpfile("snap.0.vtk").c_str());
+}
+
+// Bad input gives a LAMMPS error naming the command and the bad word.
+TEST(AtomStyle, BadInputErrors)
+{
+  {
+    Lmp l;
+    EXPECT_NE(l.error_of("atom_style polyhedron foo").find("Illegal atom_style polyhedron"),
+              std::string::npos);
+  }
+  Lmp l;
+  l.cmds({"units lj", "atom_style polyhedron", "region box block 0 10 0 10 0 10",
+          "create_box 1 box"});
+  EXPECT_NE(l.error_of("create_atoms 1 single 1 1 1").find("polyhedron_shape"),
+            std::string::npos);
+  std::string e = l.error_of("polyhedron_shape s /nonexistent/x.shape");
+  EXPECT_NE(e.find("/nonexistent/x.shape"), std::string::npos) << e;
+  e = l.error_of("polyhedron_shape s " + potentials() + "/cube.shape color red");
+  EXPECT_NE(e.find("unknown keyword 'color'"), std::string::npos) << e;
+  EXPECT_NE(l.error_of("polyhedron_shape").find("polyhedron_shape"), std::string::npos);
+  l.cmd("polyhedron_shape cube " + potentials() + "/cube.shape");
+  e = l.error_of("polyhedron_shape cube " + potentials() + "/cube.shape");
+  EXPECT_NE(e.find("already defined"), std::string::npos) << e;
+  l.cmd("create_atoms 1 single 1 1 1");
+  e = l.error_of("polyhedron_set atom 1 shape sphere");
+  EXPECT_NE(e.find("unknown shape ID 'sphere'"), std::string::npos) << e;
+  e = l.error_of("polyhedron_set atom 1 scale -2");
+  EXPECT_NE(e.find("scale must be > 0"), std::string::npos) << e;
+  e = l.error_of("polyhedron_set atom 1 density nan");
+  EXPECT_FALSE(e.empty());
+  e = l.error_of("polyhedron_set atom 1 wobble 3");
+  EXPECT_NE(e.find("unknown keyword 'wobble'"), std::string::npos) << e;
+  e = l.error_of("polyhedron_set atom 1 quat 0 0 0 30");
+  EXPECT_NE(e.find("quat"), std::string::npos) << e;
+  e = l.error_of("polyhedron_set molecule 1 scale 2");
+  EXPECT_NE(e.find("unknown style 'molecule'"), std::string::npos) << e;
+  e = l.error_of("polyhedron_set atom 1 omega 1 2");
+  EXPECT_NE(e.find("needs 3 value(s)"), std::string::npos) << e;
+  e = l.error_of("fix 1 all nve/polyhedron extra");
+  EXPECT_NE(e.find("nve/polyhedron"), std::string::npos) << e;
+  {
+    Lmp a;
+    a.cmds({"atom_style atomic", "region box block 0 1 0 1 0 1", "create_box 1 box"});
+    e = a.error_of("fix 1 all nve/polyhedron");
+    EXPECT_NE(e.find("requires atom_style polyhedron"), std::string::npos) << e;
+    e = a.error_of("polyhedron_shape c " + potentials() + "/cube.shape");
+    EXPECT_NE(e.find("requires atom_style polyhedron"), std::string::npos) << e;
+  }
+}
+
+// read_data: an out-of-range shape index and a zero quaternion are errors.
+TEST(AtomStyle, BadDataFile)
+{
+  auto write = [](const std::string &f, const std::string &atoms) {
+    std::ofstream o(f);
+    o << "test\n\n1 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\nAtoms\n\n"
+      << atoms << "\n";
+  };
+  const std::string f = tmpfile("bad.data");
+  write(f, "1 1 3 1.0 1.0 5 5 5 1 0 0 0");
+  {
+    Lmp l;
+    l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
+    const std::string e = l.error_of("read_data " + f);
+    EXPECT_NE(e.find("Invalid shape index 3"), std::string::npos) << e;
+  }
+  write(f, "1 1 1 1.0 1.0 5 5 5 0 0 0 0");
+  {
+    Lmp l;
+    l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
+    const std::string e = l.error_of("read_data " + f);
+    EXPECT_NE(e.find("Invalid quaternion"), std::string::npos) << e;
+  }
+  write(f, "1 1 1 -1.0 1.0 5 5 5 1 0 0 0");
+  {
+    Lmp l;
+    l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
+    const std::string e = l.error_of("read_data " + f);
+    EXPECT_NE(e.find("Invalid scale"), std::string::npos) << e;
+  }
+  std::remove(f.c_str());
+}
