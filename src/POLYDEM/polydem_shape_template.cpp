@@ -399,7 +399,7 @@ PolyShapeTemplate PolyShapeTemplate::from_file(const std::string &path, const Sh
       throw ShapeError(where + ": unknown keyword '" + key + "'");
     }
   }
-  const std::string end = path + ":" + std::to_string(lineno);
+  const std::string end = lineno > 0 ? path + ":" + std::to_string(lineno) : path;
   if (mode == VERTS)
     throw ShapeError(end + ": end of file after " + std::to_string(pts.size()) + " of " +
                      std::to_string(nv_expect) + " vertex lines");
@@ -472,10 +472,7 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
                               int vkey, const ShapeOptions &opt)
 {
   const std::string src = file_.empty() ? name_ : file_;
-  auto vat = [&](int i) {
-    return vlines.empty() ? src + ": vertex " + std::to_string(i)
-                          : src + ":" + std::to_string(vlines[i]);
-  };
+  auto vat = [&](int i) { return vlines.empty() ? src : src + ":" + std::to_string(vlines[i]); };
   auto fat = [&](int f) {
     return flines.empty() ? src + ": face " + std::to_string(f)
                           : src + ":" + std::to_string(flines[f]);
@@ -630,6 +627,23 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   if (nh > MAX_TEMPLATE_VERTS)
     throw ShapeError(src + ": the hull has " + std::to_string(nh) + " vertices, more than " +
                      "MAX_TEMPLATE_VERTS = " + std::to_string(MAX_TEMPLATE_VERTS));
+  // corners closer than the coplanarity tolerance would make face merging
+  // ambiguous: report them rather than produce sliver faces
+  for (int a = 0; a < nh; ++a)
+    for (int b = a + 1; b < nh; ++b) {
+      V3 d = vsub(hv[a], hv[b]);
+      if (std::sqrt(vdot(d, d)) <= tol) {
+        int ia = -1, ib = -1;
+        for (int i = 0; i < n; ++i) {
+          if (newid[i] == a) ia = i;
+          if (newid[i] == b) ib = i;
+        }
+        throw ShapeError(vat(ib) + ": vertex " + std::to_string(ib) + " is within " +
+                         fmt_num((double)std::sqrt(vdot(d, d))) + " of vertex " +
+                         std::to_string(ia) + ", closer than " + fmt_num(PLANE_TOL) +
+                         " times the size of the shape");
+      }
+    }
   std::vector<std::array<int, 3>> tri;
   for (const auto &t : tri_in) tri.push_back({newid[t[0]], newid[t[1]], newid[t[2]]});
 
@@ -676,7 +690,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
       if (group[u] == group[t]) continue;
       int a = newid[vid[sm.source(h)]], b = newid[vid[sm.target(h)]];
       if (!next_of[group[t]].emplace(a, b).second)
-        throw ShapeError(src + ": internal error: merged face is not a simple polygon");
+        throw ShapeError(src + ": face merging failed: a merged face is not a simple polygon "
+                               "(features below the coplanarity tolerance?)");
     }
   for (int g = 0; g < ngroups; ++g) {
     auto &nx = next_of[g];
@@ -686,7 +701,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
       v = nx.at(v);
     } while (v != start && loops[g].size() <= nx.size());
     if (loops[g].size() != nx.size())
-      throw ShapeError(src + ": internal error: merged face boundary is not one loop");
+      throw ShapeError(src + ": face merging failed: a merged face boundary is not one loop "
+                             "(features below the coplanarity tolerance?)");
   }
   // canonical order (CGAL's face order is not guaranteed reproducible):
   // each loop starts at its smallest vertex; loops sorted lexicographically
@@ -746,7 +762,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   edges_.clear();
   for (const auto &e : es) edges_.insert(edges_.end(), {e[0], e[1]});
   if (nverts() - nedges() + nfaces() != 2)
-    throw ShapeError(src + ": internal error: hull fails Euler's formula V - E + F = 2");
+    throw ShapeError(
+        src + ": face merging failed: V - E + F != 2 (features below the coplanarity tolerance?)");
   make_float_copy();
 }
 

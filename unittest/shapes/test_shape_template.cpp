@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <random>
@@ -558,5 +559,38 @@ TEST(ShapeTemplate, RebuildFromInputPointsIsBitIdentical)
     }
     EXPECT_EQ(r.volume(), s.volume());
     EXPECT_TRUE(r.moments() == s.moments());
+  }
+}
+
+TEST(ShapeTemplate, EveryFileInPotentialsLoads)
+{
+  int n = 0;
+  for (const auto &e : std::filesystem::directory_iterator(POT)) {
+    if (e.path().extension() != ".shape") continue;
+    SCOPED_TRACE(e.path().string());
+    EXPECT_NO_THROW(PolyShapeTemplate::from_file(e.path().string()));
+    ++n;
+  }
+  EXPECT_GE(n, 9);
+}
+
+TEST(ShapeTemplateErrors, EmptyFileAndNearDuplicates)
+{
+  const std::string d = tmpdir() + "/";
+  EXPECT_EQ(load_error("empty.shape", ""), d + "empty.shape: no 'vertices' section");
+  // two corners 1e-15 apart: either a clean template or a ShapeError, never a crash
+  for (double eps : {1e-15, 1e-12, 1e-9}) {
+    std::vector<Pt> p;
+    for (int i = 0; i < 8; ++i)
+      p.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+    p.push_back({1.0 + eps, 1.0, 1.0 - eps});
+    try {
+      auto s = PolyShapeTemplate::from_points(p, {}, ShapeOptions(), "near");
+      EXPECT_EQ(s.nverts() - s.nedges() + s.nfaces(), 2);
+      expect_rel(s.volume(), 1.0, 1e-8, "near-duplicate volume");
+    } catch (const ShapeError &e) {
+      EXPECT_LT(eps, 1e-10);
+      EXPECT_MSG(std::string(e.what()), "near: vertex 8 is within");
+    }
   }
 }
