@@ -47,6 +47,7 @@ prefix="$cache/kokkos-cuda"
 stamp="$prefix/.polydem-stamp"
 
 log() { echo "build-kokkos-cuda: $*" >&2; }
+cmake=${CMAKE:-cmake}
 
 # nvcc: nvcc_wrapper calls `nvcc` from PATH
 if [ -n "${NVCC:-}" ]; then
@@ -110,7 +111,7 @@ fi
 
 configure() {    # $1 = C++ standard
   rm -rf "$build"
-  cmake -S "$src" -B "$build" \
+  "$cmake" -S "$src" -B "$build" \
     -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_INSTALL_PREFIX="$prefix" \
     -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" \
@@ -132,7 +133,7 @@ rm -rf "$prefix"
 std=""
 for s in 17 14; do
   log "configuring (C++$s, sm_$arch, $(basename "$nvcc_path") $nvcc_version)"
-  if configure "$s" && cmake --build "$build" -j "$jobs" >&2; then
+  if configure "$s" && "$cmake" --build "$build" -j "$jobs" >&2; then
     std=$s
     break
   fi
@@ -142,7 +143,7 @@ if [ -z "$std" ]; then
   log "Kokkos CUDA build failed (see the output above)"
   exit 1
 fi
-cmake --install "$build" >&2
+"$cmake" --install "$build" >&2
 
 # sanity: the installed wrapper and config are what the check uses
 [ -x "$prefix/bin/nvcc_wrapper" ] || { log "no $prefix/bin/nvcc_wrapper after install"; exit 1; }
