@@ -145,22 +145,85 @@ template <typename T> void exercise_rigid(int n)
 }
 #endif
 
-// TODO(kernels): when polydem_gjk.h / polydem_overlap.h / polydem_clip.h /
-// polydem_contact_model.h settle, add exercise_gjk / exercise_overlap /
-// exercise_clip / exercise_contact_model here (same pattern: build the
-// kernel's inputs from DeviceCube + pose_of, call it in the lambda, write
-// its results to a View) and instantiate them below. Until then their
-// headers are only parsed, not instantiated, by this TU.
+#ifdef POLYDEM_CHECK_GJK
+// polydem_gjk.h: bounding spheres, support function, GJK
+template <typename T> void exercise_gjk(int n)
+{
+  DeviceCube<T> cube;
+  Kokkos::View<T *[4], Mem> out("out", n);
+  Kokkos::View<int *, Mem> status("status", n);
+  Kokkos::parallel_for(
+      "polydem_check_gjk", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
+        const ShapeView<T> s = cube.view();
+        const PosedShape<T> a = make_posed(s, pose_of<T>(i));
+        const PosedShape<T> b = make_posed(s, pose_of<T>(i + 1));
+        const Vec3<T> p = support_point(a, make_vec3(T(1), T(0), T(0)));
+        const GjkResult<T> g = gjk_intersect(a, b);
+        const GjkResult<T> g2 = gjk_intersect(a, b, T(10) * Eps<T>::value);
+        out(i, 0) = p.x + posed_radius(a);
+        out(i, 1) = pair_length_scale(a, b);
+        out(i, 2) = g.distance + g2.distance;
+        out(i, 3) = T(g.iterations);
+        status(i) = bounding_spheres_overlap(a, b) ? g.status : -1;
+      });
+}
+#endif
+
+#ifdef POLYDEM_CHECK_OVERLAP
+// polydem_overlap.h (with polydem_dual_hull.h, polydem_lp.h): overlap
+// polyhedron, V, centroid, S, M, in a per-thread fixed workspace
+template <typename T> void exercise_overlap(int n)
+{
+  DeviceCube<T> cube;
+  Kokkos::View<T *[8], Mem> out("out", n);
+  Kokkos::View<int *, Mem> status("status", n);
+  Kokkos::parallel_for(
+      "polydem_check_overlap", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
+        const ShapeView<T> s = cube.view();
+        const PosedShape<T> a = make_posed(s, pose_of<T>(i));
+        const PosedShape<T> b = make_posed(s, pose_of<T>(i + 1));
+        OverlapWorkspace<T> ws;
+        const OverlapResult<T> r = polyhedron_overlap(a, b, ws);
+        out(i, 0) = r.volume;
+        out(i, 1) = r.centroid.x;
+        out(i, 2) = r.S_A.y;
+        out(i, 3) = r.M_A.z + r.M_B.z;
+        out(i, 4) = r.area;
+        out(i, 5) = r.normal.x;
+        out(i, 6) = r.depth;
+        out(i, 7) = T(r.nverts);
+        status(i) = r.status;
+      });
+}
+#endif
+
+// TODO(kernels): add polydem_clip.h / polydem_contact_model.h the same way
+// when they exist (build the inputs from DeviceCube + pose_of, call the kernel
+// in the lambda, write its results to a View) and instantiate them below.
+// Until then those headers are only parsed, not instantiated, by this TU.
 
 // Explicit instantiation: nvcc generates device code for every lambda above.
 #define POLYDEM_INSTANTIATE(T)                                                                     \
   template void exercise_math<T>(int);                                                             \
-  POLYDEM_INSTANTIATE_RIGID(T)
+  POLYDEM_INSTANTIATE_RIGID(T)                                                                     \
+  POLYDEM_INSTANTIATE_GJK(T)                                                                       \
+  POLYDEM_INSTANTIATE_OVERLAP(T)
 
 #ifdef POLYDEM_CHECK_RIGID
 #define POLYDEM_INSTANTIATE_RIGID(T) template void exercise_rigid<T>(int);
 #else
 #define POLYDEM_INSTANTIATE_RIGID(T)
+#endif
+
+#ifdef POLYDEM_CHECK_GJK
+#define POLYDEM_INSTANTIATE_GJK(T) template void exercise_gjk<T>(int);
+#else
+#define POLYDEM_INSTANTIATE_GJK(T)
+#endif
+#ifdef POLYDEM_CHECK_OVERLAP
+#define POLYDEM_INSTANTIATE_OVERLAP(T) template void exercise_overlap<T>(int);
+#else
+#define POLYDEM_INSTANTIATE_OVERLAP(T)
 #endif
 
 POLYDEM_INSTANTIATE(float)
