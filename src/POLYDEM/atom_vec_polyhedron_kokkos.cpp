@@ -1,0 +1,1431 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - atom_style polyhedron/kk
+------------------------------------------------------------------------- */
+
+#include "atom_vec_polyhedron_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "comm_kokkos.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "memory_kokkos.h"
+#include "modify.h"
+
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+// fields each operation reads or writes (host and device paths alike)
+static constexpr unsigned int COMM_MASK = X_MASK | POLYDEM_QUAT_MASK;
+static constexpr unsigned int COMM_VEL_MASK =
+    X_MASK | V_MASK | MASK_MASK | OMEGA_MASK | ANGMOM_MASK | POLYDEM_QUAT_MASK;
+static constexpr unsigned int REVERSE_MASK = F_MASK | TORQUE_MASK;
+static constexpr unsigned int BORDER_MASK = X_MASK | TAG_MASK | TYPE_MASK | MASK_MASK |
+    RADIUS_MASK | RMASS_MASK | POLYDEM_QUAT_MASK | POLYDEM_PSHAPE_MASK | POLYDEM_PSCALE_MASK;
+static constexpr unsigned int BORDER_VEL_MASK = BORDER_MASK | V_MASK | OMEGA_MASK | ANGMOM_MASK;
+static constexpr unsigned int EXCHANGE_MASK = X_MASK | V_MASK | TAG_MASK | TYPE_MASK | MASK_MASK |
+    IMAGE_MASK | RADIUS_MASK | RMASS_MASK | OMEGA_MASK | ANGMOM_MASK | POLYDEM_ALL_MASK;
+// every field this style stores
+static constexpr unsigned int STYLE_MASK = EXCHANGE_MASK | F_MASK | TORQUE_MASK;
+
+/* ======================================================================
+   device functors
+====================================================================== */
+
+namespace {
+
+template <class DeviceType> using t_quat = polydem_view_t<tdual_quat_array, DeviceType>;
+
+// translation of a periodic image: x + (dx,dy,dz) (host formula of AtomVec::pack_comm)
+struct Shift {
+  X_FLOAT dx, dy, dz;
+};
+
+Shift comm_shift(Domain *domain, int pbc_flag, const int *pbc)
+{
+  Shift s = {0.0, 0.0, 0.0};
+  if (!pbc_flag) return s;
+  if (domain->triclinic == 0) {
+    s.dx = pbc[0] * domain->xprd;
+    s.dy = pbc[1] * domain->yprd;
+    s.dz = pbc[2] * domain->zprd;
+  } else {
+    s.dx = pbc[0] * domain->xprd + pbc[5] * domain->xy + pbc[4] * domain->xz;
+    s.dy = pbc[1] * domain->yprd + pbc[3] * domain->yz;
+    s.dz = pbc[2] * domain->zprd;
+  }
+  return s;
+}
+
+// border shifts: in lamda coordinates for triclinic boxes (as CommBrick::borders)
+Shift border_shift(Domain *domain, int pbc_flag, const int *pbc)
+{
+  Shift s = {0.0, 0.0, 0.0};
+  if (!pbc_flag) return s;
+  if (domain->triclinic == 0) {
+    s.dx = pbc[0] * domain->xprd;
+    s.dy = pbc[1] * domain->yprd;
+    s.dz = pbc[2] * domain->zprd;
+  } else {
+    s.dx = pbc[0];
+    s.dy = pbc[1];
+    s.dz = pbc[2];
+  }
+  return s;
+}
+
+/* ---------------------------------------------------------------------- */
+// forward: x (shifted), quat; with VEL also v (deform-remapped), omega, angmom
+
+template <class DeviceType, int VEL> struct PolyPackComm {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array_randomread x;
+  typename AT::t_v_array_randomread v, omega, angmom;
+  typename AT::t_int_1d_randomread mask;
+  t_quat<DeviceType> quat;
+  typename AT::t_xfloat_2d_um buf;
+  typename AT::t_int_2d_const list;
+  int iswap, pbc_flag, deform_groupbit;
+  Shift s;
+  X_FLOAT dvx, dvy, dvz;
+
+  PolyPackComm(AtomKokkos *atomKK, const tdual_quat_array &k_quat,
+               const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_2d &k_list, int iswap_,
+               int pbc_flag_, Shift s_, int deform_groupbit_, const X_FLOAT *dv) :
+      x(atomKK->k_x.view<DeviceType>()),
+      quat(k_quat.view<DeviceType>()), list(k_list.view<DeviceType>()), iswap(iswap_),
+      pbc_flag(pbc_flag_), deform_groupbit(deform_groupbit_), s(s_)
+  {
+    if (VEL) {
+      v = atomKK->k_v.view<DeviceType>();
+      omega = atomKK->k_omega.view<DeviceType>();
+      angmom = atomKK->k_angmom.view<DeviceType>();
+      mask = atomKK->k_mask.view<DeviceType>();
+    }
+    dvx = dv[0];
+    dvy = dv[1];
+    dvz = dv[2];
+    const int elements = VEL ? AtomVecPolyhedronKokkosBase::COMM_VEL_SIZE
+                             : AtomVecPolyhedronKokkosBase::COMM_SIZE;
+    const auto b = k_buf.view<DeviceType>();
+    buf = typename AT::t_xfloat_2d_um(b.data(), (b.extent(0) * b.extent(1)) / elements, elements);
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
+  {
+    const int j = list(iswap, i);
+    if (pbc_flag) {
+      buf(i, 0) = x(j, 0) + s.dx;
+      buf(i, 1) = x(j, 1) + s.dy;
+      buf(i, 2) = x(j, 2) + s.dz;
+    } else {
+      buf(i, 0) = x(j, 0);
+      buf(i, 1) = x(j, 1);
+      buf(i, 2) = x(j, 2);
+    }
+    int m = 3;
+    if (VEL) {
+      const bool remap = pbc_flag && deform_groupbit && (mask(j) & deform_groupbit);
+      buf(i, m++) = remap ? v(j, 0) + dvx : v(j, 0);
+      buf(i, m++) = remap ? v(j, 1) + dvy : v(j, 1);
+      buf(i, m++) = remap ? v(j, 2) + dvz : v(j, 2);
+    }
+    for (int k = 0; k < 4; k++) buf(i, m++) = quat(j, k);
+    if (VEL) {
+      for (int k = 0; k < 3; k++) buf(i, m++) = omega(j, k);
+      for (int k = 0; k < 3; k++) buf(i, m++) = angmom(j, k);
+    }
+  }
+};
+
+template <class DeviceType, int VEL> struct PolyUnpackComm {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array x;
+  typename AT::t_v_array v, omega, angmom;
+  t_quat<DeviceType> quat;
+  typename AT::t_xfloat_2d_const_um buf;
+  int first;
+
+  PolyUnpackComm(AtomKokkos *atomKK, const tdual_quat_array &k_quat,
+                 const DAT::tdual_xfloat_2d &k_buf, int first_) :
+      x(atomKK->k_x.view<DeviceType>()), quat(k_quat.view<DeviceType>()), first(first_)
+  {
+    if (VEL) {
+      v = atomKK->k_v.view<DeviceType>();
+      omega = atomKK->k_omega.view<DeviceType>();
+      angmom = atomKK->k_angmom.view<DeviceType>();
+    }
+    const int elements = VEL ? AtomVecPolyhedronKokkosBase::COMM_VEL_SIZE
+                             : AtomVecPolyhedronKokkosBase::COMM_SIZE;
+    const auto b = k_buf.view<DeviceType>();
+    buf = typename AT::t_xfloat_2d_const_um(b.data(), (b.extent(0) * b.extent(1)) / elements,
+                                            elements);
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
+  {
+    const int j = i + first;
+    int m = 0;
+    for (int k = 0; k < 3; k++) x(j, k) = buf(i, m++);
+    if (VEL)
+      for (int k = 0; k < 3; k++) v(j, k) = buf(i, m++);
+    for (int k = 0; k < 4; k++) quat(j, k) = buf(i, m++);
+    if (VEL) {
+      for (int k = 0; k < 3; k++) omega(j, k) = buf(i, m++);
+      for (int k = 0; k < 3; k++) angmom(j, k) = buf(i, m++);
+    }
+  }
+};
+
+// forward communication with self: copy owned/ghost j to ghost i + nfirst
+template <class DeviceType> struct PolyCommSelf {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array x;
+  t_quat<DeviceType> quat;
+  typename AT::t_int_2d_const list;
+  int iswap, nfirst, pbc_flag;
+  Shift s;
+
+  PolyCommSelf(AtomKokkos *atomKK, const tdual_quat_array &k_quat,
+               const DAT::tdual_int_2d &k_list, int iswap_, int nfirst_, int pbc_flag_,
+               Shift s_) :
+      x(atomKK->k_x.view<DeviceType>()),
+      quat(k_quat.view<DeviceType>()), list(k_list.view<DeviceType>()), iswap(iswap_),
+      nfirst(nfirst_), pbc_flag(pbc_flag_), s(s_)
+  {
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
+  {
+    const int j = list(iswap, i);
+    const int g = i + nfirst;
+    if (pbc_flag) {
+      x(g, 0) = x(j, 0) + s.dx;
+      x(g, 1) = x(j, 1) + s.dy;
+      x(g, 2) = x(j, 2) + s.dz;
+    } else {
+      x(g, 0) = x(j, 0);
+      x(g, 1) = x(j, 1);
+      x(g, 2) = x(j, 2);
+    }
+    for (int k = 0; k < 4; k++) quat(g, k) = quat(j, k);
+  }
+};
+
+// all self swaps of a single-rank run in one kernel (CommKokkos::copy_swap_info):
+// ghosts that are images of ghosts read the owned atom through g2l
+template <class DeviceType> struct PolyCommSelfFused {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array x;
+  t_quat<DeviceType> quat;
+  typename AT::t_int_2d_const list, pbc;
+  typename AT::t_int_1d_const pbc_flag, firstrecv, sendnum_scan, g2l;
+  X_FLOAT xprd, yprd, zprd, xy, xz, yz;
+  int triclinic;
+
+  PolyCommSelfFused(AtomKokkos *atomKK, const tdual_quat_array &k_quat,
+                    const DAT::tdual_int_2d &k_list, const DAT::tdual_int_2d &k_pbc,
+                    const DAT::tdual_int_1d &k_pbc_flag, const DAT::tdual_int_1d &k_firstrecv,
+                    const DAT::tdual_int_1d &k_sendnum_scan, const DAT::tdual_int_1d &k_g2l,
+                    Domain *domain) :
+      x(atomKK->k_x.view<DeviceType>()),
+      quat(k_quat.view<DeviceType>()), list(k_list.view<DeviceType>()),
+      pbc(k_pbc.view<DeviceType>()), pbc_flag(k_pbc_flag.view<DeviceType>()),
+      firstrecv(k_firstrecv.view<DeviceType>()), sendnum_scan(k_sendnum_scan.view<DeviceType>()),
+      g2l(k_g2l.view<DeviceType>()), xprd(domain->xprd), yprd(domain->yprd),
+      zprd(domain->zprd), xy(domain->xy), xz(domain->xz), yz(domain->yz),
+      triclinic(domain->triclinic)
+  {
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &ii) const
+  {
+    int iswap = 0;
+    while (ii >= sendnum_scan(iswap)) iswap++;
+    const int i = iswap > 0 ? ii - sendnum_scan(iswap - 1) : ii;
+    const int g = i + firstrecv(iswap);
+    const int nlocal = firstrecv(0);
+    int j = list(iswap, i);
+    if (j >= nlocal) j = g2l(j - nlocal);
+    if (pbc_flag(ii) == 0) {
+      x(g, 0) = x(j, 0);
+      x(g, 1) = x(j, 1);
+      x(g, 2) = x(j, 2);
+    } else if (triclinic == 0) {
+      x(g, 0) = x(j, 0) + pbc(ii, 0) * xprd;
+      x(g, 1) = x(j, 1) + pbc(ii, 1) * yprd;
+      x(g, 2) = x(j, 2) + pbc(ii, 2) * zprd;
+    } else {
+      x(g, 0) = x(j, 0) + pbc(ii, 0) * xprd + pbc(ii, 5) * xy + pbc(ii, 4) * xz;
+      x(g, 1) = x(j, 1) + pbc(ii, 1) * yprd + pbc(ii, 3) * yz;
+      x(g, 2) = x(j, 2) + pbc(ii, 2) * zprd;
+    }
+    for (int k = 0; k < 4; k++) quat(g, k) = quat(j, k);
+  }
+};
+
+/* ---------------------------------------------------------------------- */
+// borders: x, tag, type, mask, radius, rmass, quat, pshape, pscale
+// (+ v, omega, angmom); row stride = size of one atom in CommKokkos's buffer
+
+template <class DeviceType, int VEL> struct PolyPackBorder {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_xfloat_2d_um buf;
+  typename AT::t_int_2d_const list;
+  int iswap, pbc_flag, deform_groupbit;
+  typename AT::t_x_array_randomread x;
+  typename AT::t_tagint_1d tag;
+  typename AT::t_int_1d type, mask, pshape;
+  typename AT::t_float_1d radius, rmass, pscale;
+  typename AT::t_v_array v, omega, angmom;
+  t_quat<DeviceType> quat;
+  Shift s;
+  X_FLOAT dvx, dvy, dvz;
+
+  PolyPackBorder(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
+                 const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_2d &k_list, int iswap_,
+                 int pbc_flag_, Shift s_, int deform_groupbit_, const X_FLOAT *dv, int stride) :
+      list(k_list.view<DeviceType>()),
+      iswap(iswap_), pbc_flag(pbc_flag_), deform_groupbit(deform_groupbit_),
+      x(atomKK->k_x.view<DeviceType>()), tag(atomKK->k_tag.view<DeviceType>()),
+      type(atomKK->k_type.view<DeviceType>()), mask(atomKK->k_mask.view<DeviceType>()),
+      pshape(avec->k_pshape.view<DeviceType>()), radius(atomKK->k_radius.view<DeviceType>()),
+      rmass(atomKK->k_rmass.view<DeviceType>()), pscale(avec->k_pscale.view<DeviceType>()),
+      quat(avec->k_quat.view<DeviceType>()), s(s_)
+  {
+    if (VEL) {
+      v = atomKK->k_v.view<DeviceType>();
+      omega = atomKK->k_omega.view<DeviceType>();
+      angmom = atomKK->k_angmom.view<DeviceType>();
+    }
+    dvx = dv[0];
+    dvy = dv[1];
+    dvz = dv[2];
+    const auto b = k_buf.view<DeviceType>();
+    buf = typename AT::t_xfloat_2d_um(b.data(), (b.extent(0) * b.extent(1)) / stride, stride);
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
+  {
+    const int j = list(iswap, i);
+    if (pbc_flag) {
+      buf(i, 0) = x(j, 0) + s.dx;
+      buf(i, 1) = x(j, 1) + s.dy;
+      buf(i, 2) = x(j, 2) + s.dz;
+    } else {
+      buf(i, 0) = x(j, 0);
+      buf(i, 1) = x(j, 1);
+      buf(i, 2) = x(j, 2);
+    }
+    buf(i, 3) = d_ubuf(tag(j)).d;
+    buf(i, 4) = d_ubuf(type(j)).d;
+    buf(i, 5) = d_ubuf(mask(j)).d;
+    buf(i, 6) = radius(j);
+    buf(i, 7) = rmass(j);
+    for (int k = 0; k < 4; k++) buf(i, 8 + k) = quat(j, k);
+    buf(i, 12) = d_ubuf(pshape(j)).d;
+    buf(i, 13) = pscale(j);
+    if (VEL) {
+      const bool remap = pbc_flag && deform_groupbit && (mask(j) & deform_groupbit);
+      buf(i, 14) = remap ? v(j, 0) + dvx : v(j, 0);
+      buf(i, 15) = remap ? v(j, 1) + dvy : v(j, 1);
+      buf(i, 16) = remap ? v(j, 2) + dvz : v(j, 2);
+      for (int k = 0; k < 3; k++) buf(i, 17 + k) = omega(j, k);
+      for (int k = 0; k < 3; k++) buf(i, 20 + k) = angmom(j, k);
+    }
+  }
+};
+
+template <class DeviceType, int VEL> struct PolyUnpackBorder {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_xfloat_2d_const_um buf;
+  typename AT::t_x_array x;
+  typename AT::t_tagint_1d tag;
+  typename AT::t_int_1d type, mask, pshape;
+  typename AT::t_float_1d radius, rmass, pscale;
+  typename AT::t_v_array v, omega, angmom;
+  t_quat<DeviceType> quat;
+  int first;
+
+  PolyUnpackBorder(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
+                   const DAT::tdual_xfloat_2d &k_buf, int first_, int stride) :
+      x(atomKK->k_x.view<DeviceType>()),
+      tag(atomKK->k_tag.view<DeviceType>()), type(atomKK->k_type.view<DeviceType>()),
+      mask(atomKK->k_mask.view<DeviceType>()), pshape(avec->k_pshape.view<DeviceType>()),
+      radius(atomKK->k_radius.view<DeviceType>()), rmass(atomKK->k_rmass.view<DeviceType>()),
+      pscale(avec->k_pscale.view<DeviceType>()), quat(avec->k_quat.view<DeviceType>()),
+      first(first_)
+  {
+    if (VEL) {
+      v = atomKK->k_v.view<DeviceType>();
+      omega = atomKK->k_omega.view<DeviceType>();
+      angmom = atomKK->k_angmom.view<DeviceType>();
+    }
+    const auto b = k_buf.view<DeviceType>();
+    buf = typename AT::t_xfloat_2d_const_um(b.data(), (b.extent(0) * b.extent(1)) / stride,
+                                            stride);
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
+  {
+    const int j = i + first;
+    x(j, 0) = buf(i, 0);
+    x(j, 1) = buf(i, 1);
+    x(j, 2) = buf(i, 2);
+    tag(j) = static_cast<tagint>(d_ubuf(buf(i, 3)).i);
+    type(j) = static_cast<int>(d_ubuf(buf(i, 4)).i);
+    mask(j) = static_cast<int>(d_ubuf(buf(i, 5)).i);
+    radius(j) = buf(i, 6);
+    rmass(j) = buf(i, 7);
+    for (int k = 0; k < 4; k++) quat(j, k) = buf(i, 8 + k);
+    pshape(j) = static_cast<int>(d_ubuf(buf(i, 12)).i);
+    pscale(j) = buf(i, 13);
+    if (VEL) {
+      for (int k = 0; k < 3; k++) v(j, k) = buf(i, 14 + k);
+      for (int k = 0; k < 3; k++) omega(j, k) = buf(i, 17 + k);
+      for (int k = 0; k < 3; k++) angmom(j, k) = buf(i, 20 + k);
+    }
+  }
+};
+
+/* ---------------------------------------------------------------------- */
+// exchange: every field of fields_exchange; the hole left by a departing
+// atom is filled from copylist (atoms that stay, taken from the end)
+
+template <class DeviceType> struct PolyExchangeViews {
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array x;
+  typename AT::t_v_array v, omega, angmom;
+  typename AT::t_tagint_1d tag;
+  typename AT::t_int_1d type, mask, pshape;
+  typename AT::t_imageint_1d image;
+  typename AT::t_float_1d radius, rmass, pscale;
+  t_quat<DeviceType> quat;
+
+  PolyExchangeViews(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec) :
+      x(atomKK->k_x.view<DeviceType>()), v(atomKK->k_v.view<DeviceType>()),
+      omega(atomKK->k_omega.view<DeviceType>()), angmom(atomKK->k_angmom.view<DeviceType>()),
+      tag(atomKK->k_tag.view<DeviceType>()), type(atomKK->k_type.view<DeviceType>()),
+      mask(atomKK->k_mask.view<DeviceType>()), pshape(avec->k_pshape.view<DeviceType>()),
+      image(atomKK->k_image.view<DeviceType>()), radius(atomKK->k_radius.view<DeviceType>()),
+      rmass(atomKK->k_rmass.view<DeviceType>()), pscale(avec->k_pscale.view<DeviceType>()),
+      quat(avec->k_quat.view<DeviceType>())
+  {
+  }
+
+  KOKKOS_INLINE_FUNCTION void copy(int from, int to) const
+  {
+    for (int k = 0; k < 3; k++) {
+      x(to, k) = x(from, k);
+      v(to, k) = v(from, k);
+      omega(to, k) = omega(from, k);
+      angmom(to, k) = angmom(from, k);
+    }
+    tag(to) = tag(from);
+    type(to) = type(from);
+    mask(to) = mask(from);
+    image(to) = image(from);
+    radius(to) = radius(from);
+    rmass(to) = rmass(from);
+    for (int k = 0; k < 4; k++) quat(to, k) = quat(from, k);
+    pshape(to) = pshape(from);
+    pscale(to) = pscale(from);
+  }
+};
+
+template <class DeviceType> struct PolyPackExchange {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  PolyExchangeViews<DeviceType> a;
+  typename AT::t_xfloat_2d_um buf;
+  typename AT::t_int_1d_const sendlist, copylist;
+
+  PolyPackExchange(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
+                   const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_1d &k_sendlist,
+                   const DAT::tdual_int_1d &k_copylist) :
+      a(atomKK, avec),
+      sendlist(k_sendlist.view<DeviceType>()), copylist(k_copylist.view<DeviceType>())
+  {
+    const int elements = AtomVecPolyhedronKokkosBase::EXCHANGE_SIZE;
+    const auto b = k_buf.view<DeviceType>();
+    buf = typename AT::t_xfloat_2d_um(b.data(), (b.extent(0) * b.extent(1)) / elements, elements);
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &mysend) const
+  {
+    const int i = sendlist(mysend);
+    int m = 0;
+    buf(mysend, m++) = AtomVecPolyhedronKokkosBase::EXCHANGE_SIZE;
+    for (int k = 0; k < 3; k++) buf(mysend, m++) = a.x(i, k);
+    for (int k = 0; k < 3; k++) buf(mysend, m++) = a.v(i, k);
+    buf(mysend, m++) = d_ubuf(a.tag(i)).d;
+    buf(mysend, m++) = d_ubuf(a.type(i)).d;
+    buf(mysend, m++) = d_ubuf(a.mask(i)).d;
+    buf(mysend, m++) = d_ubuf(a.image(i)).d;
+    buf(mysend, m++) = a.radius(i);
+    buf(mysend, m++) = a.rmass(i);
+    for (int k = 0; k < 3; k++) buf(mysend, m++) = a.omega(i, k);
+    for (int k = 0; k < 3; k++) buf(mysend, m++) = a.angmom(i, k);
+    for (int k = 0; k < 4; k++) buf(mysend, m++) = a.quat(i, k);
+    buf(mysend, m++) = d_ubuf(a.pshape(i)).d;
+    buf(mysend, m++) = a.pscale(i);
+    const int j = copylist(mysend);
+    if (j > -1) a.copy(j, i);
+  }
+};
+
+template <class DeviceType> struct PolyUnpackExchange {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  PolyExchangeViews<DeviceType> a;
+  typename AT::t_xfloat_2d_um buf;
+  typename AT::t_int_1d nlocal;
+  int dim;
+  X_FLOAT lo, hi;
+
+  PolyUnpackExchange(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
+                     const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_1d &k_nlocal,
+                     int dim_, X_FLOAT lo_, X_FLOAT hi_) :
+      a(atomKK, avec),
+      nlocal(k_nlocal.view<DeviceType>()), dim(dim_), lo(lo_), hi(hi_)
+  {
+    const int elements = AtomVecPolyhedronKokkosBase::EXCHANGE_SIZE;
+    const auto b = k_buf.view<DeviceType>();
+    buf = typename AT::t_xfloat_2d_um(b.data(), (b.extent(0) * b.extent(1)) / elements, elements);
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int &myrecv) const
+  {
+    const X_FLOAT xd = buf(myrecv, dim + 1);
+    if (xd < lo || xd >= hi) return;
+    const int i = Kokkos::atomic_fetch_add(&nlocal(0), 1);
+    int m = 1;
+    for (int k = 0; k < 3; k++) a.x(i, k) = buf(myrecv, m++);
+    for (int k = 0; k < 3; k++) a.v(i, k) = buf(myrecv, m++);
+    a.tag(i) = static_cast<tagint>(d_ubuf(buf(myrecv, m++)).i);
+    a.type(i) = static_cast<int>(d_ubuf(buf(myrecv, m++)).i);
+    a.mask(i) = static_cast<int>(d_ubuf(buf(myrecv, m++)).i);
+    a.image(i) = static_cast<imageint>(d_ubuf(buf(myrecv, m++)).i);
+    a.radius(i) = buf(myrecv, m++);
+    a.rmass(i) = buf(myrecv, m++);
+    for (int k = 0; k < 3; k++) a.omega(i, k) = buf(myrecv, m++);
+    for (int k = 0; k < 3; k++) a.angmom(i, k) = buf(myrecv, m++);
+    for (int k = 0; k < 4; k++) a.quat(i, k) = buf(myrecv, m++);
+    a.pshape(i) = static_cast<int>(d_ubuf(buf(myrecv, m++)).i);
+    a.pscale(i) = buf(myrecv, m++);
+  }
+};
+
+}    // namespace
+
+/* ======================================================================
+   AtomVecPolyhedronKokkosBase
+====================================================================== */
+
+AtomVecPolyhedronKokkosBase::AtomVecPolyhedronKokkosBase(LAMMPS *lmp) : AtomVecKokkos(lmp)
+{
+  mass_type = PER_ATOM;
+  molecular = Atom::ATOMIC;
+  forceclearflag = 0;
+
+  commKK = (CommKokkos *) comm;
+  k_count = DAT::tdual_int_1d("polyhedron:count", 1);
+
+  // device paths exist for ghost velocities too
+  no_comm_vel_flag = 0;
+  no_border_vel_flag = 0;
+}
+
+/* ----------------------------------------------------------------------
+   AtomKokkos's destructor has already released the standard fields when
+   the Atom dies; when only the atom style is replaced (read_restart after
+   atom_style) they stay with AtomKokkos. Either way ~AtomVec must not
+   memory->destroy() them: forget the field lists. The POLYDEM fields are
+   ours: release the DualViews and the row pointers of quat.
+------------------------------------------------------------------------- */
+
+AtomVecPolyhedronKokkosBase::~AtomVecPolyhedronKokkosBase()
+{
+  memoryKK->destroy_kokkos(k_quat, atom->quat);
+  memoryKK->destroy_kokkos(k_pshape, atom->pshape);
+  memoryKK->destroy_kokkos(k_pscale, atom->pscale);
+  release_fields();
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkosBase::set_fields(const AtomVec &plain)
+{
+  fields_grow = plain.fields_grow;
+  fields_copy = plain.fields_copy;
+  fields_comm = plain.fields_comm;
+  fields_comm_vel = plain.fields_comm_vel;
+  fields_reverse = plain.fields_reverse;
+  fields_border = plain.fields_border;
+  fields_border_vel = plain.fields_border_vel;
+  fields_exchange = plain.fields_exchange;
+  fields_restart = plain.fields_restart;
+  fields_create = plain.fields_create;
+  fields_data_atom = plain.fields_data_atom;
+  fields_data_vel = plain.fields_data_vel;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkosBase::init()
+{
+  AtomVecKokkos::init();
+
+  // the device kernels hard-code the field lists of atom_style polyhedron
+  if (size_forward != COMM_SIZE || size_velocity != COMM_VEL_SIZE - 3 ||
+      size_border != BORDER_SIZE)
+    error->all(FLERR,
+               "atom_style polyhedron/kk: the communicated fields of atom_style polyhedron "
+               "changed (forward {} velocity {} border {}); update the Kokkos kernels",
+               size_forward, size_velocity, size_border);
+}
+
+/* ----------------------------------------------------------------------
+   grow atom arrays; n = 0 grows by a chunk, n > 0 allocates n
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkosBase::grow(int n)
+{
+  const int step = MAX(LMP_KOKKOS_AV_DELTA, nmax * 0.01);
+  if (n == 0) nmax += step;
+  else nmax = n;
+  atom->nmax = nmax;
+  if (nmax < 0 || nmax > MAXSMALLINT) error->one(FLERR, "Per-processor system is too big");
+
+  // resize with both copies current, device data authoritative (as LAMMPS's styles)
+  atomKK->sync(Device, ALL_MASK);
+  atomKK->modified(Device, ALL_MASK);
+
+  memoryKK->grow_kokkos(atomKK->k_tag, atomKK->tag, nmax, "atom:tag");
+  memoryKK->grow_kokkos(atomKK->k_type, atomKK->type, nmax, "atom:type");
+  memoryKK->grow_kokkos(atomKK->k_mask, atomKK->mask, nmax, "atom:mask");
+  memoryKK->grow_kokkos(atomKK->k_image, atomKK->image, nmax, "atom:image");
+  memoryKK->grow_kokkos(atomKK->k_x, atomKK->x, nmax, "atom:x");
+  memoryKK->grow_kokkos(atomKK->k_v, atomKK->v, nmax, "atom:v");
+  memoryKK->grow_kokkos(atomKK->k_f, atomKK->f, nmax, "atom:f");
+  memoryKK->grow_kokkos(atomKK->k_radius, atomKK->radius, nmax, "atom:radius");
+  memoryKK->grow_kokkos(atomKK->k_rmass, atomKK->rmass, nmax, "atom:rmass");
+  memoryKK->grow_kokkos(atomKK->k_omega, atomKK->omega, nmax, "atom:omega");
+  memoryKK->grow_kokkos(atomKK->k_angmom, atomKK->angmom, nmax, "atom:angmom");
+  memoryKK->grow_kokkos(atomKK->k_torque, atomKK->torque, nmax, "atom:torque");
+  memoryKK->grow_kokkos(k_quat, atomKK->quat, nmax, "atom:quat");
+  memoryKK->grow_kokkos(k_pshape, atomKK->pshape, nmax, "atom:pshape");
+  memoryKK->grow_kokkos(k_pscale, atomKK->pscale, nmax, "atom:pscale");
+
+  for (int iextra = 0; iextra < atom->nextra_grow; iextra++)
+    modify->fix[atom->extra_grow[iextra]]->grow_arrays(nmax);
+
+  grow_pointers();
+  atomKK->sync(Host, ALL_MASK);
+}
+
+/* ----------------------------------------------------------------------
+   pointers of LAMMPS's generic AtomVec code (host data)
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkosBase::grow_pointers()
+{
+  tag = atomKK->tag;
+  type = atomKK->type;
+  mask = atomKK->mask;
+  image = atomKK->image;
+  x = atomKK->x;
+  v = atomKK->v;
+  f = atomKK->f;
+  h_x = atomKK->k_x.h_view;
+  h_v = atomKK->k_v.h_view;
+  h_f = atomKK->k_f.h_view;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkosBase::sync_host_all()
+{
+  atomKK->sync(Host, STYLE_MASK);
+}
+
+void AtomVecPolyhedronKokkosBase::modified_host_all()
+{
+  atomKK->modified(Host, STYLE_MASK);
+}
+
+/* ----------------------------------------------------------------------
+   host paths: the generic AtomVec code, on current host data
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkosBase::copy(int i, int j, int delflag)
+{
+  atomKK->sync(Host, EXCHANGE_MASK);
+  AtomVec::copy(i, j, delflag);
+  atomKK->modified(Host, EXCHANGE_MASK);
+}
+
+int AtomVecPolyhedronKokkosBase::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  atomKK->sync(Host, COMM_MASK);
+  return AtomVec::pack_comm(n, list, buf, pbc_flag, pbc);
+}
+
+int AtomVecPolyhedronKokkosBase::pack_comm_vel(int n, int *list, double *buf, int pbc_flag,
+                                               int *pbc)
+{
+  atomKK->sync(Host, COMM_VEL_MASK);
+  return AtomVec::pack_comm_vel(n, list, buf, pbc_flag, pbc);
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_comm(int n, int first, double *buf)
+{
+  atomKK->sync(Host, COMM_MASK);
+  AtomVec::unpack_comm(n, first, buf);
+  atomKK->modified(Host, COMM_MASK);
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_comm_vel(int n, int first, double *buf)
+{
+  atomKK->sync(Host, COMM_VEL_MASK);
+  AtomVec::unpack_comm_vel(n, first, buf);
+  atomKK->modified(Host, COMM_VEL_MASK);
+}
+
+int AtomVecPolyhedronKokkosBase::pack_reverse(int n, int first, double *buf)
+{
+  atomKK->sync(Host, REVERSE_MASK);
+  return AtomVec::pack_reverse(n, first, buf);
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_reverse(int n, int *list, double *buf)
+{
+  atomKK->sync(Host, REVERSE_MASK);
+  AtomVec::unpack_reverse(n, list, buf);
+  atomKK->modified(Host, REVERSE_MASK);
+}
+
+int AtomVecPolyhedronKokkosBase::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  atomKK->sync(Host, BORDER_MASK);
+  return AtomVec::pack_border(n, list, buf, pbc_flag, pbc);
+}
+
+int AtomVecPolyhedronKokkosBase::pack_border_vel(int n, int *list, double *buf, int pbc_flag,
+                                                 int *pbc)
+{
+  atomKK->sync(Host, BORDER_VEL_MASK);
+  return AtomVec::pack_border_vel(n, list, buf, pbc_flag, pbc);
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_border(int n, int first, double *buf)
+{
+  atomKK->sync(Host, BORDER_MASK);
+  AtomVec::unpack_border(n, first, buf);
+  atomKK->modified(Host, BORDER_MASK);
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_border_vel(int n, int first, double *buf)
+{
+  atomKK->sync(Host, BORDER_VEL_MASK);
+  AtomVec::unpack_border_vel(n, first, buf);
+  atomKK->modified(Host, BORDER_VEL_MASK);
+}
+
+int AtomVecPolyhedronKokkosBase::pack_exchange(int i, double *buf)
+{
+  atomKK->sync(Host, EXCHANGE_MASK);
+  return AtomVec::pack_exchange(i, buf);
+}
+
+int AtomVecPolyhedronKokkosBase::unpack_exchange(double *buf)
+{
+  atomKK->sync(Host, EXCHANGE_MASK);
+  const int m = AtomVec::unpack_exchange(buf);
+  atomKK->modified(Host, EXCHANGE_MASK);
+  return m;
+}
+
+int AtomVecPolyhedronKokkosBase::size_restart()
+{
+  return AtomVec::size_restart();
+}
+
+int AtomVecPolyhedronKokkosBase::pack_restart(int i, double *buf)
+{
+  atomKK->sync(Host, EXCHANGE_MASK);
+  return AtomVec::pack_restart(i, buf);
+}
+
+int AtomVecPolyhedronKokkosBase::unpack_restart(double *buf)
+{
+  atomKK->sync(Host, EXCHANGE_MASK);
+  const int m = AtomVec::unpack_restart(buf);
+  atomKK->modified(Host, EXCHANGE_MASK);
+  return m;
+}
+
+void AtomVecPolyhedronKokkosBase::create_atom(int itype, double *coord)
+{
+  sync_host_all();
+  AtomVec::create_atom(itype, coord);
+  modified_host_all();
+}
+
+void AtomVecPolyhedronKokkosBase::data_atom(double *coord, imageint imagetmp, char **values)
+{
+  sync_host_all();
+  AtomVec::data_atom(coord, imagetmp, values);
+  modified_host_all();
+}
+
+void AtomVecPolyhedronKokkosBase::pack_data(double **buf)
+{
+  sync_host_all();
+  AtomVec::pack_data(buf);
+}
+
+void AtomVecPolyhedronKokkosBase::write_data(FILE *fp, int n, double **buf)
+{
+  AtomVec::write_data(fp, n, buf);
+}
+
+void AtomVecPolyhedronKokkosBase::data_vel(int ilocal, char **values)
+{
+  sync_host_all();
+  AtomVec::data_vel(ilocal, values);
+  modified_host_all();
+}
+
+void AtomVecPolyhedronKokkosBase::pack_vel(double **buf)
+{
+  sync_host_all();
+  AtomVec::pack_vel(buf);
+}
+
+void AtomVecPolyhedronKokkosBase::write_vel(FILE *fp, int n, double **buf)
+{
+  AtomVec::write_vel(fp, n, buf);
+}
+
+double AtomVecPolyhedronKokkosBase::memory_usage()
+{
+  return AtomVec::memory_usage();
+}
+
+/* ======================================================================
+   device paths
+====================================================================== */
+
+int AtomVecPolyhedronKokkosBase::pack_comm_kokkos(const int &n, const DAT::tdual_int_2d &list,
+                                                  const int &iswap,
+                                                  const DAT::tdual_xfloat_2d &buf,
+                                                  const int &pbc_flag, const int pbc[])
+{
+  const Shift s = comm_shift(domain, pbc_flag, pbc);
+  const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
+  if (commKK->forward_comm_on_host) {
+    atomKK->sync(Host, COMM_MASK);
+    PolyPackComm<LMPHostType, 0> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, 0, dv);
+    Kokkos::parallel_for(n, f);
+  } else {
+    atomKK->sync(Device, COMM_MASK);
+    PolyPackComm<LMPDeviceType, 0> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, 0, dv);
+    Kokkos::parallel_for(n, f);
+  }
+  return n * COMM_SIZE;
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_comm_kokkos(const int &n, const int &first,
+                                                     const DAT::tdual_xfloat_2d &buf)
+{
+  if (commKK->forward_comm_on_host) {
+    atomKK->sync(Host, COMM_MASK);
+    PolyUnpackComm<LMPHostType, 0> f(atomKK, k_quat, buf, first);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Host, COMM_MASK);
+  } else {
+    atomKK->sync(Device, COMM_MASK);
+    PolyUnpackComm<LMPDeviceType, 0> f(atomKK, k_quat, buf, first);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Device, COMM_MASK);
+  }
+}
+
+int AtomVecPolyhedronKokkosBase::pack_comm_vel_kokkos(const int &n,
+                                                      const DAT::tdual_int_2d &list,
+                                                      const int &iswap,
+                                                      const DAT::tdual_xfloat_2d &buf,
+                                                      const int &pbc_flag, const int pbc[])
+{
+  const Shift s = comm_shift(domain, pbc_flag, pbc);
+  X_FLOAT dv[3] = {0.0, 0.0, 0.0};
+  if (pbc_flag && deform_vremap) {
+    dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
+    dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
+    dv[2] = pbc[2] * h_rate[2];
+  }
+  const int groupbit = deform_vremap ? deform_groupbit : 0;
+  if (commKK->forward_comm_on_host) {
+    atomKK->sync(Host, COMM_VEL_MASK);
+    PolyPackComm<LMPHostType, 1> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, groupbit, dv);
+    Kokkos::parallel_for(n, f);
+  } else {
+    atomKK->sync(Device, COMM_VEL_MASK);
+    PolyPackComm<LMPDeviceType, 1> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, groupbit,
+                                     dv);
+    Kokkos::parallel_for(n, f);
+  }
+  return n * COMM_VEL_SIZE;
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_comm_vel_kokkos(const int &n, const int &first,
+                                                         const DAT::tdual_xfloat_2d &buf)
+{
+  if (commKK->forward_comm_on_host) {
+    atomKK->sync(Host, COMM_VEL_MASK);
+    PolyUnpackComm<LMPHostType, 1> f(atomKK, k_quat, buf, first);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Host, COMM_VEL_MASK);
+  } else {
+    atomKK->sync(Device, COMM_VEL_MASK);
+    PolyUnpackComm<LMPDeviceType, 1> f(atomKK, k_quat, buf, first);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Device, COMM_VEL_MASK);
+  }
+}
+
+int AtomVecPolyhedronKokkosBase::pack_comm_self(const int &n, const DAT::tdual_int_2d &list,
+                                                const int &iswap, const int nfirst,
+                                                const int &pbc_flag, const int pbc[])
+{
+  const Shift s = comm_shift(domain, pbc_flag, pbc);
+  if (commKK->forward_comm_on_host) {
+    atomKK->sync(Host, COMM_MASK);
+    PolyCommSelf<LMPHostType> f(atomKK, k_quat, list, iswap, nfirst, pbc_flag, s);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Host, COMM_MASK);
+  } else {
+    atomKK->sync(Device, COMM_MASK);
+    PolyCommSelf<LMPDeviceType> f(atomKK, k_quat, list, iswap, nfirst, pbc_flag, s);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Device, COMM_MASK);
+  }
+  return n * COMM_SIZE;
+}
+
+int AtomVecPolyhedronKokkosBase::pack_comm_self_fused(
+    const int &n, const DAT::tdual_int_2d &list, const DAT::tdual_int_1d &sendnum_scan,
+    const DAT::tdual_int_1d &firstrecv, const DAT::tdual_int_1d &pbc_flag,
+    const DAT::tdual_int_2d &pbc, const DAT::tdual_int_1d &g2l)
+{
+  if (commKK->forward_comm_on_host) {
+    atomKK->sync(Host, COMM_MASK);
+    PolyCommSelfFused<LMPHostType> f(atomKK, k_quat, list, pbc, pbc_flag, firstrecv,
+                                     sendnum_scan, g2l, domain);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Host, COMM_MASK);
+  } else {
+    atomKK->sync(Device, COMM_MASK);
+    PolyCommSelfFused<LMPDeviceType> f(atomKK, k_quat, list, pbc, pbc_flag, firstrecv,
+                                       sendnum_scan, g2l, domain);
+    Kokkos::parallel_for(n, f);
+    atomKK->modified(Device, COMM_MASK);
+  }
+  return n * COMM_SIZE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int AtomVecPolyhedronKokkosBase::pack_border_kokkos(int n, DAT::tdual_int_2d k_sendlist,
+                                                    DAT::tdual_xfloat_2d buf, int iswap,
+                                                    int pbc_flag, int *pbc, ExecutionSpace space)
+{
+  const Shift s = border_shift(domain, pbc_flag, pbc);
+  const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
+  // all fields, as LAMMPS's styles do: outside the run loop (auto_sync) this
+  // is where host-side changes by input commands reach the device
+  atomKK->sync(space, ALL_MASK);
+  if (space == Host) {
+    PolyPackBorder<LMPHostType, 0> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s, 0, dv,
+                                     size_border);
+    Kokkos::parallel_for(n, f);
+  } else {
+    PolyPackBorder<LMPDeviceType, 0> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s, 0, dv,
+                                       size_border);
+    Kokkos::parallel_for(n, f);
+  }
+  return n * size_border;
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_border_kokkos(const int &n, const int &first,
+                                                       const DAT::tdual_xfloat_2d &buf,
+                                                       ExecutionSpace space)
+{
+  while (first + n >= nmax) grow(0);
+  atomKK->sync(space, BORDER_MASK);
+  if (space == Host) {
+    PolyUnpackBorder<LMPHostType, 0> f(atomKK, this, buf, first, size_border);
+    Kokkos::parallel_for(n, f);
+  } else {
+    PolyUnpackBorder<LMPDeviceType, 0> f(atomKK, this, buf, first, size_border);
+    Kokkos::parallel_for(n, f);
+  }
+  atomKK->modified(space, BORDER_MASK);
+}
+
+// CommKokkos sizes a ghost-velocity border record as size_border + size_velocity
+int AtomVecPolyhedronKokkosBase::pack_border_vel_kokkos(int n, DAT::tdual_int_2d k_sendlist,
+                                                        DAT::tdual_xfloat_2d buf, int iswap,
+                                                        int pbc_flag, int *pbc,
+                                                        ExecutionSpace space)
+{
+  const Shift s = border_shift(domain, pbc_flag, pbc);
+  X_FLOAT dv[3] = {0.0, 0.0, 0.0};
+  if (pbc_flag && deform_vremap) {
+    dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
+    dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
+    dv[2] = pbc[2] * h_rate[2];
+  }
+  const int groupbit = deform_vremap ? deform_groupbit : 0;
+  const int stride = size_border + size_velocity;
+  atomKK->sync(space, ALL_MASK);
+  if (space == Host) {
+    PolyPackBorder<LMPHostType, 1> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s, groupbit,
+                                     dv, stride);
+    Kokkos::parallel_for(n, f);
+  } else {
+    PolyPackBorder<LMPDeviceType, 1> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s,
+                                       groupbit, dv, stride);
+    Kokkos::parallel_for(n, f);
+  }
+  return n * stride;
+}
+
+void AtomVecPolyhedronKokkosBase::unpack_border_vel_kokkos(const int &n, const int &first,
+                                                           const DAT::tdual_xfloat_2d &buf,
+                                                           ExecutionSpace space)
+{
+  while (first + n >= nmax) grow(0);
+  const int stride = size_border + size_velocity;
+  atomKK->sync(space, BORDER_VEL_MASK);
+  if (space == Host) {
+    PolyUnpackBorder<LMPHostType, 1> f(atomKK, this, buf, first, stride);
+    Kokkos::parallel_for(n, f);
+  } else {
+    PolyUnpackBorder<LMPDeviceType, 1> f(atomKK, this, buf, first, stride);
+    Kokkos::parallel_for(n, f);
+  }
+  atomKK->modified(space, BORDER_VEL_MASK);
+}
+
+/* ---------------------------------------------------------------------- */
+
+int AtomVecPolyhedronKokkosBase::pack_exchange_kokkos(const int &nsend,
+                                                      DAT::tdual_xfloat_2d &k_buf,
+                                                      DAT::tdual_int_1d k_sendlist,
+                                                      DAT::tdual_int_1d k_copylist,
+                                                      ExecutionSpace space, int /*dim*/,
+                                                      X_FLOAT /*lo*/, X_FLOAT /*hi*/)
+{
+  const int width = k_buf.view<LMPHostType>().extent(1);
+  if (nsend > (int) (k_buf.view<LMPHostType>().extent(0) * width) / EXCHANGE_SIZE) {
+    const int newsize = nsend * (EXCHANGE_SIZE + 1) / width + 1;
+    k_buf.resize(newsize, width);
+  }
+  atomKK->sync(space, EXCHANGE_MASK);
+  if (space == Host) {
+    PolyPackExchange<LMPHostType> f(atomKK, this, k_buf, k_sendlist, k_copylist);
+    Kokkos::parallel_for(nsend, f);
+  } else {
+    PolyPackExchange<LMPDeviceType> f(atomKK, this, k_buf, k_sendlist, k_copylist);
+    Kokkos::parallel_for(nsend, f);
+  }
+  atomKK->modified(space, EXCHANGE_MASK);
+  return nsend * EXCHANGE_SIZE;
+}
+
+int AtomVecPolyhedronKokkosBase::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf, int nrecv,
+                                                        int nlocal, int dim, X_FLOAT lo,
+                                                        X_FLOAT hi, ExecutionSpace space)
+{
+  // room for every incoming atom (CommKokkos does not grow before unpacking)
+  const int nincoming = nrecv / EXCHANGE_SIZE;
+  while (nlocal + nincoming >= nmax) grow(0);
+
+  atomKK->sync(space, EXCHANGE_MASK);
+  k_count.h_view(0) = nlocal;
+  if (space == Host) {
+    k_count.modify<LMPHostType>();
+    PolyUnpackExchange<LMPHostType> f(atomKK, this, k_buf, k_count, dim, lo, hi);
+    Kokkos::parallel_for(nincoming, f);
+  } else {
+    k_count.modify<LMPHostType>();
+    k_count.sync<LMPDeviceType>();
+    PolyUnpackExchange<LMPDeviceType> f(atomKK, this, k_buf, k_count, dim, lo, hi);
+    Kokkos::parallel_for(nincoming, f);
+    k_count.modify<LMPDeviceType>();
+    k_count.sync<LMPHostType>();
+  }
+  atomKK->modified(space, EXCHANGE_MASK);
+  return k_count.h_view(0);
+}
+
+/* ======================================================================
+   sync / modified
+====================================================================== */
+
+void AtomVecPolyhedronKokkosBase::sync(ExecutionSpace space, unsigned int mask)
+{
+  if (space == Device) {
+    if (mask & X_MASK) atomKK->k_x.sync<LMPDeviceType>();
+    if (mask & V_MASK) atomKK->k_v.sync<LMPDeviceType>();
+    if (mask & F_MASK) atomKK->k_f.sync<LMPDeviceType>();
+    if (mask & TAG_MASK) atomKK->k_tag.sync<LMPDeviceType>();
+    if (mask & TYPE_MASK) atomKK->k_type.sync<LMPDeviceType>();
+    if (mask & MASK_MASK) atomKK->k_mask.sync<LMPDeviceType>();
+    if (mask & IMAGE_MASK) atomKK->k_image.sync<LMPDeviceType>();
+    if (mask & RADIUS_MASK) atomKK->k_radius.sync<LMPDeviceType>();
+    if (mask & RMASS_MASK) atomKK->k_rmass.sync<LMPDeviceType>();
+    if (mask & OMEGA_MASK) atomKK->k_omega.sync<LMPDeviceType>();
+    if (mask & ANGMOM_MASK) atomKK->k_angmom.sync<LMPDeviceType>();
+    if (mask & TORQUE_MASK) atomKK->k_torque.sync<LMPDeviceType>();
+    if (mask & POLYDEM_QUAT_MASK) k_quat.sync<LMPDeviceType>();
+    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.sync<LMPDeviceType>();
+    if (mask & POLYDEM_PSCALE_MASK) k_pscale.sync<LMPDeviceType>();
+  } else {
+    if (mask & X_MASK) atomKK->k_x.sync<LMPHostType>();
+    if (mask & V_MASK) atomKK->k_v.sync<LMPHostType>();
+    if (mask & F_MASK) atomKK->k_f.sync<LMPHostType>();
+    if (mask & TAG_MASK) atomKK->k_tag.sync<LMPHostType>();
+    if (mask & TYPE_MASK) atomKK->k_type.sync<LMPHostType>();
+    if (mask & MASK_MASK) atomKK->k_mask.sync<LMPHostType>();
+    if (mask & IMAGE_MASK) atomKK->k_image.sync<LMPHostType>();
+    if (mask & RADIUS_MASK) atomKK->k_radius.sync<LMPHostType>();
+    if (mask & RMASS_MASK) atomKK->k_rmass.sync<LMPHostType>();
+    if (mask & OMEGA_MASK) atomKK->k_omega.sync<LMPHostType>();
+    if (mask & ANGMOM_MASK) atomKK->k_angmom.sync<LMPHostType>();
+    if (mask & TORQUE_MASK) atomKK->k_torque.sync<LMPHostType>();
+    if (mask & POLYDEM_QUAT_MASK) k_quat.sync<LMPHostType>();
+    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.sync<LMPHostType>();
+    if (mask & POLYDEM_PSCALE_MASK) k_pscale.sync<LMPHostType>();
+  }
+}
+
+void AtomVecPolyhedronKokkosBase::modified(ExecutionSpace space, unsigned int mask)
+{
+  if (space == Device) {
+    if (mask & X_MASK) atomKK->k_x.modify<LMPDeviceType>();
+    if (mask & V_MASK) atomKK->k_v.modify<LMPDeviceType>();
+    if (mask & F_MASK) atomKK->k_f.modify<LMPDeviceType>();
+    if (mask & TAG_MASK) atomKK->k_tag.modify<LMPDeviceType>();
+    if (mask & TYPE_MASK) atomKK->k_type.modify<LMPDeviceType>();
+    if (mask & MASK_MASK) atomKK->k_mask.modify<LMPDeviceType>();
+    if (mask & IMAGE_MASK) atomKK->k_image.modify<LMPDeviceType>();
+    if (mask & RADIUS_MASK) atomKK->k_radius.modify<LMPDeviceType>();
+    if (mask & RMASS_MASK) atomKK->k_rmass.modify<LMPDeviceType>();
+    if (mask & OMEGA_MASK) atomKK->k_omega.modify<LMPDeviceType>();
+    if (mask & ANGMOM_MASK) atomKK->k_angmom.modify<LMPDeviceType>();
+    if (mask & TORQUE_MASK) atomKK->k_torque.modify<LMPDeviceType>();
+    if (mask & POLYDEM_QUAT_MASK) k_quat.modify<LMPDeviceType>();
+    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.modify<LMPDeviceType>();
+    if (mask & POLYDEM_PSCALE_MASK) k_pscale.modify<LMPDeviceType>();
+  } else {
+    if (mask & X_MASK) atomKK->k_x.modify<LMPHostType>();
+    if (mask & V_MASK) atomKK->k_v.modify<LMPHostType>();
+    if (mask & F_MASK) atomKK->k_f.modify<LMPHostType>();
+    if (mask & TAG_MASK) atomKK->k_tag.modify<LMPHostType>();
+    if (mask & TYPE_MASK) atomKK->k_type.modify<LMPHostType>();
+    if (mask & MASK_MASK) atomKK->k_mask.modify<LMPHostType>();
+    if (mask & IMAGE_MASK) atomKK->k_image.modify<LMPHostType>();
+    if (mask & RADIUS_MASK) atomKK->k_radius.modify<LMPHostType>();
+    if (mask & RMASS_MASK) atomKK->k_rmass.modify<LMPHostType>();
+    if (mask & OMEGA_MASK) atomKK->k_omega.modify<LMPHostType>();
+    if (mask & ANGMOM_MASK) atomKK->k_angmom.modify<LMPHostType>();
+    if (mask & TORQUE_MASK) atomKK->k_torque.modify<LMPHostType>();
+    if (mask & POLYDEM_QUAT_MASK) k_quat.modify<LMPHostType>();
+    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.modify<LMPHostType>();
+    if (mask & POLYDEM_PSCALE_MASK) k_pscale.modify<LMPHostType>();
+  }
+}
+
+namespace {
+template <class DualViewType, class Callback>
+void overlap_one(DualViewType &k, ExecutionSpace space, Callback copy)
+{
+  if (space == Device) {
+    if (k.template need_sync<LMPDeviceType>()) copy(k);
+  } else {
+    if (k.template need_sync<LMPHostType>()) copy(k);
+  }
+}
+}    // namespace
+
+void AtomVecPolyhedronKokkosBase::sync_overlapping_device(ExecutionSpace space, unsigned int mask)
+{
+  auto copy = [&](auto &k) { perform_async_copy(k, space); };
+  if (mask & X_MASK) overlap_one(atomKK->k_x, space, copy);
+  if (mask & V_MASK) overlap_one(atomKK->k_v, space, copy);
+  if (mask & F_MASK) overlap_one(atomKK->k_f, space, copy);
+  if (mask & TAG_MASK) overlap_one(atomKK->k_tag, space, copy);
+  if (mask & TYPE_MASK) overlap_one(atomKK->k_type, space, copy);
+  if (mask & MASK_MASK) overlap_one(atomKK->k_mask, space, copy);
+  if (mask & IMAGE_MASK) overlap_one(atomKK->k_image, space, copy);
+  if (mask & RADIUS_MASK) overlap_one(atomKK->k_radius, space, copy);
+  if (mask & RMASS_MASK) overlap_one(atomKK->k_rmass, space, copy);
+  if (mask & OMEGA_MASK) overlap_one(atomKK->k_omega, space, copy);
+  if (mask & ANGMOM_MASK) overlap_one(atomKK->k_angmom, space, copy);
+  if (mask & TORQUE_MASK) overlap_one(atomKK->k_torque, space, copy);
+  if (mask & POLYDEM_QUAT_MASK) overlap_one(k_quat, space, copy);
+  if (mask & POLYDEM_PSHAPE_MASK) overlap_one(k_pshape, space, copy);
+  if (mask & POLYDEM_PSCALE_MASK) overlap_one(k_pscale, space, copy);
+}
+
+/* ======================================================================
+   AtomVecPolyhedronKokkos
+====================================================================== */
+
+namespace LAMMPS_NS {
+template <> AtomVec *Atom::avec_creator<AtomVecPolyhedronKokkos>(LAMMPS *lmp)
+{
+  return static_cast<AtomVecPolyhedronKokkosBase *>(new AtomVecPolyhedronKokkos(lmp));
+}
+}    // namespace LAMMPS_NS
+
+AtomVecPolyhedronKokkos::AtomVecPolyhedronKokkos(LAMMPS *lmp) :
+    AtomVecPolyhedronKokkosBase(lmp), AtomVecPolyhedron(lmp), args_version(-1)
+{
+  const AtomVec &plain = static_cast<AtomVecPolyhedron &>(*this);
+  set_fields(plain);
+  AtomVecPolyhedronKokkosBase::mass_type = plain.mass_type;
+  AtomVecPolyhedronKokkosBase::molecular = plain.molecular;
+  AtomVecPolyhedronKokkosBase::forceclearflag = plain.forceclearflag;
+}
+
+AtomVecPolyhedronKokkos::~AtomVecPolyhedronKokkos()
+{
+  // the plain sub-object's field lists point at the same Atom pointers
+  AtomVecPolyhedron::ngrow = 0;
+}
+
+/* ----------------------------------------------------------------------
+   the plain part parses the shape records and keeps its own copy of the
+   arguments (add_shape appends to it); the Kokkos part sets up LAMMPS's
+   generic field machinery with the same lists
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkos::process_args(int narg, char **arg)
+{
+  AtomVecPolyhedron::store_args(narg, arg);
+  AtomVecPolyhedron::process_args(narg, arg);
+  setup_generic_fields();
+  args_version = shape_version();
+}
+
+/* ----------------------------------------------------------------------
+   restart files and replicate read the arguments of the AtomVec LAMMPS
+   sees: mirror the plain part's (which add_shape extends) into it
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkos::sync_args()
+{
+  if (args_version == shape_version()) return;
+  AtomVecPolyhedronKokkosBase &kk = *this;
+  const AtomVecPolyhedron &plain = *this;
+  for (int i = 0; i < kk.nargcopy; i++) delete[] kk.argcopy[i];
+  delete[] kk.argcopy;
+  kk.nargcopy = plain.nargcopy;
+  kk.argcopy = new char *[kk.nargcopy];
+  for (int i = 0; i < kk.nargcopy; i++) kk.argcopy[i] = utils::strdup(plain.argcopy[i]);
+  args_version = shape_version();
+}
+
+void AtomVecPolyhedronKokkos::init()
+{
+  sync_args();
+  AtomVecPolyhedronKokkosBase::init();
+}
+
+void AtomVecPolyhedronKokkos::grow(int n)
+{
+  AtomVecPolyhedronKokkosBase::grow(n);
+}
+
+void AtomVecPolyhedronKokkos::grow_pointers()
+{
+  AtomVecPolyhedronKokkosBase::grow_pointers();
+  AtomVecPolyhedron::grow_pointers();
+}
+
+void AtomVecPolyhedronKokkos::copy(int i, int j, int delflag)
+{
+  AtomVecPolyhedronKokkosBase::copy(i, j, delflag);
+}
+
+int AtomVecPolyhedronKokkos::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  return AtomVecPolyhedronKokkosBase::pack_comm(n, list, buf, pbc_flag, pbc);
+}
+
+int AtomVecPolyhedronKokkos::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  return AtomVecPolyhedronKokkosBase::pack_comm_vel(n, list, buf, pbc_flag, pbc);
+}
+
+void AtomVecPolyhedronKokkos::unpack_comm(int n, int first, double *buf)
+{
+  AtomVecPolyhedronKokkosBase::unpack_comm(n, first, buf);
+}
+
+void AtomVecPolyhedronKokkos::unpack_comm_vel(int n, int first, double *buf)
+{
+  AtomVecPolyhedronKokkosBase::unpack_comm_vel(n, first, buf);
+}
+
+int AtomVecPolyhedronKokkos::pack_reverse(int n, int first, double *buf)
+{
+  return AtomVecPolyhedronKokkosBase::pack_reverse(n, first, buf);
+}
+
+void AtomVecPolyhedronKokkos::unpack_reverse(int n, int *list, double *buf)
+{
+  AtomVecPolyhedronKokkosBase::unpack_reverse(n, list, buf);
+}
+
+int AtomVecPolyhedronKokkos::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  return AtomVecPolyhedronKokkosBase::pack_border(n, list, buf, pbc_flag, pbc);
+}
+
+int AtomVecPolyhedronKokkos::pack_border_vel(int n, int *list, double *buf, int pbc_flag,
+                                             int *pbc)
+{
+  return AtomVecPolyhedronKokkosBase::pack_border_vel(n, list, buf, pbc_flag, pbc);
+}
+
+void AtomVecPolyhedronKokkos::unpack_border(int n, int first, double *buf)
+{
+  AtomVecPolyhedronKokkosBase::unpack_border(n, first, buf);
+}
+
+void AtomVecPolyhedronKokkos::unpack_border_vel(int n, int first, double *buf)
+{
+  AtomVecPolyhedronKokkosBase::unpack_border_vel(n, first, buf);
+}
+
+int AtomVecPolyhedronKokkos::pack_exchange(int i, double *buf)
+{
+  return AtomVecPolyhedronKokkosBase::pack_exchange(i, buf);
+}
+
+int AtomVecPolyhedronKokkos::unpack_exchange(double *buf)
+{
+  return AtomVecPolyhedronKokkosBase::unpack_exchange(buf);
+}
+
+int AtomVecPolyhedronKokkos::size_restart()
+{
+  sync_args();
+  return AtomVecPolyhedronKokkosBase::size_restart();
+}
+
+int AtomVecPolyhedronKokkos::pack_restart(int i, double *buf)
+{
+  return AtomVecPolyhedronKokkosBase::pack_restart(i, buf);
+}
+
+int AtomVecPolyhedronKokkos::unpack_restart(double *buf)
+{
+  return AtomVecPolyhedronKokkosBase::unpack_restart(buf);
+}
+
+void AtomVecPolyhedronKokkos::create_atom(int itype, double *coord)
+{
+  AtomVecPolyhedronKokkosBase::create_atom(itype, coord);
+}
+
+void AtomVecPolyhedronKokkos::data_atom(double *coord, imageint imagetmp, char **values)
+{
+  AtomVecPolyhedronKokkosBase::data_atom(coord, imagetmp, values);
+}
+
+void AtomVecPolyhedronKokkos::pack_data(double **buf)
+{
+  AtomVecPolyhedronKokkosBase::pack_data(buf);
+}
+
+void AtomVecPolyhedronKokkos::write_data(FILE *fp, int n, double **buf)
+{
+  AtomVecPolyhedronKokkosBase::write_data(fp, n, buf);
+}
+
+void AtomVecPolyhedronKokkos::data_vel(int ilocal, char **values)
+{
+  AtomVecPolyhedronKokkosBase::data_vel(ilocal, values);
+}
+
+void AtomVecPolyhedronKokkos::pack_vel(double **buf)
+{
+  AtomVecPolyhedronKokkosBase::pack_vel(buf);
+}
+
+void AtomVecPolyhedronKokkos::write_vel(FILE *fp, int n, double **buf)
+{
+  AtomVecPolyhedronKokkosBase::write_vel(fp, n, buf);
+}
+
+double AtomVecPolyhedronKokkos::memory_usage()
+{
+  return AtomVecPolyhedronKokkosBase::memory_usage();
+}
+
+bigint AtomVecPolyhedronKokkos::roundup(bigint n)
+{
+  return AtomVecPolyhedronKokkosBase::roundup(n);
+}
+
+/* ----------------------------------------------------------------------
+   per-atom semantics of the plain style; called from the generic code
+   above (inside its sync/modified brackets) or, for the property hooks,
+   by compute property/atom on the host
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkos::create_atom_post(int ilocal)
+{
+  AtomVecPolyhedron::create_atom_post(ilocal);
+}
+
+void AtomVecPolyhedronKokkos::data_atom_post(int ilocal)
+{
+  AtomVecPolyhedron::data_atom_post(ilocal);
+}
+
+void AtomVecPolyhedronKokkos::pack_data_pre(int ilocal)
+{
+  AtomVecPolyhedron::pack_data_pre(ilocal);
+}
+
+void AtomVecPolyhedronKokkos::pack_data_post(int ilocal)
+{
+  AtomVecPolyhedron::pack_data_post(ilocal);
+}
+
+int AtomVecPolyhedronKokkos::property_atom(char *name)
+{
+  return AtomVecPolyhedron::property_atom(name);
+}
+
+void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nvalues,
+                                                 int groupbit)
+{
+  sync_host_all();
+  AtomVecPolyhedron::pack_property_atom(index, buf, nvalues, groupbit);
+}
