@@ -1,0 +1,344 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - intersection of half-spaces n_i . p <= h_i (h_i > 0, i.e. the
+   origin x_o strictly inside) as the convex hull of their dual points
+   y_i = n_i / h_i (seed 2.3, Eqs. 4-8), built by incremental Quickhull
+   (seed Algorithms III-V) in a fixed workspace.
+
+   Representation: each dual hull triangle (three plane indices, CCW seen
+   from outside in dual space) is one vertex of the primal polyhedron; its
+   unpolarised point (seed Eq. 8) is stored explicitly as P. The Quickhull
+   "point above face" test of Algorithm IV, y_l . m_t - e_t > 0, equals
+   (n_l . P_t - h_l) / (h_l |P_t|) with a positive factor, so it is evaluated
+   in primal form as the violation n_l . P_t - h_l [length] against a
+   size-scaled tolerance. New vertices are placed on the old primal edge by
+   linear interpolation of the violations, which keeps the polyhedron convex
+   under round-off and avoids the 1/d amplification of Eq. 8 for planes
+   that nearly touch x_o. The hull starts from the dual of a large bounding
+   tetrahedron (planes 0-3), which contains the dual origin; these planes
+   must all disappear when the real planes are inserted.
+
+   Each plane carries an owner bit mask (bit 0: particle A, bit 1: B), so
+   every face of the result knows which particle's plane it came from.
+   Header-only, host and device: no allocation, bounded loops.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_DUAL_HULL_H
+#define POLYDEM_DUAL_HULL_H
+
+#include "polydem_math.h"
+
+namespace polydem {
+
+enum PlaneOwner : unsigned char { OWNER_NONE = 0, OWNER_A = 1, OWNER_B = 2, OWNER_BOTH = 3 };
+
+constexpr int DUAL_HULL_BOUND_PLANES = 4;
+
+// Fixed workspace for up to MaxPlanes planes including the 4 bounding planes.
+// A hull of n dual points has at most 2n-4 triangles; visible triangles are
+// freed before new ones are allocated, so 2*MaxPlanes triangle slots suffice.
+template <typename T, int MaxPlanes> struct DualHullWorkspace {
+  static constexpr int MAXP = MaxPlanes;
+  static constexpr int MAXT = 2 * MaxPlanes;
+  // planes (input): pl[4i..4i+3] = (n, h), in coordinates centred on x_o
+  T pl[4 * MAXP];
+  unsigned char owner[MAXP];
+  int nplanes;
+  // Quickhull conflict data per plane: triangle index, or -1 discarded, -2 inserted
+  short conflict[MAXP];
+  T cviol[MAXP];
+  // triangles = primal vertices
+  short tc[MAXT][3];     // plane indices (dual vertices)
+  short tadj[MAXT][3];   // neighbour across edge (tc[k], tc[k+1])
+  Vec3<T> P[MAXT];       // unpolarised primal vertex (seed Eq. 8)
+  T tviol[MAXT];         // violation of the current apex plane
+  int tstamp[MAXT];      // iteration at which tviol was computed
+  unsigned char tstate[MAXT];    // 0 free, 1 alive, 2 visible
+  int ntslots;           // high-water mark of used slots
+  short freelist[MAXT];
+  int nfree;
+  // per-iteration scratch
+  short stack[MAXT];
+  short vis[MAXT];
+  short hz_tri[MAXP], hz_edge[MAXP], hz_new[MAXP];
+  Vec3<T> hz_P[MAXP];
+  short new_by_start[MAXP], new_by_end[MAXP];
+};
+
+// Integrals over the intersection polyhedron (coordinates centred on x_o).
+template <typename T> struct HullIntegrals {
+  T volume;            // seed Eq. 9
+  Vec3<T> vmoment;     // int p dV (centroid = vmoment / volume)
+  Vec3<T> S[2];        // int n dA over faces owned by A (0) / B (1)
+  Vec3<T> M[2];        // int (p - ref_k) x n dA over those faces
+  T area[2];           // scalar area of those faces
+  Vec3<T> amoment[2];  // int p dA over those faces
+  int nverts;          // primal vertices (= dual triangles)
+};
+
+namespace hull_detail {
+  template <typename T, int MP>
+  POLYDEM_FN T viol(const DualHullWorkspace<T, MP> &w, int l, const Vec3<T> &p)
+  {
+    const T *q = w.pl + 4 * l;
+    return q[0] * p.x + q[1] * p.y + q[2] * p.z - q[3];
+  }
+}    // namespace hull_detail
+
+// Build the intersection of planes 4..nplanes-1 (already in w.pl / w.owner)
+// inside a bounding tetrahedron of in-radius H [length] about x_o.
+// tol [length]: planes cutting off less than tol are redundant.
+template <typename T, int MP>
+POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
+{
+  using hull_detail::viol;
+  constexpr int NB = DUAL_HULL_BOUND_PLANES;
+  const int np = w.nplanes;
+  if (np > MP) return STATUS_OVERFLOW;
+  // bounding tetrahedron: normals (+-1,+-1,+-1)/sqrt(3), even number of minus signs
+  const T c = T(1) / sqrt(T(3));
+  const T sg[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (int i = 0; i < NB; ++i) {
+    w.pl[4 * i] = c * sg[i][0];
+    w.pl[4 * i + 1] = c * sg[i][1];
+    w.pl[4 * i + 2] = c * sg[i][2];
+    w.pl[4 * i + 3] = H;
+    w.owner[i] = OWNER_NONE;
+    w.conflict[i] = -2;
+  }
+  // 4 initial triangles: triangle i = vertex opposite face i, at -3H n_i
+  for (int i = 0; i < NB; ++i) {
+    short a = (short) ((i + 1) % 4), b = (short) ((i + 2) % 4), d = (short) ((i + 3) % 4);
+    // orient CCW seen from outside in dual space: ((y_b-y_a) x (y_d-y_a)) . y_a > 0
+    const Vec3<T> ya = make_vec3(w.pl[4 * a], w.pl[4 * a + 1], w.pl[4 * a + 2]);
+    const Vec3<T> yb = make_vec3(w.pl[4 * b], w.pl[4 * b + 1], w.pl[4 * b + 2]);
+    const Vec3<T> yd = make_vec3(w.pl[4 * d], w.pl[4 * d + 1], w.pl[4 * d + 2]);
+    if (dot(cross(yb - ya, yd - ya), ya) < T(0)) {
+      const short t = b;
+      b = d;
+      d = t;
+    }
+    w.tc[i][0] = a;
+    w.tc[i][1] = b;
+    w.tc[i][2] = d;
+    w.P[i] = make_vec3(-T(3) * H * w.pl[4 * i], -T(3) * H * w.pl[4 * i + 1],
+                       -T(3) * H * w.pl[4 * i + 2]);
+    w.tstate[i] = 1;
+    w.tstamp[i] = -1;
+  }
+  for (int i = 0; i < NB; ++i)
+    for (int e = 0; e < 3; ++e) {
+      const short u = w.tc[i][e], v = w.tc[i][(e + 1) % 3];
+      w.tadj[i][e] = -1;
+      for (int j = 0; j < NB; ++j)
+        for (int f = 0; f < 3; ++f)
+          if (j != i && w.tc[j][f] == v && w.tc[j][(f + 1) % 3] == u) w.tadj[i][e] = (short) j;
+    }
+  w.ntslots = NB;
+  w.nfree = 0;
+  for (int p = 0; p < MP; ++p) w.new_by_start[p] = w.new_by_end[p] = -1;
+  // initial conflicts (seed Algorithm IV)
+  for (int l = NB; l < np; ++l) {
+    w.conflict[l] = -1;
+    w.cviol[l] = tol;
+    for (int t = 0; t < NB; ++t) {
+      const T v = viol(w, l, w.P[t]);
+      if (v > w.cviol[l]) {
+        w.cviol[l] = v;
+        w.conflict[l] = (short) t;
+      }
+    }
+  }
+  // expansion (seed Algorithm V); each pass inserts one plane for good
+  for (int iter = 0; iter < np; ++iter) {
+    int apex = -1;
+    T best = T(0);
+    for (int l = NB; l < np; ++l)
+      if (w.conflict[l] >= 0 && (apex < 0 || w.cviol[l] > best)) {
+        apex = l;
+        best = w.cviol[l];
+      }
+    if (apex < 0) break;
+    // visible set by flood fill from the conflict triangle
+    int nvis = 0, nst = 0;
+    const short t0 = w.conflict[apex];
+    w.tviol[t0] = w.cviol[apex];
+    w.tstamp[t0] = iter;
+    w.tstate[t0] = 2;
+    w.stack[nst++] = t0;
+    while (nst > 0) {
+      const short t = w.stack[--nst];
+      w.vis[nvis++] = t;
+      for (int e = 0; e < 3; ++e) {
+        const short nb = w.tadj[t][e];
+        if (w.tstamp[nb] != iter) {
+          w.tstamp[nb] = iter;
+          w.tviol[nb] = viol(w, apex, w.P[nb]);
+        }
+        if (w.tstate[nb] == 1 && w.tviol[nb] > tol) {
+          w.tstate[nb] = 2;
+          w.stack[nst++] = nb;
+        }
+      }
+    }
+    // horizon edges (visible -> non-visible), each with its new primal vertex
+    int nh = 0;
+    for (int k = 0; k < nvis; ++k) {
+      const short t = w.vis[k];
+      for (int e = 0; e < 3; ++e) {
+        const short nb = w.tadj[t][e];
+        if (w.tstate[nb] == 2) continue;
+        if (nh >= MP) return STATUS_DEGENERATE;
+        const short u = w.tc[t][e], v = w.tc[t][(e + 1) % 3];
+        if (w.new_by_start[u] != -1 || w.new_by_end[v] != -1) return STATUS_DEGENERATE;
+        w.new_by_start[u] = (short) nh;
+        w.new_by_end[v] = (short) nh;
+        w.hz_tri[nh] = nb;
+        w.hz_edge[nh] = (short) e;
+        // new vertex on the primal edge P_t -> P_nb where the apex plane cuts it
+        const T v1 = w.tviol[t], v2 = w.tviol[nb];
+        T s = v1 / (v1 - v2);
+        s = s < T(0) ? T(0) : (s > T(1) ? T(1) : s);
+        w.hz_P[nh] = w.P[t] + s * (w.P[nb] - w.P[t]);
+        // remember the corner pair in hz_new temporarily as u; v is tc of nb
+        w.hz_new[nh] = u;
+        ++nh;
+      }
+    }
+    if (nh == 0) return STATUS_SEPARATED;    // every vertex cut off: empty intersection
+    // planes whose conflict triangle is about to vanish must be reassigned
+    for (int l = NB; l < np; ++l)
+      if (w.conflict[l] >= 0 && w.tstate[w.conflict[l]] == 2) w.conflict[l] = -3;
+    w.conflict[apex] = -2;
+    // free visible triangles (seed: removeAllVisibleFaces)
+    for (int k = 0; k < nvis; ++k) {
+      w.tstate[w.vis[k]] = 0;
+      w.freelist[w.nfree++] = w.vis[k];
+    }
+    // create the new triangles (u, v, apex) (seed: appendNewFace)
+    for (int k = 0; k < nh; ++k) {
+      short t;
+      if (w.nfree > 0)
+        t = w.freelist[--w.nfree];
+      else if (w.ntslots < w.MAXT)
+        t = (short) w.ntslots++;
+      else
+        return STATUS_OVERFLOW;
+      const short u = w.hz_new[k];
+      const short nb = w.hz_tri[k];
+      short v = -1;
+      for (int f = 0; f < 3; ++f)
+        if (w.tc[nb][(f + 1) % 3] == u) {
+          v = w.tc[nb][f];
+          w.tadj[nb][f] = t;
+        }
+      w.tc[t][0] = u;
+      w.tc[t][1] = v;
+      w.tc[t][2] = (short) apex;
+      w.tadj[t][0] = nb;
+      w.P[t] = w.hz_P[k];
+      w.tstate[t] = 1;
+      w.tstamp[t] = iter;
+      w.tviol[t] = T(0);
+      w.hz_tri[k] = t;    // now the new triangle
+    }
+    // link the new fan: edge (v, apex) meets the new triangle starting at v,
+    // edge (apex, u) the one ending at u
+    bool ok = true;
+    for (int k = 0; k < nh; ++k) {
+      const short t = w.hz_tri[k];
+      const short ks = w.new_by_start[w.tc[t][1]];
+      const short ke = w.new_by_end[w.tc[t][0]];
+      if (ks < 0 || ke < 0) {
+        ok = false;
+        continue;
+      }
+      w.tadj[t][1] = w.hz_tri[ks];
+      w.tadj[t][2] = w.hz_tri[ke];
+    }
+    for (int k = 0; k < nh; ++k) {
+      const short t = w.hz_tri[k];
+      w.new_by_start[w.tc[t][0]] = -1;
+      w.new_by_end[w.tc[t][1]] = -1;
+    }
+    if (!ok) return STATUS_DEGENERATE;
+    // reassign orphaned planes to the new triangles (seed Algorithm IV)
+    for (int l = NB; l < np; ++l) {
+      if (w.conflict[l] != -3) continue;
+      w.conflict[l] = -1;
+      w.cviol[l] = tol;
+      for (int k = 0; k < nh; ++k) {
+        const short t = w.hz_tri[k];
+        const T v = viol(w, l, w.P[t]);
+        if (v > w.cviol[l]) {
+          w.cviol[l] = v;
+          w.conflict[l] = t;
+        }
+      }
+    }
+  }
+  // the bounding planes must be gone, else the input was unbounded
+  for (int t = 0; t < w.ntslots; ++t)
+    if (w.tstate[t] == 1)
+      for (int e = 0; e < 3; ++e)
+        if (w.tc[t][e] < NB) return STATUS_DEGENERATE;
+  return STATUS_OK;
+}
+
+// Integrals over the polyhedron built by dual_hull_build. Each dual edge
+// (a -> b) of triangle t, with neighbour t2 across it, is one edge P_t -> P_t2
+// of face a; faces are fanned from the foot F_a = h_a n_a of x_o on plane a,
+// so volumes are pyramids from x_o (seed Eq. 9 with o = x_o). Planes owned by
+// both particles count half for each. ref[k] = reference point of particle k
+// for the moments M (coordinates centred on x_o).
+template <typename T, int MP>
+POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2],
+                                    HullIntegrals<T> &out)
+{
+  const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
+  T vol = T(0);
+  Vec3<T> vm = zero;
+  Vec3<T> S[2] = {zero, zero}, M[2] = {zero, zero}, am[2] = {zero, zero};
+  T ar[2] = {T(0), T(0)};
+  int nv = 0;
+  for (int t = 0; t < w.ntslots; ++t) {
+    if (w.tstate[t] != 1) continue;
+    ++nv;
+    for (int e = 0; e < 3; ++e) {
+      const int a = w.tc[t][e];
+      const T *q = w.pl + 4 * a;
+      const Vec3<T> n = make_vec3(q[0], q[1], q[2]);
+      const Vec3<T> F = q[3] * n;
+      const Vec3<T> p1 = w.P[t], p2 = w.P[w.tadj[t][e]];
+      const T sa = T(0.5) * dot(n, cross(p1 - F, p2 - F));    // signed area
+      const Vec3<T> ct = (T(1) / T(3)) * (F + p1 + p2);
+      const T dv = q[3] * sa / T(3);
+      vol += dv;
+      vm += (T(0.75) * dv) * ct;
+      const unsigned char own = w.owner[a];
+      const T wgt = own == OWNER_BOTH ? T(0.5) : T(1);
+      for (int k = 0; k < 2; ++k)
+        if (own & (1 << k)) {
+          const T s = wgt * sa;
+          S[k] += s * n;
+          M[k] += s * cross(ct - ref[k], n);
+          ar[k] += s;
+          am[k] += s * ct;
+        }
+    }
+  }
+  // global orientation of the dual triangles: volume must be positive
+  const T sgn = vol < T(0) ? T(-1) : T(1);
+  out.volume = sgn * vol;
+  out.vmoment = sgn * vm;
+  for (int k = 0; k < 2; ++k) {
+    out.S[k] = sgn * S[k];
+    out.M[k] = sgn * M[k];
+    out.area[k] = sgn * ar[k];
+    out.amoment[k] = sgn * am[k];
+  }
+  out.nverts = nv;
+}
+
+}    // namespace polydem
+
+#endif

@@ -1,0 +1,295 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - narrow-phase intersection test for two posed convex polyhedra:
+   support function (seed Eq. 2-3), bounding-sphere rejection (seed 2.2,
+   Fig. 4) and GJK (seed Algorithm I) in its distance form, which gives a
+   separation distance and so a size-relative touching tolerance.
+   Header-only, host and device (DESIGN.md section 4).
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_GJK_H
+#define POLYDEM_GJK_H
+
+#include "polydem_shape_view.h"
+
+namespace polydem {
+
+// A shape template placed in the lab frame: p_lab = x + s R p_body.
+template <typename T> struct PosedShape {
+  const ShapeView<T> *view;
+  Vec3<T> x;    // centroid (lab)
+  Mat3<T> R;    // body -> lab rotation
+  T s;          // scale
+};
+
+template <typename T>
+POLYDEM_FN PosedShape<T> make_posed(const ShapeView<T> &view, const Pose<T> &pose)
+{
+  PosedShape<T> p;
+  p.view = &view;
+  p.x = pose.x;
+  p.R = quat_to_mat(pose.q);
+  p.s = pose.s;
+  return p;
+}
+
+// Bounding radius of the posed shape [length]
+template <typename T> POLYDEM_FN T posed_radius(const PosedShape<T> &a)
+{
+  return a.s * a.view->radius;
+}
+
+// Seed Eq. 2: lab-frame vertex of A maximising dir . p (dir need not be unit).
+// Brute force over the template's vertices: at <= MAX_TEMPLATE_VERTS this is
+// branch-light and as fast as hill climbing on GPUs.
+template <typename T>
+POLYDEM_FN Vec3<T> support_point(const PosedShape<T> &a, const Vec3<T> &dir)
+{
+  const Vec3<T> db = matTvec(a.R, dir);
+  const T *v = a.view->verts;
+  int best = 0;
+  T bestd = v[0] * db.x + v[1] * db.y + v[2] * db.z;
+  const int nv = a.view->nverts;
+  for (int i = 1; i < nv; ++i) {
+    const T d = v[3 * i] * db.x + v[3 * i + 1] * db.y + v[3 * i + 2] * db.z;
+    if (d > bestd) {
+      bestd = d;
+      best = i;
+    }
+  }
+  const Vec3<T> pb = make_vec3(v[3 * best], v[3 * best + 1], v[3 * best + 2]);
+  return a.x + a.s * matvec(a.R, pb);
+}
+
+// Broad phase (seed 2.2): true if the bounding spheres overlap or touch.
+template <typename T>
+POLYDEM_FN bool bounding_spheres_overlap(const PosedShape<T> &a, const PosedShape<T> &b)
+{
+  const T rr = posed_radius(a) + posed_radius(b);
+  return norm2(a.x - b.x) <= rr * rr;
+}
+
+// Size scale of a pair [length], used to scale all tolerances.
+template <typename T>
+POLYDEM_FN T pair_length_scale(const PosedShape<T> &a, const PosedShape<T> &b)
+{
+  const T ra = posed_radius(a), rb = posed_radius(b);
+  return ra > rb ? ra : rb;
+}
+
+constexpr int GJK_MAX_ITER = 64;    // GJK converges in < 20 iterations in practice
+
+template <typename T> struct GjkResult {
+  int status;    // STATUS_OK = intersecting (distance <= tol), STATUS_SEPARATED,
+                 // STATUS_NO_CONVERGENCE (distance unknown), STATUS_DEGENERATE (NaN input)
+  T distance;    // upper bound of the separation distance [length]; 0 if intersecting
+  int iterations;
+};
+
+namespace gjk_detail {
+
+  // Closest point to the origin of the simplex w[0..n-1]; reduces the simplex
+  // to the support feature and returns the point. Ericson, RTCD 5.1.2/5.1.5/5.1.6.
+  template <typename T> POLYDEM_FN Vec3<T> closest_segment(Vec3<T> *w, int &n)
+  {
+    const Vec3<T> a = w[0], b = w[1];
+    const Vec3<T> ab = b - a;
+    const T t = -dot(a, ab);
+    if (t <= T(0)) {
+      n = 1;
+      return a;
+    }
+    const T den = dot(ab, ab);
+    if (t >= den) {
+      w[0] = b;
+      n = 1;
+      return b;
+    }
+    return a + (t / den) * ab;
+  }
+
+  template <typename T> POLYDEM_FN Vec3<T> closest_triangle(Vec3<T> *w, int &n)
+  {
+    const Vec3<T> a = w[0], b = w[1], c = w[2];
+    const Vec3<T> ab = b - a, ac = c - a, ap = -a;
+    const T d1 = dot(ab, ap), d2 = dot(ac, ap);
+    if (d1 <= T(0) && d2 <= T(0)) {
+      n = 1;
+      return a;
+    }
+    const Vec3<T> bp = -b;
+    const T d3 = dot(ab, bp), d4 = dot(ac, bp);
+    if (d3 >= T(0) && d4 <= d3) {
+      w[0] = b;
+      n = 1;
+      return b;
+    }
+    const T vc = d1 * d4 - d3 * d2;
+    if (vc <= T(0) && d1 >= T(0) && d3 <= T(0)) {
+      const T v = d1 / (d1 - d3);
+      n = 2;
+      return a + v * ab;
+    }
+    const Vec3<T> cp = -c;
+    const T d5 = dot(ab, cp), d6 = dot(ac, cp);
+    if (d6 >= T(0) && d5 <= d6) {
+      w[0] = c;
+      n = 1;
+      return c;
+    }
+    const T vb = d5 * d2 - d1 * d6;
+    if (vb <= T(0) && d2 >= T(0) && d6 <= T(0)) {
+      const T v = d2 / (d2 - d6);
+      w[1] = c;
+      n = 2;
+      return a + v * ac;
+    }
+    const T va = d3 * d6 - d5 * d4;
+    if (va <= T(0) && (d4 - d3) >= T(0) && (d5 - d6) >= T(0)) {
+      const T v = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+      w[0] = b;
+      w[1] = c;
+      n = 2;
+      return b + v * (c - b);
+    }
+    const T den = va + vb + vc;
+    if (!(den > T(0))) {    // collinear triangle: fall back to its edges
+      Vec3<T> best = a;
+      T bd = norm2(a);
+      int keep0 = 0, keep1 = 0;
+      const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+      for (int k = 0; k < 3; ++k) {
+        Vec3<T> s[2] = {w[pairs[k][0]], w[pairs[k][1]]};
+        int m = 2;
+        const Vec3<T> p = closest_segment(s, m);
+        if (norm2(p) < bd) {
+          bd = norm2(p);
+          best = p;
+          keep0 = pairs[k][0];
+          keep1 = pairs[k][1];
+        }
+      }
+      const Vec3<T> k0 = w[keep0], k1 = w[keep1];
+      w[0] = k0;
+      w[1] = k1;
+      n = 2;
+      return best;
+    }
+    const T v = vb / den, u = vc / den;
+    n = 3;
+    return a + v * ab + u * ac;
+  }
+
+  // true if the origin and d are strictly on different sides of plane (a,b,c)
+  // or the tetrahedron is flat there (then the face must be examined).
+  template <typename T>
+  POLYDEM_FN bool origin_outside(const Vec3<T> &a, const Vec3<T> &b, const Vec3<T> &c,
+                                 const Vec3<T> &d)
+  {
+    const Vec3<T> nrm = cross(b - a, c - a);
+    const T sp = -dot(a, nrm), sd = dot(d - a, nrm);
+    return sp * sd <= T(0);
+  }
+
+  template <typename T> POLYDEM_FN Vec3<T> closest_tetra(Vec3<T> *w, int &n)
+  {
+    const int faces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
+    T bestd = T(-1);
+    Vec3<T> best = make_vec3(T(0), T(0), T(0));
+    Vec3<T> bw[3] = {w[0], w[0], w[0]};
+    int bn = 0;
+    for (int f = 0; f < 4; ++f) {
+      if (!origin_outside(w[faces[f][0]], w[faces[f][1]], w[faces[f][2]], w[faces[f][3]]))
+        continue;
+      Vec3<T> s[3] = {w[faces[f][0]], w[faces[f][1]], w[faces[f][2]]};
+      int m = 3;
+      const Vec3<T> p = closest_triangle(s, m);
+      const T d = norm2(p);
+      if (bestd < T(0) || d < bestd) {
+        bestd = d;
+        best = p;
+        bn = m;
+        for (int k = 0; k < m; ++k) bw[k] = s[k];
+      }
+    }
+    if (bestd < T(0)) {    // origin inside the tetrahedron
+      n = 4;
+      return make_vec3(T(0), T(0), T(0));
+    }
+    for (int k = 0; k < bn; ++k) w[k] = bw[k];
+    n = bn;
+    return best;
+  }
+
+}    // namespace gjk_detail
+
+// GJK (seed Algorithm I, distance form). Reports STATUS_OK (intersecting) if
+// the polyhedra overlap or are closer than tol_rel * L, where L is the larger
+// bounding radius [length]; tol_rel is dimensionless (default 1e3 eps).
+template <typename T>
+POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b,
+                                      T tol_rel = T(1000) * Eps<T>::value)
+{
+  GjkResult<T> res;
+  res.status = STATUS_NO_CONVERGENCE;
+  res.distance = T(0);
+  res.iterations = 0;
+  const T L = pair_length_scale(a, b);
+  if (!(L > T(0)) || !(norm2(a.x - b.x) < T(1e30) * L * L)) {
+    res.status = STATUS_DEGENERATE;    // NaN, zero or absurd input
+    return res;
+  }
+  const T tol = tol_rel * L;    // [length]
+  Vec3<T> w[4];
+  int n = 0;
+  // seed Algorithm I line 1: start from the centroid difference
+  Vec3<T> v = a.x - b.x;
+  if (norm2(v) <= tol * tol) v = make_vec3(T(1), T(0), T(0));
+  v = support_point(a, -v) - support_point(b, v);
+  w[n++] = v;
+  for (int it = 0; it < GJK_MAX_ITER; ++it) {
+    res.iterations = it + 1;
+    const T vv = norm2(v);
+    if (vv <= tol * tol) {
+      res.status = STATUS_OK;
+      return res;
+    }
+    // new support point of A - B in direction -v (seed Eq. 3)
+    const Vec3<T> sp = support_point(a, -v) - support_point(b, v);
+    const T vw = dot(v, sp);
+    const T vn = sqrt(vv);
+    // separating plane found with a gap larger than tol (seed Algorithm I line 7)
+    if (vw > tol * vn) {
+      res.status = STATUS_SEPARATED;
+      res.distance = vn;
+      return res;
+    }
+    // no progress: |v| is the distance up to the relative tolerance
+    if (vv - vw <= T(64) * Eps<T>::value * vv) {
+      res.distance = vn;
+      res.status = vn <= tol ? STATUS_OK : STATUS_SEPARATED;
+      return res;
+    }
+    w[n++] = sp;
+    if (n == 2)
+      v = gjk_detail::closest_segment(w, n);
+    else if (n == 3)
+      v = gjk_detail::closest_triangle(w, n);
+    else
+      v = gjk_detail::closest_tetra(w, n);
+    if (n == 4) {    // origin enclosed by the simplex
+      res.status = STATUS_OK;
+      return res;
+    }
+    if (!(norm2(v) < vv)) {    // no decrease (round-off): converged
+      res.distance = sqrt(norm2(v) < vv ? norm2(v) : vv);
+      res.status = res.distance <= tol ? STATUS_OK : STATUS_SEPARATED;
+      return res;
+    }
+  }
+  res.distance = sqrt(norm2(v));
+  return res;
+}
+
+}    // namespace polydem
+
+#endif

@@ -1,0 +1,210 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - overlap polyhedron of two posed convex polyhedra (seed 2.3):
+   Chebyshev centre of the combined half-spaces as polarisation point x_o
+   (polydem_lp.h), dual points of all face planes (Eqs. 4-5, Algorithm II),
+   dual Quickhull and unpolarisation (Algorithms III-VI, polydem_dual_hull.h),
+   then volume (Eq. 9), centroid and the exact gradients of V:
+
+     S_A = int_{dA in B} n_A dA   = dV/dx_A          (S_B = -S_A)
+     M_A = int_{dA in B} (p - x_A) x n_A dA = dV/dtheta_A   (rotation of A
+           about x_A by the small lab-frame angle vector theta_A)
+     M_B likewise for B's faces inside A about x_B.
+
+   With a contact potential W(V) (seed 2.5, Feng) the exact forces are
+     F_A = -W'(V) S_A,  tau_A = -W'(V) M_A,  F_B = +W'(V) S_A,  tau_B = -W'(V) M_B.
+   S_A points from A into B; |S_A| is the contact area A_n (Eq. 13) and
+   S_A / |S_A| the contact normal. (Checked by finite differences in
+   unittest/kernels.) Faces lying in a plane of both particles (coincident
+   faces) count half for each. Header-only, host and device.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_OVERLAP_H
+#define POLYDEM_OVERLAP_H
+
+#include "polydem_dual_hull.h"
+#include "polydem_gjk.h"
+#include "polydem_lp.h"
+
+namespace polydem {
+
+// Per-pair workspace. MaxFaces = the largest face count of the two templates.
+template <typename T, int MaxFaces = MAX_TEMPLATE_FACES> struct OverlapWorkspace {
+  static constexpr int MAX_PLANES = 2 * MaxFaces + DUAL_HULL_BOUND_PLANES;
+  DualHullWorkspace<T, MAX_PLANES> hull;
+};
+
+// Bytes of one per-pair workspace (for batching on the device, seed 2.3).
+template <typename T, int MaxFaces = MAX_TEMPLATE_FACES>
+constexpr unsigned long overlap_workspace_bytes()
+{
+  return sizeof(OverlapWorkspace<T, MaxFaces>);
+}
+
+template <typename T> struct OverlapResult {
+  int status;          // STATUS_OK (V > 0), STATUS_SEPARATED (V = 0, touching or apart),
+                       // STATUS_OVERFLOW, STATUS_DEGENERATE (then all fields zero)
+  T volume;            // overlap volume V [length^3]
+  Vec3<T> centroid;    // centroid of the overlap polyhedron (lab) [length]
+  Vec3<T> S_A;         // dV/dx_A [length^2]; S_B = -S_A
+  Vec3<T> M_A;         // dV/dtheta_A about x_A [length^3]
+  Vec3<T> M_B;         // dV/dtheta_B about x_B [length^3]
+  T area;              // |S_A|, contact area [length^2]
+  Vec3<T> normal;      // S_A / |S_A| (from A towards B); zero if area = 0
+  T depth;             // in-radius of the overlap (Chebyshev radius) [length]
+  int nverts;          // vertices of the overlap polyhedron
+};
+
+// Tolerances, dimensionless; multiplied by eps and the smaller bounding radius
+// Lmin (plus a few eps of the larger one, L): planes cutting off less than
+// HULL_TOL*eps*Lmin are redundant; an overlap with in-radius below
+// TOUCH_TOL*eps*Lmin is touching (V = 0).
+constexpr int OVERLAP_HULL_TOL = 64;
+constexpr int OVERLAP_TOUCH_TOL = 256;
+
+namespace overlap_detail {
+  template <typename T> POLYDEM_FN bool finite3(const Vec3<T> &v)
+  {
+    const T s = v.x + v.y + v.z;
+    return s - s == T(0);
+  }
+
+  // planes of a posed shape relative to the point o: n_lab, h = d_lab - n_lab . o
+  template <typename T>
+  POLYDEM_FN void posed_planes(const PosedShape<T> &a, const Vec3<T> &o, T *pl)
+  {
+    const ShapeView<T> &v = *a.view;
+    const Vec3<T> xo = a.x - o;
+    for (int f = 0; f < v.nfaces; ++f) {
+      const T *q = v.planes + 4 * f;
+      const Vec3<T> n = matvec(a.R, make_vec3(q[0], q[1], q[2]));
+      pl[4 * f] = n.x;
+      pl[4 * f + 1] = n.y;
+      pl[4 * f + 2] = n.z;
+      pl[4 * f + 3] = a.s * q[3] + dot(n, xo);
+    }
+  }
+}    // namespace overlap_detail
+
+template <typename T> POLYDEM_FN void overlap_result_zero(OverlapResult<T> &r, int status)
+{
+  const Vec3<T> z = make_vec3(T(0), T(0), T(0));
+  r.status = status;
+  r.volume = T(0);
+  r.centroid = z;
+  r.S_A = z;
+  r.M_A = z;
+  r.M_B = z;
+  r.area = T(0);
+  r.normal = z;
+  r.depth = T(0);
+  r.nverts = 0;
+}
+
+// Overlap of two posed polyhedra. Call after GJK has reported intersection
+// (it is also correct, only slower, on separated pairs).
+template <typename T, int MF>
+POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b,
+                                               OverlapWorkspace<T, MF> &ws)
+{
+  OverlapResult<T> res;
+  overlap_result_zero(res, STATUS_OK);
+  auto &w = ws.hull;
+  constexpr int NB = DUAL_HULL_BOUND_PLANES;
+  const int fa = a.view->nfaces, fb = b.view->nfaces;
+  if (fa > MF || fb > MF || fa < 4 || fb < 4) {
+    overlap_result_zero(res, STATUS_OVERFLOW);
+    return res;
+  }
+  const T L = pair_length_scale(a, b);    // [length]
+  if (!(L > T(0)) || !overlap_detail::finite3(a.x - b.x) || !(L < T(1e30))) {
+    overlap_result_zero(res, STATUS_DEGENERATE);
+    return res;
+  }
+  const T eps = Eps<T>::value;
+  // the overlap lies inside the smaller particle: scale by its radius, plus
+  // the round-off of the larger one's planes
+  const T ra = posed_radius(a), rb = posed_radius(b);
+  const T Lmin = ra < rb ? ra : rb;
+  const T tol = eps * (T(OVERLAP_HULL_TOL) * Lmin + L);              // [length]
+  const T ttouch = eps * (T(OVERLAP_TOUCH_TOL) * Lmin + T(4) * L);   // [length]
+  // planes relative to the start point xs (midpoint of the centroids)
+  const Vec3<T> xs = T(0.5) * (a.x + b.x);
+  T *pl = w.pl + 4 * NB;
+  overlap_detail::posed_planes(a, xs, pl);
+  overlap_detail::posed_planes(b, xs, pl + 4 * fa);
+  // polarisation point: Chebyshev centre of both half-space systems
+  Vec3<T> xc;
+  T r;
+  chebyshev_centre(pl, fa + fb, xc, r);
+  if (!(r == r)) {
+    overlap_result_zero(res, STATUS_DEGENERATE);
+    return res;
+  }
+  if (r <= ttouch) {    // touching or apart: V = 0
+    overlap_result_zero(res, STATUS_SEPARATED);
+    res.depth = r > T(0) ? r : T(0);
+    return res;
+  }
+  const Vec3<T> x0 = xs + xc;
+  // shift to x_o (seed Eq. 4: every h > 0) and set owners; B planes that
+  // coincide with an A plane are merged into it (owner both)
+  int np = NB;
+  for (int i = 0; i < fa + fb; ++i) {
+    T *q = pl + 4 * i;
+    const T h = q[3] - (q[0] * xc.x + q[1] * xc.y + q[2] * xc.z);
+    unsigned char own = i < fa ? OWNER_A : OWNER_B;
+    if (i >= fa) {
+      bool merged = false;
+      for (int j = NB; j < NB + fa && !merged; ++j) {
+        const T *p = w.pl + 4 * j;
+        const T dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+        if (dx * dx + dy * dy + dz * dz <= T(256) * eps * eps && fabs(p[3] - h) <= tol) {
+          w.owner[j] = OWNER_BOTH;
+          merged = true;
+        }
+      }
+      if (merged) continue;
+    }
+    T *d = w.pl + 4 * np;    // compaction: d <= q
+    d[0] = q[0];
+    d[1] = q[1];
+    d[2] = q[2];
+    d[3] = h;
+    w.owner[np] = own;
+    ++np;
+  }
+  w.nplanes = np;
+  // bounding tetrahedron around A (the overlap lies inside A)
+  const T H = T(1.5) * (norm(a.x - x0) + posed_radius(a)) + L;
+  const int st = dual_hull_build(w, H, tol);
+  if (st == STATUS_SEPARATED) {
+    overlap_result_zero(res, STATUS_SEPARATED);
+    return res;
+  }
+  if (st != STATUS_OK) {
+    overlap_result_zero(res, st);
+    return res;
+  }
+  Vec3<T> ref[2] = {a.x - x0, b.x - x0};
+  HullIntegrals<T> hi;
+  dual_hull_integrate(w, ref, hi);
+  if (!(hi.volume > T(0))) {
+    overlap_result_zero(res, STATUS_SEPARATED);
+    return res;
+  }
+  res.volume = hi.volume;
+  res.centroid = x0 + (T(1) / hi.volume) * hi.vmoment;
+  // S_B = -S_A exactly for the closed polyhedron; average the two for symmetry
+  res.S_A = T(0.5) * (hi.S[0] - hi.S[1]);
+  res.M_A = hi.M[0];
+  res.M_B = hi.M[1];
+  res.area = norm(res.S_A);
+  res.normal = res.area > T(0) ? (T(1) / res.area) * res.S_A : make_vec3(T(0), T(0), T(0));
+  res.depth = r;
+  res.nverts = hi.nverts;
+  return res;
+}
+
+}    // namespace polydem
+
+#endif

@@ -1,0 +1,287 @@
+// POLYDEM kernel tests: GJK and overlap polyhedron against CGAL exact
+// geometry, finite-difference gradients, symmetry and invariance.
+// POLYDEM_LONG_TESTS=1 multiplies the pair counts by 10.
+#include "cgal_ref.h"
+#include "pair_gen.h"
+
+#include "polydem_gjk.h"
+#include "polydem_overlap.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace polydem;
+using namespace polydem_test;
+
+namespace {
+
+int scale_count(int n)
+{
+  const char *e = std::getenv("POLYDEM_LONG_TESTS");
+  return (e && *e && *e != '0') ? 10 * n : n;
+}
+
+ShapePool &pool()
+{
+  static ShapePool p(300);
+  return p;
+}
+
+template <typename T> struct Kernel {
+  OverlapWorkspace<T> ws;
+  OverlapResult<T> run(const ShapeView<T> &va, const Pose<T> &pa, const ShapeView<T> &vb,
+                       const Pose<T> &pb)
+  {
+    return polyhedron_overlap(make_posed(va, pa), make_posed(vb, pb), ws);
+  }
+};
+
+Kernel<double> kd;
+Kernel<float> kf;
+
+OverlapResult<double> run_d(const Pair &p)
+{
+  return kd.run(pool().d[p.a]->view, p.pa, pool().d[p.b]->view, p.pb);
+}
+OverlapResult<float> run_f(const Pair &p)
+{
+  return kf.run(pool().f[p.a]->view, to_float(p.pa), pool().f[p.b]->view, to_float(p.pb));
+}
+GjkResult<double> gjk_d(const Pair &p)
+{
+  return gjk_intersect(make_posed(pool().d[p.a]->view, p.pa), make_posed(pool().d[p.b]->view, p.pb));
+}
+
+double length_of(const Pair &p)
+{
+  return std::max(p.pa.s * pool().data[p.a].radius, p.pb.s * pool().data[p.b].radius);
+}
+double vpart(const Pair &p)    // smaller particle volume
+{
+  return std::min(std::pow(p.pa.s, 3) * pool().data[p.a].volume,
+                  std::pow(p.pb.s, 3) * pool().data[p.b].volume);
+}
+
+struct Stats {
+  double max_vd = 0, max_cd = 0, max_vf = 0, max_cf = 0;
+  int n = 0, npos = 0, gjk_ok_sep = 0;
+};
+
+// compare one pair with CGAL; centroid compared when V_ref >= 1e-6 V_particle
+void check_pair(const Pair &p, Stats &st, bool do_float = true)
+{
+  const RefResult ref =
+      ref_intersection(posed_vertices(pool().data[p.a], p.pa), posed_vertices(pool().data[p.b], p.pb));
+  const double L = length_of(p), Vp = vpart(p);
+  const OverlapResult<double> r = run_d(p);
+  ASSERT_TRUE(r.status == STATUS_OK || r.status == STATUS_SEPARATED)
+      << p.family << " status " << r.status;
+  const double dv = std::fabs(r.volume - ref.volume) / Vp;
+  st.max_vd = std::max(st.max_vd, dv);
+  EXPECT_LE(dv, 1e-9) << p.family << " V " << r.volume << " ref " << ref.volume;
+  ++st.n;
+  if (ref.volume >= 1e-6 * Vp) {
+    ++st.npos;
+    const double dc = norm(r.centroid - make_vec3(ref.centroid[0], ref.centroid[1], ref.centroid[2])) / L;
+    st.max_cd = std::max(st.max_cd, dc);
+    EXPECT_LE(dc, 1e-9) << p.family;
+  }
+  // GJK agrees with the exact overlap
+  const GjkResult<double> g = gjk_d(p);
+  EXPECT_NE(g.status, STATUS_NO_CONVERGENCE) << p.family;
+  if (ref.volume > 0) EXPECT_EQ(g.status, STATUS_OK) << p.family << " V " << ref.volume;
+  if (!ref.intersects && g.status == STATUS_OK) ++st.gjk_ok_sep;
+  if (do_float) {
+    const OverlapResult<float> rf = run_f(p);
+    ASSERT_TRUE(rf.status == STATUS_OK || rf.status == STATUS_SEPARATED) << p.family;
+    const double dvf = std::fabs(rf.volume - ref.volume) / Vp;
+    st.max_vf = std::max(st.max_vf, dvf);
+    EXPECT_LE(dvf, 1e-4) << p.family << " Vf " << rf.volume << " ref " << ref.volume << " Vp " << Vp
+                         << " scales " << p.pa.s << " " << p.pb.s << " shapes " << p.a << " "
+                         << p.b;
+    if (ref.volume >= 1e-2 * Vp) {
+      const double dc =
+          norm(make_vec3<double>(rf.centroid.x, rf.centroid.y, rf.centroid.z) -
+               make_vec3(ref.centroid[0], ref.centroid[1], ref.centroid[2])) /
+          L;
+      st.max_cf = std::max(st.max_cf, dc);
+      EXPECT_LE(dc, 1e-4) << p.family;
+    }
+  }
+}
+
+void report(const char *what, const Stats &st)
+{
+  std::printf("[ %s ] pairs %d (V>=1e-6 Vp: %d): max |dV|/Vp double %.2e float %.2e; "
+              "max |dc|/L double %.2e float %.2e; GJK-intersect on exactly disjoint: %d\n",
+              what, st.n, st.npos, st.max_vd, st.max_vf, st.max_cd, st.max_cf, st.gjk_ok_sep);
+}
+
+}    // namespace
+
+TEST(KernelOverlap, RandomPairsVsCgal)
+{
+  std::mt19937_64 rng(42);
+  Stats st;
+  const int n = scale_count(10000);
+  for (int i = 0; i < n; ++i) {
+    check_pair(random_pair(pool(), rng), st);
+    if (HasFatalFailure()) return;
+  }
+  report("random", st);
+  EXPECT_EQ(st.gjk_ok_sep, 0);
+}
+
+TEST(KernelOverlap, DegenerateFamiliesVsCgal)
+{
+  std::mt19937_64 rng(7);
+  Stats st;
+  const int n = scale_count(100);
+  for (int kind = 0; kind <= 6; ++kind)
+    for (double delta : {1e-2, 1e-9, 0.0})
+      for (int i = 0; i < n; ++i) {
+        check_pair(degenerate_pair(pool(), rng, kind, delta), st);
+        if (HasFatalFailure()) return;
+      }
+  report("degenerate", st);
+}
+
+TEST(KernelOverlap, ExactValues)
+{
+  // identical coincident: V = V_A, centroid = x_A, S = 0
+  std::mt19937_64 rng(3);
+  for (int i = 0; i < 50; ++i) {
+    Pair p = degenerate_pair(pool(), rng, 3, 0.0);
+    auto r = run_d(p);
+    const double Vp = vpart(p), L = length_of(p);
+    EXPECT_NEAR(r.volume, Vp, 1e-12 * Vp);
+    EXPECT_LE(norm(r.centroid - p.pa.x), 1e-12 * L);
+    EXPECT_LE(norm(r.S_A), 1e-12 * L * L);
+  }
+  // cubes overlapping by 1/4 along x, exactly: V = 1/4, S_A = (1,0,0)
+  Pair p;
+  p.a = p.b = 0;
+  p.pa = make_pose(make_vec3(0.0, 0.0, 0.0), make_quat(1.0, 0.0, 0.0, 0.0), 1.0);
+  p.pb = make_pose(make_vec3(0.75, 0.0, 0.0), make_quat(1.0, 0.0, 0.0, 0.0), 1.0);
+  auto r = run_d(p);
+  EXPECT_NEAR(r.volume, 0.25, 1e-15);
+  EXPECT_NEAR(r.S_A.x, 1.0, 1e-14);
+  EXPECT_NEAR(r.centroid.x, 0.375, 1e-15);
+  EXPECT_NEAR(r.area, 1.0, 1e-14);
+  // touching: V = 0, separated status
+  p.pb.x.x = 1.0;
+  EXPECT_EQ(run_d(p).status, STATUS_SEPARATED);
+  EXPECT_EQ(run_d(p).volume, 0.0);
+}
+
+// S_A, M_A, M_B against central differences of V (h = 1e-7 L)
+TEST(KernelOverlap, GradientsVsFiniteDifferences)
+{
+  std::mt19937_64 rng(11);
+  int tested = 0;
+  double emax[3] = {0, 0, 0};
+  for (int it = 0; it < 20000 && tested < scale_count(400); ++it) {
+    Pair p = random_pair(pool(), rng);
+    auto r = run_d(p);
+    const double L = length_of(p);
+    if (r.status != STATUS_OK || r.area < 1e-2 * L * L) continue;
+    ++tested;
+    const double h = 1e-7 * L;
+    Vec3<double> fs, fma, fmb;
+    for (int k = 0; k < 3; ++k) {
+      Vec3<double> e = make_vec3(0.0, 0.0, 0.0);
+      e[k] = 1.0;
+      Pair q1 = p, q2 = p;
+      q1.pa.x += h * e;
+      q2.pa.x -= h * e;
+      fs[k] = (run_d(q1).volume - run_d(q2).volume) / (2 * h);
+      const double ha = h / L;    // angle
+      q1 = p;
+      q2 = p;
+      q1.pa.q = qmul(axis_angle(e, ha), p.pa.q);
+      q2.pa.q = qmul(axis_angle(e, -ha), p.pa.q);
+      fma[k] = (run_d(q1).volume - run_d(q2).volume) / (2 * ha);
+      q1 = p;
+      q2 = p;
+      q1.pb.q = qmul(axis_angle(e, ha), p.pb.q);
+      q2.pb.q = qmul(axis_angle(e, -ha), p.pb.q);
+      fmb[k] = (run_d(q1).volume - run_d(q2).volume) / (2 * ha);
+    }
+    const double es = norm(fs - r.S_A) / norm(r.S_A);
+    const double ema = norm(fma - r.M_A) / (norm(r.S_A) * L);
+    const double emb = norm(fmb - r.M_B) / (norm(r.S_A) * L);
+    emax[0] = std::max(emax[0], es);
+    emax[1] = std::max(emax[1], ema);
+    emax[2] = std::max(emax[2], emb);
+    EXPECT_LE(es, 1e-6);
+    EXPECT_LE(ema, 1e-6);
+    EXPECT_LE(emb, 1e-6);
+  }
+  std::printf("[ gradients ] %d pairs: max rel err S_A %.2e, M_A %.2e, M_B %.2e "
+              "(M relative to |S_A| L)\n",
+              tested, emax[0], emax[1], emax[2]);
+  EXPECT_GE(tested, scale_count(400) / 2);
+}
+
+// swapping A and B, and moving/rotating both together, changes nothing
+TEST(KernelOverlap, SymmetryAndInvariance)
+{
+  std::mt19937_64 rng(5);
+  double e_swap = 0, e_rig = 0;
+  for (int i = 0; i < scale_count(2000); ++i) {
+    Pair p = random_pair(pool(), rng);
+    auto r = run_d(p);
+    if (r.status != STATUS_OK) continue;
+    const double L = length_of(p), Vp = vpart(p);
+    Pair s = p;
+    std::swap(s.a, s.b);
+    std::swap(s.pa, s.pb);
+    auto rs = run_d(s);
+    ASSERT_EQ(rs.status, STATUS_OK);
+    double e = std::fabs(rs.volume - r.volume) / Vp;
+    e = std::max(e, norm(rs.centroid - r.centroid) / L);
+    e = std::max(e, norm(rs.S_A + r.S_A) / (L * L));
+    e = std::max(e, norm(rs.M_A - r.M_B) / (L * L * L));
+    e = std::max(e, norm(rs.M_B - r.M_A) / (L * L * L));
+    e_swap = std::max(e_swap, e);
+    // rigid motion of both: x -> Q x + t
+    const Quat<double> Q = random_quat(rng);
+    const Vec3<double> t = make_vec3(3.0, -7.0, 11.0);
+    Pair m = p;
+    m.pa.x = qrotate(Q, p.pa.x) + t;
+    m.pb.x = qrotate(Q, p.pb.x) + t;
+    m.pa.q = qmul(Q, p.pa.q);
+    m.pb.q = qmul(Q, p.pb.q);
+    auto rm = run_d(m);
+    ASSERT_EQ(rm.status, STATUS_OK);
+    double f = std::fabs(rm.volume - r.volume) / Vp;
+    f = std::max(f, norm(rm.centroid - (qrotate(Q, r.centroid) + t)) / L);
+    f = std::max(f, norm(rm.S_A - qrotate(Q, r.S_A)) / (L * L));
+    f = std::max(f, norm(rm.M_A - qrotate(Q, r.M_A)) / (L * L * L));
+    f = std::max(f, norm(rm.M_B - qrotate(Q, r.M_B)) / (L * L * L));
+    e_rig = std::max(e_rig, f);
+  }
+  std::printf("[ symmetry ] max deviation swap %.2e, rigid motion %.2e (relative to L^k)\n",
+              e_swap, e_rig);
+  EXPECT_LE(e_swap, 1e-11);
+  EXPECT_LE(e_rig, 1e-11);
+}
+
+TEST(KernelOverlap, Workspace)
+{
+  std::printf("[ workspace ] double %lu bytes, float %lu bytes (MAX_TEMPLATE_FACES = %d); "
+              "dodecahedron-sized (12 faces) double %lu bytes\n",
+              overlap_workspace_bytes<double>(), overlap_workspace_bytes<float>(),
+              MAX_TEMPLATE_FACES, overlap_workspace_bytes<double, 12>());
+  // a template with more faces than the workspace holds reports overflow
+  OverlapWorkspace<double, 12> small;
+  Pair p;
+  p.a = p.b = 2;    // cylinder: 22 faces
+  p.pa = make_pose(make_vec3(0.0, 0.0, 0.0), make_quat(1.0, 0.0, 0.0, 0.0), 1.0);
+  p.pb = make_pose(make_vec3(1.0, 0.0, 0.0), make_quat(1.0, 0.0, 0.0, 0.0), 1.0);
+  auto r = polyhedron_overlap(make_posed(pool().d[2]->view, p.pa),
+                              make_posed(pool().d[2]->view, p.pb), small);
+  EXPECT_EQ(r.status, STATUS_OVERFLOW);
+  EXPECT_EQ(r.volume, 0.0);
+}
