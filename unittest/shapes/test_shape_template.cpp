@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <map>
 #include <random>
@@ -593,4 +594,44 @@ TEST(ShapeTemplateErrors, EmptyFileAndNearDuplicates)
       EXPECT_MSG(std::string(e.what()), "near: vertex 8 is within");
     }
   }
+}
+
+TEST(ShapeTemplateErrors, MutatedFilesNeverCrash)
+{
+  // random byte edits of a valid file: each loads or throws ShapeError
+  std::ifstream in(pot("cube.shape"));
+  std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::mt19937_64 rng(42);
+  const char alphabet[] = "0123456789.-+eE \n#xnaif";
+  int loaded = 0, rejected = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    std::string t = good;
+    int edits = 1 + (int)(rng() % 4);
+    for (int k = 0; k < edits; ++k) {
+      size_t pos = rng() % t.size();
+      switch (rng() % 3) {
+      case 0:
+        t.erase(pos, 1 + rng() % 3);
+        break;
+      case 1:
+        t.insert(pos, 1, alphabet[rng() % (sizeof(alphabet) - 1)]);
+        break;
+      default:
+        t[pos] = alphabet[rng() % (sizeof(alphabet) - 1)];
+      }
+      if (t.empty()) t = "#";
+    }
+    std::string p = write_tmp("mutant.shape", t);
+    try {
+      auto s = PolyShapeTemplate::from_file(p);
+      EXPECT_EQ(s.nverts() - s.nedges() + s.nfaces(), 2);
+      EXPECT_GT(s.volume(), 0.0);
+      ++loaded;
+    } catch (const ShapeError &e) {
+      EXPECT_EQ(std::string(e.what()).rfind(p, 0), 0u) << e.what();    // names the file
+      ++rejected;
+    }
+  }
+  EXPECT_GT(loaded, 0);
+  EXPECT_GT(rejected, 0);
 }
