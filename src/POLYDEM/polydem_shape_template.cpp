@@ -41,8 +41,10 @@ using Pt = PolyShapeTemplate::Point;
 // dodecahedron's golden ratio). Rounding errors are ~1e-16.
 constexpr double PLANE_TOL = 1e-10;
 // Relative tolerance on principal moments below which two moments are
-// treated as equal (degenerate axes: see choose_axes()).
-constexpr double MOMENT_TOL = 1e-9;
+// treated as equal (degenerate axes: see choose_axes()). Round-off splits
+// truly equal moments by ~1e-15; keeping input axes for a split below
+// 1e-11 leaves products of inertia below 1e-11 of the largest moment.
+constexpr double MOMENT_TOL = 1e-11;
 
 std::string fmt_num(double x)
 {

@@ -259,6 +259,12 @@ TEST(ShapeTemplate, BoxPrincipalAxes)
                R[0][1] * (R[1][0] * R[2][2] - R[1][2] * R[2][0]) +
                R[0][2] * (R[1][0] * R[2][1] - R[1][1] * R[2][0]);
   EXPECT_NEAR(det, 1.0, 1e-14);
+  for (int j = 0; j < 2; ++j) {    // documented sign convention of axes 1 and 2
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+      if (std::fabs(R[i][j]) > std::fabs(R[k][j])) k = i;
+    EXPECT_GT(R[k][j], 0.0) << "axis " << j;
+  }
   Mat3<double> m = quat_to_mat(s.input_orientation());
   for (int k = 0; k < 8; ++k) {
     Pt v = s.vertex(k);    // hull corners keep the input order
@@ -634,4 +640,16 @@ TEST(ShapeTemplateErrors, MutatedFilesNeverCrash)
   }
   EXPECT_GT(loaded, 0);
   EXPECT_GT(rejected, 0);
+}
+
+TEST(ShapeTemplate, CatalystAxisBecomesBodyX)
+{
+  // D = L: the axial moment is the smallest, so body x = file z (exactly)
+  auto s = PolyShapeTemplate::from_file(pot("catalyst_cylinder.shape"));
+  const auto &R = s.rotation();
+  EXPECT_EQ(R[2][0], 1.0);    // column 0 (body x) = file z
+  EXPECT_EQ(R[0][1], 1.0);    // body y = file x (the in-plane file axis kept)
+  EXPECT_EQ(R[1][2], 1.0);    // body z = file y, right-handed
+  for (int k = 0; k < s.nverts(); ++k)
+    EXPECT_NEAR(std::fabs(s.vertex(k)[0]), 0.00275, 1e-15);
 }
