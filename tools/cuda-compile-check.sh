@@ -27,7 +27,7 @@
 #
 # Environment:
 #   POLYDEM_CUDA_CHECK_BUILD_DIR   the second build tree (default:
-#                                  CACHE_DIR/cuda-check-build/<hash of SRC_DIR>)
+#                                  CACHE_DIR/cuda-check-build/<hash of SRC_DIR + options>)
 #   POLYDEM_CUDA_CHECK_CMAKE_ARGS  extra arguments for configuring it
 #                                  (e.g. -DLAMMPS_SOURCE_DIR=/path)
 #   POLYDEM_JOBS                   parallel compiles (default 2)
@@ -172,7 +172,7 @@ if [ ${#kk_files[@]} -gt 0 ]; then
   fi
   # shellcheck disable=SC2206
   cfg_args+=(-G "Unix Makefiles"
-    -DCMAKE_BUILD_TYPE=Release
+    -DCMAKE_BUILD_TYPE=None
     -DCMAKE_CXX_COMPILER="$wrapper"
     -DCMAKE_CXX_FLAGS="-arch=sm_$arch"
     -DCMAKE_CXX_STANDARD="$std"
@@ -180,10 +180,12 @@ if [ ${#kk_files[@]} -gt 0 ]; then
     -DCMAKE_EXPORT_COMPILE_COMMANDS=ON
     -DKokkos_DIR="$prefix/lib/cmake/Kokkos"
     ${POLYDEM_CUDA_CHECK_CMAKE_ARGS:-})
-  build=${POLYDEM_CUDA_CHECK_BUILD_DIR:-$cache/cuda-check-build/$(echo "$srcdir" | sha256sum | cut -c1-12)}
+  want="$(printf '%s\n' "$cmake_src" "$(head -n1 "$prefix/.polydem-stamp")" "${cfg_args[@]}")"
+  # default: in the cache, one tree per source tree and configuration, so that
+  # a fresh build directory of the same checkout is warm too
+  build=${POLYDEM_CUDA_CHECK_BUILD_DIR:-$cache/cuda-check-build/$(echo "$want" | sha256sum | cut -c1-12)}
   mkdir -p "$build"
   build=$(cd "$build" && pwd)
-  want="$(printf '%s\n' "$cmake_src" "$(head -n1 "$prefix/.polydem-stamp")" "${cfg_args[@]}")"
 
   t0=$(now)
   exec 8> "$build/.lock"
