@@ -69,7 +69,8 @@ Components: main
 Signed-By: $keyring
 EOF
 
-# Dir::Cache keeps apt from writing (or needing to lock) the system cache;
+# Dir::Cache keeps apt from writing (or locking) the system cache; apt's own
+# locks on the private directories serialise concurrent runs on one DESTDIR;
 # APT::Sandbox::User=root avoids the _apt user, which cannot write into a
 # user's directory when we run as root.
 set -- \
@@ -77,8 +78,8 @@ set -- \
   -o Dir::Etc::SourceParts="$apt_dir/sources.list.d" \
   -o Dir::State::Lists="$apt_dir/lists" \
   -o Dir::Cache="$apt_dir/cache" \
-  -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache= \
-  -o Debug::NoLocking=1
+  -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=
+
 if [ "$(id -u)" = 0 ]; then
   set -- "$@" -o APT::Sandbox::User=root
 fi
@@ -88,7 +89,9 @@ apt-get "$@" -q update >&2
 
 echo "fetch-debian-source: apt-get source --download-only ${pkg}=${version}" >&2
 rc=0
-(cd "$destdir" && apt-get "$@" -q source --download-only "${pkg}=${version}" >&2) || rc=$?
+aptlog="$apt_dir/source.log"
+(cd "$destdir" && apt-get "$@" -q source --download-only "${pkg}=${version}" > "$aptlog" 2>&1) || rc=$?
+cat "$aptlog" >&2
 
 if [ -z "$(list_origs)" ]; then
   echo "fetch-debian-source: no orig tarball for ${pkg}=${version} in $destdir" >&2
@@ -96,8 +99,12 @@ if [ -z "$(list_origs)" ]; then
 fi
 if [ $rc -ne 0 ]; then
   # e.g. trixie's lammps: the .dsc answers 404 but the tarballs (each
-  # checked against the signed Sources index) arrive
-  echo "fetch-debian-source: warning: apt-get exited with $rc; using the orig tarball(s) it fetched" >&2
+  # checked against the signed Sources index) arrive. Accept that, and only that.
+  if grep -E '^E: Failed to fetch [a-z]+://' "$aptlog" | grep -qv '\.dsc '; then
+    echo "fetch-debian-source: apt-get failed ($rc) on more than the .dsc" >&2
+    exit 1
+  fi
+  echo "fetch-debian-source: warning: only the .dsc failed (apt-get exited with $rc); using the orig tarball(s) apt verified" >&2
 fi
 touch "$stamp"
 list_origs
