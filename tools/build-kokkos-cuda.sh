@@ -19,6 +19,9 @@
 # Environment: NVCC (default: nvcc on PATH, else /usr/local/cuda/bin/nvcc),
 #              POLYDEM_JOBS (default 2), POLYDEM_CUDA_ARCH (default 80).
 set -euo pipefail
+# the whole script is one brace group: bash parses it before running it, so
+# editing or checking out this file while it runs cannot derail the run
+{
 
 if [ $# -ne 1 ]; then
   echo "usage: $0 CACHE_DIR" >&2
@@ -75,7 +78,7 @@ if [ -f "$stamp" ] && [ "$(head -n1 "$stamp")" = "$want_stamp" ] &&
 fi
 
 exec 9> "$cache/.kokkos-cuda.lock"
-log "waiting for the lock $cache/.kokkos-cuda.lock" 
+log "taking the lock $cache/.kokkos-cuda.lock"
 flock 9
 # another run may have finished while we waited
 if [ -f "$stamp" ] && [ "$(head -n1 "$stamp")" = "$want_stamp" ] &&
@@ -156,3 +159,5 @@ fi
 } > "$stamp"
 log "installed in $prefix (C++$std, $(($(date +%s) - t0)) s)"
 echo "$prefix"
+exit 0
+}

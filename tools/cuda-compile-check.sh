@@ -22,8 +22,11 @@
 #                   compiled with Kokkos's flags, -I SRC_DIR/src/POLYDEM,
 #                   -DPOLYDEM_USE_KOKKOS -DPOLYDEM_REQUIRE_CUDA
 #
-# Host/device mistakes that nvcc only warns about (calling a __host__ function
-# from device code: diagnostics 20011-20015) are made errors.
+# Host/device mistakes that nvcc only warns about are made errors: calling a
+# __device__ function from __host__ __device__ code (cudafe diagnostics 20007,
+# 20008) or a __host__ one (20011, 20013-20015); LAMMPS's own KOKKOS styles
+# (pair lj/cut, gran/hooke/history, fix nve, nve/sphere, atom_vec sphere)
+# compile cleanly with these.
 #
 # Environment:
 #   POLYDEM_CUDA_CHECK_BUILD_DIR   the second build tree (default:
@@ -33,6 +36,9 @@
 #   POLYDEM_JOBS                   parallel compiles (default 2)
 #   NVCC                           nvcc to use (default: PATH, then /usr/local/cuda/bin)
 set -euo pipefail
+# the whole script is one brace group: bash parses it before running it, so
+# editing or checking out this file while it runs cannot derail the run
+{
 
 if [ $# -lt 3 ]; then
   echo "usage: $0 SRC_DIR CACHE_DIR FILE..." >&2
@@ -86,7 +92,7 @@ if command -v ccache > /dev/null 2>&1; then
   launcher=(ccache)
 fi
 # nvcc only warns when host code is called from device code; make it an error
-diag_flags=(-Xcudafe "--diag_error=20011,--diag_error=20012,--diag_error=20013,--diag_error=20014,--diag_error=20015")
+diag_flags=(-Xcudafe "--diag_error=20007,--diag_error=20008,--diag_error=20011,--diag_error=20013,--diag_error=20014,--diag_error=20015")
 
 # compile jobs: each writes its output to a log; at most $jobs at once
 work="${TMPDIR:-/tmp}/polydem-cuda-check.$$"
@@ -259,3 +265,5 @@ if [ ${#failed[@]} -gt 0 ]; then
   exit 1
 fi
 log "all $total file(s) compile for CUDA (sm_$arch, C++$std) [$(elapsed "$t_start") s]"
+exit 0
+}

@@ -197,17 +197,85 @@ template <typename T> void exercise_overlap(int n)
 }
 #endif
 
-// TODO(kernels): add polydem_clip.h / polydem_contact_model.h the same way
-// when they exist (build the inputs from DeviceCube + pose_of, call the kernel
-// in the lambda, write its results to a View) and instantiate them below.
-// Until then those headers are only parsed, not instantiated, by this TU.
+#ifdef POLYDEM_CHECK_CLIP
+// polydem_clip.h: polyhedron-triangle section (Sutherland-Hodgman) and prism volume
+template <typename T> void exercise_clip(int n)
+{
+  DeviceCube<T> cube;
+  Kokkos::View<T *[8], Mem> out("out", n);
+  Kokkos::View<int *, Mem> status("status", n);
+  Kokkos::parallel_for(
+      "polydem_check_clip", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
+        const ShapeView<T> s = cube.view();
+        const PosedShape<T> a = make_posed(s, pose_of<T>(i));
+        Triangle<T> tri;
+        tri.v[0] = make_vec3(T(-2), T(-2), T(i));
+        tri.v[1] = make_vec3(T(2), T(-2), T(i));
+        tri.v[2] = make_vec3(T(0), T(2), T(i));
+        ClipWorkspace<T> ws;
+        const ClipResult<T> r = polyhedron_triangle(a, tri, ws);
+        out(i, 0) = r.area;
+        out(i, 1) = r.acentroid.x;
+        out(i, 2) = r.volume;
+        out(i, 3) = r.vcentroid.y;
+        out(i, 4) = r.S.z;
+        out(i, 5) = r.M.x;
+        out(i, 6) = r.normal.z;
+        out(i, 7) = T(0);
+        status(i) = r.status;
+      });
+}
+#endif
+
+#ifdef POLYDEM_CHECK_CONTACT_MODEL
+// polydem_contact_model.h: contact force from the overlap geometry
+template <typename T> void exercise_contact_model(int n)
+{
+  Kokkos::View<T *[3], Mem> shear("shear", n);
+  Kokkos::View<T *[4], Mem> out("out", n);
+  Kokkos::parallel_for(
+      "polydem_check_contact_model", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
+        const Vec3<T> z = make_vec3(T(0), T(0), T(0));
+        ContactGeometry<T> g;
+        g.volume = T(1e-3) * T(i + 1);
+        g.area = T(0.1);
+        g.normal = make_vec3(T(1), T(0), T(0));
+        g.centroid = make_vec3(T(0.5), T(0), T(0));
+        g.S_A = make_vec3(T(-0.1), T(0), T(0));
+        g.M_A = z;
+        g.M_B = z;
+        ContactParams<T> p;
+        p.K = T(1e6);
+        p.Kt = T(4e5);
+        p.damp = damping_factor(T(0.5));
+        p.mu = T(0.3);
+        p.meff = T(0.5);
+        p.dt = T(1e-6);
+        T sh[3] = {shear(i, 0), shear(i, 1), shear(i, 2)};
+        const ContactForce<T> f = contact_force(g, p, z, make_vec3(T(1), T(0), T(0)), z,
+                                                make_vec3(T(-0.1), T(0.01), T(0)), z, z, sh);
+        for (int k = 0; k < 3; ++k) shear(i, k) = sh[k];
+        out(i, 0) = f.F_A.x + f.tau_A.y + f.tau_B.z;
+        out(i, 1) = f.energy;
+        out(i, 2) = f.fn;
+        out(i, 3) = f.ft;
+      });
+}
+#endif
+
+// A new kernel header: include it above (guarded with __has_include while it
+// is being written), add an exercise_* function that calls it in a lambda,
+// and instantiate it below. A kernel never called from a lambda is only
+// parsed, not compiled for the device.
 
 // Explicit instantiation: nvcc generates device code for every lambda above.
 #define POLYDEM_INSTANTIATE(T)                                                                     \
   template void exercise_math<T>(int);                                                             \
   POLYDEM_INSTANTIATE_RIGID(T)                                                                     \
   POLYDEM_INSTANTIATE_GJK(T)                                                                       \
-  POLYDEM_INSTANTIATE_OVERLAP(T)
+  POLYDEM_INSTANTIATE_OVERLAP(T)                                                                   \
+  POLYDEM_INSTANTIATE_CLIP(T)                                                                      \
+  POLYDEM_INSTANTIATE_CONTACT_MODEL(T)
 
 #ifdef POLYDEM_CHECK_RIGID
 #define POLYDEM_INSTANTIATE_RIGID(T) template void exercise_rigid<T>(int);
@@ -224,6 +292,16 @@ template <typename T> void exercise_overlap(int n)
 #define POLYDEM_INSTANTIATE_OVERLAP(T) template void exercise_overlap<T>(int);
 #else
 #define POLYDEM_INSTANTIATE_OVERLAP(T)
+#endif
+#ifdef POLYDEM_CHECK_CLIP
+#define POLYDEM_INSTANTIATE_CLIP(T) template void exercise_clip<T>(int);
+#else
+#define POLYDEM_INSTANTIATE_CLIP(T)
+#endif
+#ifdef POLYDEM_CHECK_CONTACT_MODEL
+#define POLYDEM_INSTANTIATE_CONTACT_MODEL(T) template void exercise_contact_model<T>(int);
+#else
+#define POLYDEM_INSTANTIATE_CONTACT_MODEL(T)
 #endif
 
 POLYDEM_INSTANTIATE(float)
