@@ -11,7 +11,7 @@ LMP=$(cd "$BUILD" && pwd)/lmp
 cd examples/tumble
 "$LMP" -in in.tumble -log log.tumble
 last=$(ls -1 polyhedra.*.vtk | sort -t. -k2 -n | tail -n 1)
-python3 ../../tools/render_vtk.py "$last" tumble.png --title "POLYDEM: 300 grains, ${last}"
+/usr/bin/python3 ../../tools/render_vtk.py "$last" tumble.png --title "POLYDEM: 300 grains, ${last}"
 echo
 echo "quickstart: log      $(pwd)/log.tumble"
 echo "quickstart: snapshot $(pwd)/${last} (ParaView reads it)"

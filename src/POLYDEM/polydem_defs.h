@@ -7,7 +7,10 @@
 #ifndef POLYDEM_DEFS_H
 #define POLYDEM_DEFS_H
 
-#if defined(LMP_KOKKOS) || defined(POLYDEM_USE_KOKKOS)
+// Kokkos translation units (the /kk styles) include a Kokkos header first,
+// which defines KOKKOS_VERSION; others may ask with -DPOLYDEM_USE_KOKKOS.
+// Plain LAMMPS files and the host tests get plain inline functions.
+#if defined(POLYDEM_USE_KOKKOS) || defined(KOKKOS_VERSION)
 #include <Kokkos_Macros.hpp>
 #define POLYDEM_FN KOKKOS_INLINE_FUNCTION
 #else

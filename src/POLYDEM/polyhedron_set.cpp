@@ -12,6 +12,7 @@
 #include "group.h"
 #include "math_const.h"
 #include "polydem_rigid.h"
+#include "polydem_shape_template.h"
 #include "random_park.h"
 #include "region.h"
 

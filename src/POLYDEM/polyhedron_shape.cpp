@@ -36,7 +36,10 @@ void PolyhedronShape::command(int narg, char **arg)
   for (int iarg = 2; iarg < narg; iarg += 2) {
     if (strcmp(arg[iarg], "hull") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "polyhedron_shape: keyword 'hull' needs yes or no");
-      hull = utils::logical(FLERR, arg[iarg + 1], false, lmp);
+      const std::string v = arg[iarg + 1];
+      if (v == "yes") hull = true;
+      else if (v == "no") hull = false;
+      else error->all(FLERR, "polyhedron_shape: keyword 'hull' needs yes or no, got '{}'", v);
     } else
       error->all(FLERR, "polyhedron_shape: unknown keyword '{}'", arg[iarg]);
   }

@@ -10,6 +10,7 @@
 
 #include <mpi.h>
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -50,8 +51,14 @@ class Lmp {
     }
     return "";
   }
+  // thermo keyword, or "c_ID" for a compute's global scalar
   double thermo(const std::string &keyword)
   {
+    if (keyword.compare(0, 2, "c_") == 0) {
+      auto *p = (double *) lammps_extract_compute(lmp, keyword.substr(2).c_str(),
+                                                  LMP_STYLE_GLOBAL, LMP_TYPE_SCALAR);
+      return p ? *p : std::nan("");
+    }
     return lammps_get_thermo(lmp, keyword.c_str());
   }
 

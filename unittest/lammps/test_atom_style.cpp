@@ -85,14 +85,14 @@ TEST(AtomStyle, FreeFallMatchesAnalytic)
   EXPECT_NEAR(s.m, 2500 * 7.6631189606246319 * 1e-6, 1e-12 * s.m);
 }
 
-// A torque-free cuboid through LAMMPS follows the free-rotor kernel exactly,
+// A torque-free asymmetric grain (three distinct moments) through LAMMPS follows the free-rotor kernel exactly,
 // and conserves rotational energy (compute erotate/polyhedron).
-TEST(AtomStyle, TorqueFreeCuboidFollowsKernel)
+TEST(AtomStyle, TorqueFreeGrainFollowsKernel)
 {
   Lmp l;
   l.cmds({"units si", "atom_style polyhedron", "boundary f f f",
           "region box block -1 1 -1 1 -1 1", "create_box 1 box",
-          "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
+          "polyhedron_shape c " + potentials() + "/mineral18.shape",
           "create_atoms 1 single 0 0 0", "polyhedron_set atom 1 density 2500 quat 1 2 3 40",
           "polyhedron_set atom 1 omega 0.5 30.0 0.4", "fix 1 all nve/polyhedron",
           "compute er all erotate/polyhedron", "thermo_style custom step c_er",

@@ -6,24 +6,59 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
 
 using polydem_test::Lmp;
 using polydem_test::potentials;
 
 namespace {
 
-std::vector<std::string> setup(int n)
+// A data file (written by rank 0) fixes atom IDs, positions, orientations and
+// velocities independently of the number of ranks (create_atoms and velocity
+// would number atoms or sum momenta per rank).
+std::string write_data(int n)
+{
+  const std::string file = ::testing::TempDir() + "polydem_mpi.data";
+  int me;
+  MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  if (me == 0) {
+    std::mt19937_64 rng(20261122);
+    std::uniform_real_distribution<double> u(0.0, 1.0), g(-1.0, 1.0);
+    std::ofstream o(file);
+    o.precision(17);
+    o << "POLYDEM 1 vs 2 ranks\n\n" << 2 * n << " atoms\n2 atom types\n"
+      << "0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\nAtoms # polyhedron\n\n";
+    for (int i = 1; i <= 2 * n; i++) {
+      double q[4], qn = 0;
+      for (double &c : q) c = g(rng), qn += c * c;
+      const int type = i <= n ? 1 : 2;
+      o << i << " " << type << " " << type << " " << (type == 1 ? 1.0 : 0.7) << " 1.5";
+      for (int k = 0; k < 3; k++) o << " " << 10.0 * u(rng);
+      for (double c : q) o << " " << c / std::sqrt(qn);
+      o << "\n";
+    }
+    o << "\nVelocities\n\n";
+    for (int i = 1; i <= 2 * n; i++) {
+      o << i;
+      for (int k = 0; k < 3; k++) o << " " << 3.0 * g(rng);
+      for (int k = 0; k < 3; k++) o << " " << 0.5 * g(rng);
+      o << "\n";
+    }
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
+  return file;
+}
+
+std::vector<std::string> setup(const std::string &data)
 {
   return {"units lj", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
-          "region box block 0 10 0 10 0 10", "create_box 2 box",
           "polyhedron_shape cube " + potentials() + "/cube.shape",
           "polyhedron_shape ico " + potentials() + "/icosahedron.shape",
-          "create_atoms 1 random " + std::to_string(n) + " 4711 NULL",
-          "create_atoms 2 random " + std::to_string(n) + " 4712 NULL",
-          "polyhedron_set type 2 shape ico scale 0.7 quat/random 5",
-          "polyhedron_set type 1 quat/random 6 omega 1.0 2.0 -0.5",
-          "velocity all create 5.0 999 loop geom", "neighbor 0.3 bin",
+          "read_data " + data, "neighbor 0.3 bin",
           "fix 1 all nve/polyhedron", "timestep 0.01", "thermo 100",
           "thermo_style custom step atoms"};
 }
@@ -67,13 +102,17 @@ TEST(MpiRanks, OneVsTwoRanksIdentical)
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
   MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
   const int n = 60;
+  const std::string data = write_data(n);
   std::vector<double> multi;
   double natoms_min = 1e30, natoms_max = -1;
+  int nlocal_min = 1 << 30, nlocal_max = 0;
   {
     Lmp l({}, MPI_COMM_WORLD);
-    l.cmds(setup(n));
+    l.cmds(setup(data));
     for (int r = 0; r < 10; r++) {
       l.cmd("run 100");
+      nlocal_min = std::min(nlocal_min, l.lmp->atom->nlocal);
+      nlocal_max = std::max(nlocal_max, l.lmp->atom->nlocal);
       const double na = l.thermo("atoms");
       natoms_min = std::fmin(natoms_min, na);
       natoms_max = std::fmax(natoms_max, na);
@@ -82,20 +121,24 @@ TEST(MpiRanks, OneVsTwoRanksIdentical)
   }
   EXPECT_EQ(natoms_min, 2 * n);
   EXPECT_EQ(natoms_max, 2 * n);
+  // atoms migrated between the ranks (exchange happened)
+  if (nprocs > 1) EXPECT_LT(nlocal_min, nlocal_max);
   // the same on one rank
   MPI_Comm self;
   MPI_Comm_split(MPI_COMM_WORLD, me, 0, &self);
   if (me == 0) {
     Lmp l({}, self);
-    l.cmds(setup(n));
+    l.cmds(setup(data));
     for (int r = 0; r < 10; r++) l.cmd("run 100");
     std::vector<double> single = gather(l, self);
     ASSERT_EQ(single.size(), multi.size());
-    // particles travel ~ several box lengths: every one crosses boundaries
+    // speeds ~1.7 over 10 time units: particles cross the box and the
+    // subdomain boundary several times
     double maxdiff = 0.0;
     for (size_t i = 0; i < single.size(); i++)
       maxdiff = std::fmax(maxdiff, std::fabs(single[i] - multi[i]));
     EXPECT_EQ(maxdiff, 0.0) << "on " << nprocs << " ranks";
   }
   MPI_Comm_free(&self);
+  if (me == 0) std::remove(data.c_str());
 }

@@ -1,0 +1,132 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - contact force model for two polyhedra from their overlap
+   polyhedron (polyhedral seed §2.5), shared by pair polyhedron and /kk.
+   No LAMMPS includes; host and device.
+
+   Normal, elastic (Feng's energy-conserving model, Eqs. 12-13):
+     W'(V) = K V^{1/3},  K = E_A/R_A + E_B/R_B   (R: volume-equivalent radii)
+     W(V)  = 3/4 K V^{4/3}
+     F_A = -W'(V) S_A,  tau_A = -W'(V) M_A,  tau_B = -W'(V) M_B,  F_B = -F_A
+   with S_A = dV/dx_A, M = dV/dtheta from polydem_overlap.h, so the elastic
+   part is exactly the negative gradient of W(V) in translation and rotation
+   (|F| = K V^{1/3} A_n as in Eq. 12 with A_n = |S_A|).
+   Normal damping (Eqs. 14-15): F_A^d = -g_n (v_r.n) n,
+     g_n = -2 ln(e) sqrt(k_n m_eff) / sqrt(ln(e)^2 + pi^2),  k_n = K A_n.
+   Tangential (Cundall-Strack, Eqs. 17-20): accumulated displacement s kept
+   in the tangent plane, F_t = -k_t s - g_t v_t, k_t = K_t A_n,
+   K_t = sum E/(2(1+nu)R), capped by mu |F_n| (then s is reset to match).
+   The contact point is the centroid of the overlap polyhedron; v_r is the
+   velocity of A relative to B there, including both spins.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_CONTACT_MODEL_H
+#define POLYDEM_CONTACT_MODEL_H
+
+#include "polydem_math.h"
+
+namespace polydem {
+
+using std::cbrt;
+using std::log;
+
+template <typename T> struct ContactParams {
+  T K;        // E_A/R_A + E_B/R_B [pressure/length]
+  T Kt;       // E_A/(2(1+nu_A)R_A) + E_B/(2(1+nu_B)R_B) [pressure/length]
+  T damp;     // ln(e)/sqrt(ln(e)^2 + pi^2), in [-1, 0]
+  T mu;       // Coulomb friction coefficient
+  T meff;     // m_A m_B / (m_A + m_B)
+  T dt;       // time step (tangential displacement increment)
+};
+
+// damping factor of Eq. 15 from the restitution coefficient e in (0, 1]
+template <typename T> POLYDEM_FN T damping_factor(T e)
+{
+  const T pi = T(3.14159265358979323846);
+  const T l = log(e);
+  return l / sqrt(l * l + pi * pi);
+}
+
+template <typename T> struct ContactForce {
+  Vec3<T> F_A;      // force on A (B gets -F_A)
+  Vec3<T> tau_A;    // torque on A about x_A
+  Vec3<T> tau_B;    // torque on B about x_B
+  T energy;         // W(V)
+  T fn;             // normal force magnitude (elastic + damping) along -n on A
+  T ft;             // tangential force magnitude
+};
+
+// Geometry of one contact, as computed by polydem_overlap.h.
+template <typename T> struct ContactGeometry {
+  T volume;
+  T area;
+  Vec3<T> normal;      // from A towards B
+  Vec3<T> centroid;    // contact point
+  Vec3<T> S_A, M_A, M_B;
+};
+
+// shear: accumulated tangential displacement (in/out, 3 values). With
+// mu = 0 the tangential part is skipped and shear is zeroed.
+template <typename T>
+POLYDEM_FN ContactForce<T> contact_force(const ContactGeometry<T> &g, const ContactParams<T> &p,
+                                         const Vec3<T> &xA, const Vec3<T> &xB,
+                                         const Vec3<T> &vA, const Vec3<T> &vB,
+                                         const Vec3<T> &wA, const Vec3<T> &wB, T *shear)
+{
+  ContactForce<T> out;
+  const T Wp = p.K * cbrt(g.volume);    // W'(V), Eq. 12-13
+  out.energy = T(0.75) * Wp * g.volume;
+  out.F_A = -Wp * g.S_A;
+  out.tau_A = -Wp * g.M_A;
+  out.tau_B = -Wp * g.M_B;
+
+  const Vec3<T> n = g.normal;
+  const Vec3<T> rA = g.centroid - xA, rB = g.centroid - xB;
+  const Vec3<T> vr = (vA + cross(wA, rA)) - (vB + cross(wB, rB));
+  const T vn = dot(vr, n);
+
+  // normal damping, Eqs. 14-15
+  const T kn = p.K * g.area;
+  const T gn = -T(2) * p.damp * sqrt(kn * p.meff);
+  const Vec3<T> Fd = (-gn * vn) * n;
+  out.F_A += Fd;
+  out.tau_A += cross(rA, Fd);
+  out.tau_B -= cross(rB, Fd);
+  out.fn = Wp * g.area + gn * vn;
+  out.ft = T(0);
+
+  if (!(p.mu > T(0))) {
+    shear[0] = shear[1] = shear[2] = T(0);
+    return out;
+  }
+
+  // tangential, Eqs. 17-20: keep s in the current tangent plane (same length)
+  Vec3<T> s = make_vec3(shear[0], shear[1], shear[2]);
+  const T s0 = norm(s);
+  s -= dot(s, n) * n;
+  const T s1 = norm(s);
+  if (s1 > T(0)) s = (s0 / s1) * s;
+  const Vec3<T> vt = vr - vn * n;
+  s += p.dt * vt;
+  const T kt = p.Kt * g.area;
+  const T gt = -T(2) * p.damp * sqrt(kt * p.meff);
+  Vec3<T> Ft = (-kt) * s - gt * vt;
+  const T ftm = norm(Ft);
+  const T fmax = p.mu * fabs(out.fn);
+  if (ftm > fmax) {
+    // slip: cap at mu|F_n| and reset the spring to the capped force
+    Ft = (ftm > T(0) ? fmax / ftm : T(0)) * Ft;
+    if (kt > T(0)) s = (T(-1) / kt) * (Ft + gt * vt);
+  }
+  shear[0] = s.x;
+  shear[1] = s.y;
+  shear[2] = s.z;
+  out.ft = norm(Ft);
+  out.F_A += Ft;
+  out.tau_A += cross(rA, Ft);
+  out.tau_B -= cross(rB, Ft);
+  return out;
+}
+
+}    // namespace polydem
+
+#endif
