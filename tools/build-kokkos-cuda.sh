@@ -65,10 +65,13 @@ if ! command -v nvcc > /dev/null 2>&1; then
 fi
 nvcc_path=$(command -v nvcc)
 nvcc_version=$(nvcc --version | sed -n 's/.*release \([0-9.]*\).*/\1/p')
+# the compiler's identity, not its path (/usr/local/bin/nvcc may be a script
+# running /usr/local/cuda/bin/nvcc)
+nvcc_build=$(nvcc --version | sed -n 's/^Build //p')
 
 patch_sum=$(sha256sum "$patch_file" | cut -d' ' -f1)
 # what the stamp certifies; any change rebuilds
-want_stamp="kokkos=3.4.01 trilinos=$tri_version patch=$patch_sum arch=sm_$arch nvcc=$nvcc_path:$nvcc_version"
+want_stamp="kokkos=3.4.01 trilinos=$tri_version patch=$patch_sum arch=sm_$arch nvcc=$nvcc_version:$nvcc_build"
 
 if [ -f "$stamp" ] && [ "$(head -n1 "$stamp")" = "$want_stamp" ] &&
   [ -f "$prefix/lib/cmake/Kokkos/KokkosConfig.cmake" ] && [ -x "$prefix/bin/nvcc_wrapper" ]; then
@@ -135,7 +138,7 @@ configure() {    # $1 = C++ standard
 rm -rf "$prefix"
 std=""
 for s in 17 14; do
-  log "configuring (C++$s, sm_$arch, $(basename "$nvcc_path") $nvcc_version)"
+  log "configuring (C++$s, sm_$arch, $nvcc_path $nvcc_version)"
   if configure "$s" && "$cmake" --build "$build" -j "$jobs" >&2; then
     std=$s
     break
