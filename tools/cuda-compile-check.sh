@@ -251,9 +251,15 @@ EOF
     make -C "$build" gitversion > /dev/null 2>&1 || true
   fi
 
+  # paths inside the (hash-named) tree count as relative for ccache, so a
+  # re-created tree still hits the cache
+  kk_launcher=("${launcher[@]}")
+  if [ ${#launcher[@]} -gt 0 ] && [ -z "${CCACHE_BASEDIR:-}" ]; then
+    kk_launcher=(env CCACHE_BASEDIR="$build" "${launcher[@]}")
+  fi
   for i in "${!kk_files[@]}"; do
     mapfile -d '' args < "$work/cmds/$i.args"
-    start_job "${kk_files[$i]}" "$(cat "$work/cmds/$i.dir")" "${launcher[@]}" "${args[@]}" "${diag_flags[@]}"
+    start_job "${kk_files[$i]}" "$(cat "$work/cmds/$i.dir")" "${kk_launcher[@]}" "${args[@]}" "${diag_flags[@]}"
   done
   report_jobs
 fi
