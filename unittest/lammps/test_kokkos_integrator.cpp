@@ -10,12 +10,16 @@
 
 #include "polydem_lmp.h"
 
+#include "domain.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <unistd.h>
@@ -35,12 +39,16 @@ std::vector<std::string> with(std::vector<std::string> a, const std::vector<std:
 
 // n particles of each of two shapes; speeds ~ a few box lengths per 1000
 // steps, spins of order 1 about random body axes
-std::vector<std::string> setup(int n)
+// ghosts: without a pair style the communication cutoff must be set for
+// borders and forward communication to carry anything; spatial sorting
+// exercises AtomVec::copy; ghost_vel adds velocities to ghosts
+std::vector<std::string> setup(int n, bool ghost_vel = false)
 {
   const std::string sn = std::to_string(n);
   return {"units lj",
           "atom_style polyhedron",
-          "atom_modify map array",
+          "atom_modify map array sort 100 2.0",
+          std::string("comm_modify cutoff 2.5 vel ") + (ghost_vel ? "yes" : "no"),
           "boundary p p p",
           "region box block 0 10 0 10 0 10",
           "create_box 2 box",
@@ -51,6 +59,25 @@ std::vector<std::string> setup(int n)
           "polyhedron_set type 2 shape dode scale 0.6 density 2.0 quat/random 5 omega -1.5 0.7 2.0",
           "polyhedron_set type 1 scale 0.8 quat/random 6 omega 1.0 2.0 -0.5",
           "velocity all create 20.0 999 loop geom",
+          "neighbor 0.3 bin",
+          "fix 1 all nve/polyhedron",
+          "timestep 0.002",
+          "thermo 100",
+          "thermo_style custom step atoms"};
+}
+
+// the same system read from a data file: atom IDs independent of the number
+// of ranks (create_atoms numbers atoms rank by rank)
+std::vector<std::string> setup_from_data(const std::string &file, bool ghost_vel = false)
+{
+  return {"units lj",
+          "atom_style polyhedron",
+          "atom_modify map array sort 100 2.0",
+          std::string("comm_modify cutoff 2.5 vel ") + (ghost_vel ? "yes" : "no"),
+          "boundary p p p",
+          "polyhedron_shape cube " + potentials() + "/cube.shape",
+          "polyhedron_shape dode " + potentials() + "/dodecahedron.shape",
+          "read_data " + file,
           "neighbor 0.3 bin",
           "fix 1 all nve/polyhedron",
           "timestep 0.002",
@@ -147,6 +174,74 @@ std::string describe(const Diff &d)
   return buf;
 }
 
+// every ghost atom must carry its owner's data: position up to a periodic
+// image, quaternion, shape, scale, radius, mass (and with ghost velocities
+// v, omega, angmom). Non-interacting particles: the final half step changes
+// none of these, so ghosts and owners agree exactly at the end of a run.
+// Returns the number of ghosts checked; counts mismatches in *bad.
+long check_ghosts(Lmp &l, bool ghost_vel, long *bad)
+{
+  auto *a = l.lmp->atom;
+  // owners' records from every rank: id, x, quat, v, omega, angmom, shape, scale, radius, mass
+  const int R = 1 + 3 + 4 + 9 + 4;
+  std::vector<double> mine;
+  for (int i = 0; i < a->nlocal; i++) {
+    mine.push_back((double) a->tag[i]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->x[i][k]);
+    for (int k = 0; k < 4; k++) mine.push_back(a->quat[i][k]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->v[i][k]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->omega[i][k]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->angmom[i][k]);
+    mine.push_back(a->pshape[i]);
+    mine.push_back(a->pscale[i]);
+    mine.push_back(a->radius[i]);
+    mine.push_back(a->rmass[i]);
+  }
+  int nprocs;
+  MPI_Comm_size(l.lmp->world, &nprocs);
+  int n = (int) mine.size();
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, l.lmp->world);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, l.lmp->world);
+  std::map<long, const double *> owner;
+  for (int i = 0; i < total; i += R) owner[(long) all[i]] = &all[i];
+
+  const double prd[3] = {l.lmp->domain->xprd, l.lmp->domain->yprd, l.lmp->domain->zprd};
+  long checked = 0;
+  *bad = 0;
+  for (int i = a->nlocal; i < a->nlocal + a->nghost; i++) {
+    auto it = owner.find((long) a->tag[i]);
+    if (it == owner.end()) {
+      (*bad)++;
+      continue;
+    }
+    const double *o = it->second;
+    bool ok = true;
+    for (int k = 0; k < 3; k++) {
+      const double d = a->x[i][k] - o[1 + k];
+      const double img = std::round(d / prd[k]);
+      if (std::fabs(d - img * prd[k]) > 1e-12 * prd[k]) ok = false;
+    }
+    for (int k = 0; k < 4; k++) ok = ok && a->quat[i][k] == o[4 + k];
+    ok = ok && a->pshape[i] == (int) o[17] && a->pscale[i] == o[18] && a->radius[i] == o[19] &&
+        a->rmass[i] == o[20];
+    if (ghost_vel) {
+      for (int k = 0; k < 3; k++) {
+        ok = ok && a->v[i][k] == o[8 + k];
+        ok = ok && a->omega[i][k] == o[11 + k];
+        ok = ok && a->angmom[i][k] == o[14 + k];
+      }
+    }
+    if (!ok) (*bad)++;
+    checked++;
+  }
+  return checked;
+}
+
 // the same name on every rank (rank 0's process id)
 std::string tmpfile(const std::string &name)
 {
@@ -162,27 +257,37 @@ std::string tmpfile(const std::string &name)
 constexpr int NPER = 150;      // particles per shape: 300 in all
 constexpr int NSTEPS = 2000;    // in 4 runs of 500 (re-neighboring, exchange, borders)
 
-class KokkosVsPlain : public ::testing::TestWithParam<std::string> {};
+class KokkosVsPlain : public ::testing::TestWithParam<std::tuple<std::string, bool>> {};
 
 // comm device (kernels of this style), comm host (the same functors on the
 // host space), comm no (LAMMPS's classic host communication through the
-// generic AtomVec code)
+// generic AtomVec code); with and without ghost velocities
 TEST_P(KokkosVsPlain, TrajectoriesAgree)
 {
+  const std::string mode = std::get<0>(GetParam());
+  const bool ghost_vel = std::get<1>(GetParam());
   std::vector<double> plain, kk;
+  long nghost = 0;
   {
     Lmp l;
-    l.cmds(setup(NPER));
+    l.cmds(setup(NPER, ghost_vel));
     for (int r = 0; r < NSTEPS / 500; r++) l.cmd("run 500");
     plain = gather(l, MPI_COMM_WORLD);
+    long bad = 0;
+    EXPECT_GT(check_ghosts(l, ghost_vel, &bad), 0);
+    EXPECT_EQ(bad, 0) << "plain";
   }
   {
-    Lmp l(with(KK, {"-pk", "kokkos", "comm", GetParam()}));
-    l.cmds(setup(NPER));
+    Lmp l(with(KK, {"-pk", "kokkos", "comm", mode}));
+    l.cmds(setup(NPER, ghost_vel));
     EXPECT_STREQ(l.lmp->atom->atom_style, "polyhedron/kk");
     for (int r = 0; r < NSTEPS / 500; r++) l.cmd("run 500");
     EXPECT_EQ(l.thermo("atoms"), 2 * NPER);
     kk = gather(l, MPI_COMM_WORLD);
+    long bad = 0;
+    nghost = check_ghosts(l, ghost_vel, &bad);
+    EXPECT_GT(nghost, 0);
+    EXPECT_EQ(bad, 0) << "ghosts whose data differ from their owner's";
   }
   const Diff d = compare(plain, kk);
   EXPECT_EQ(d.ids, 0);
@@ -192,12 +297,18 @@ TEST_P(KokkosVsPlain, TrajectoriesAgree)
   EXPECT_GT(d.crossed, NPER) << describe(d);
   int me = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  int nprocs = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
   if (me == 0)
-    printf("[ measured ] comm %s: %d particles, %d steps: %s\n", GetParam().c_str(), 2 * NPER,
-           NSTEPS, describe(d).c_str());
+    printf("[ measured ] %d rank(s), comm %s, ghost velocities %s: %d particles, %d steps: %s; "
+           "%ld ghosts on rank 0 equal to their owners\n",
+           nprocs, mode.c_str(), ghost_vel ? "yes" : "no", 2 * NPER, NSTEPS,
+           describe(d).c_str(), nghost);
 }
 
-INSTANTIATE_TEST_SUITE_P(CommModes, KokkosVsPlain, ::testing::Values("device", "host", "no"));
+INSTANTIATE_TEST_SUITE_P(CommModes, KokkosVsPlain,
+                         ::testing::Combine(::testing::Values("device", "host", "no"),
+                                            ::testing::Bool()));
 
 /* ----------------------------------------------------------------------
    write_restart -> read_restart under /kk continues bit-identically
@@ -277,25 +388,35 @@ TEST(KokkosIntegrator, KokkosOnAllRanksMatchesPlainOnOne)
   int me, nprocs;
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
   MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  MPI_Comm self;
+  MPI_Comm_split(MPI_COMM_WORLD, me, 0, &self);
+  const std::string dfile = tmpfile("initial.data");
+  if (me == 0) {
+    Lmp l({}, self);
+    l.cmds(setup(NPER));
+    l.cmd("write_data " + dfile);
+  }
+  MPI_Barrier(MPI_COMM_WORLD);
   std::vector<double> multi;
   double natoms_min = 1e30, natoms_max = -1;
   {
     Lmp l(KK, MPI_COMM_WORLD);
-    l.cmds(setup(NPER));
+    l.cmds(setup_from_data(dfile, true));
     for (int r = 0; r < NSTEPS / 500; r++) {
       l.cmd("run 500");
       natoms_min = std::min(natoms_min, l.thermo("atoms"));
       natoms_max = std::max(natoms_max, l.thermo("atoms"));
     }
     multi = gather(l, MPI_COMM_WORLD);
+    long bad = 0;
+    EXPECT_GT(check_ghosts(l, true, &bad), 0);
+    EXPECT_EQ(bad, 0) << "ghosts whose data differ from their owner's";
   }
   EXPECT_EQ(natoms_min, 2 * NPER);
   EXPECT_EQ(natoms_max, 2 * NPER);
-  MPI_Comm self;
-  MPI_Comm_split(MPI_COMM_WORLD, me, 0, &self);
   if (me == 0) {
     Lmp l({}, self);
-    l.cmds(setup(NPER));
+    l.cmds(setup_from_data(dfile, true));
     for (int r = 0; r < NSTEPS / 500; r++) l.cmd("run 500");
     const std::vector<double> single = gather(l, self);
     const Diff d = compare(single, multi);
@@ -304,6 +425,7 @@ TEST(KokkosIntegrator, KokkosOnAllRanksMatchesPlainOnOne)
     EXPECT_LE(d.max(), 1e-12) << describe(d);
     printf("[ measured ] /kk on %d rank(s) vs plain on 1: %d particles, %d steps: %s\n", nprocs,
            2 * NPER, NSTEPS, describe(d).c_str());
+    remove(dfile.c_str());
   }
   MPI_Comm_free(&self);
 }
