@@ -10,6 +10,7 @@
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
+#include "kokkos.h"
 #include "memory_kokkos.h"
 #include "modify.h"
 
@@ -532,6 +533,10 @@ template <class DeviceType> struct PolyUnpackExchange {
 
 AtomVecPolyhedronKokkosBase::AtomVecPolyhedronKokkosBase(LAMMPS *lmp) : AtomVecKokkos(lmp)
 {
+  // e.g. a restart file written with -sf kk read without -k on
+  if (!lmp->kokkos)
+    error->all(FLERR, "atom_style polyhedron/kk requires Kokkos to be enabled (-k on); "
+                      "use atom_style polyhedron without it");
   mass_type = PER_ATOM;
   molecular = Atom::ATOMIC;
   forceclearflag = 0;
