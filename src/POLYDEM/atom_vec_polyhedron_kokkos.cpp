@@ -1209,6 +1209,21 @@ AtomVecPolyhedronKokkos::AtomVecPolyhedronKokkos(LAMMPS *lmp) :
     AtomVecPolyhedronKokkosBase(lmp), AtomVecPolyhedron(lmp), args_version(-1)
 {
   const AtomVec &plain = static_cast<AtomVecPolyhedron &>(*this);
+
+  // the device kernels above move exactly these fields (the host paths
+  // follow the lists whatever they are): a change must reach the kernels
+  const char *expected[][2] = {
+      {plain.fields_comm, "quat"},
+      {plain.fields_comm_vel, "quat omega angmom"},
+      {plain.fields_border, "radius rmass quat pshape pscale"},
+      {plain.fields_border_vel, "radius rmass quat pshape pscale omega angmom"},
+      {plain.fields_exchange, "radius rmass omega angmom quat pshape pscale"}};
+  for (auto &e : expected)
+    if (!e[0] || strcmp(e[0], e[1]) != 0)
+      AtomVecPolyhedronKokkosBase::error->all(
+          FLERR, "atom_style polyhedron/kk: atom_style polyhedron now communicates '{}' "
+                 "instead of '{}'; update the Kokkos kernels",
+          e[0] ? e[0] : "", e[1]);
   set_fields(plain);
   AtomVecPolyhedronKokkosBase::mass_type = plain.mass_type;
   AtomVecPolyhedronKokkosBase::molecular = plain.molecular;
