@@ -2,59 +2,81 @@
 #include "cgal_ref.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 #include <CGAL/intersections.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace polydem_test {
 
 using EK = CGAL::Exact_predicates_exact_constructions_kernel;
+using IK = CGAL::Exact_predicates_inexact_constructions_kernel;
 using P3 = EK::Point_3;
 using Mesh = CGAL::Surface_mesh<P3>;
 
 namespace {
 
   struct ExactHull {
-    Mesh m;
     std::vector<P3> pts;
     std::vector<EK::Triangle_3> tris;
     std::vector<EK::Segment_3> segs;
     std::vector<CGAL::Bbox_3> tbox, sbox;
-    P3 inside;    // a point strictly inside
+    std::vector<std::array<double, 4>> tplane;    // approximate planes for a safe prefilter
+    std::vector<std::array<IK::Point_3, 3>> itris;    // the same triangles, double input points
+    std::vector<std::array<double, 6>> sd;            // segment end points (double)
+    IK::Point_3 inside;    // a point strictly inside
+    double scale = 0;
   };
 
+  // hull with exact predicates on the (double) input points, then exact copies
   void build(const Pts &in, ExactHull &h)
   {
-    std::vector<P3> p;
+    std::vector<IK::Point_3> p;
     for (auto &q : in) p.emplace_back(q[0], q[1], q[2]);
-    CGAL::convex_hull_3(p.begin(), p.end(), h.m);
-    EK::FT sx = 0, sy = 0, sz = 0;
+    CGAL::Surface_mesh<IK::Point_3> m;
+    CGAL::convex_hull_3(p.begin(), p.end(), m);
+    double sx = 0, sy = 0, sz = 0;
     int n = 0;
-    for (auto v : h.m.vertices()) {
-      h.pts.push_back(h.m.point(v));
-      sx += h.m.point(v).x();
-      sy += h.m.point(v).y();
-      sz += h.m.point(v).z();
+    for (auto v : m.vertices()) {
+      const auto &q = m.point(v);
+      h.pts.emplace_back(q.x(), q.y(), q.z());
+      sx += q.x();
+      sy += q.y();
+      sz += q.z();
+      h.scale = std::max({h.scale, std::fabs(q.x()), std::fabs(q.y()), std::fabs(q.z())});
       ++n;
     }
-    h.inside = P3(sx / n, sy / n, sz / n);
-    for (auto f : h.m.faces()) {
-      std::array<P3, 3> t;
+    h.inside = IK::Point_3(sx / n, sy / n, sz / n);
+    for (auto f : m.faces()) {
+      std::array<IK::Point_3, 3> t;
       int k = 0;
-      for (auto v : CGAL::vertices_around_face(h.m.halfedge(f), h.m)) t[k++] = h.m.point(v);
-      h.tris.emplace_back(t[0], t[1], t[2]);
-      h.tbox.push_back(h.tris.back().bbox());
+      for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) t[k++] = m.point(v);
+      h.itris.push_back(t);
+      h.tris.emplace_back(P3(t[0].x(), t[0].y(), t[0].z()), P3(t[1].x(), t[1].y(), t[1].z()),
+                          P3(t[2].x(), t[2].y(), t[2].z()));
+      h.tbox.push_back(t[0].bbox() + t[1].bbox() + t[2].bbox());
+      const IK::Vector_3 nr = CGAL::cross_product(t[1] - t[0], t[2] - t[0]);
+      const double l = std::sqrt(nr.squared_length());
+      h.tplane.push_back({nr.x() / l, nr.y() / l, nr.z() / l,
+                          (nr.x() * t[0].x() + nr.y() * t[0].y() + nr.z() * t[0].z()) / l});
     }
-    for (auto e : h.m.edges()) {
-      auto he = h.m.halfedge(e);
-      h.segs.emplace_back(h.m.point(h.m.source(he)), h.m.point(h.m.target(he)));
-      h.sbox.push_back(h.segs.back().bbox());
+    for (auto e : m.edges()) {
+      auto he = m.halfedge(e);
+      const auto &a = m.point(m.source(he)), &b = m.point(m.target(he));
+      h.segs.emplace_back(P3(a.x(), a.y(), a.z()), P3(b.x(), b.y(), b.z()));
+      h.sbox.push_back(a.bbox() + b.bbox());
+      h.sd.push_back({a.x(), a.y(), a.z(), b.x(), b.y(), b.z()});
     }
   }
 
-  bool contains(const ExactHull &h, const P3 &p)
+  // closed containment of an input (double) point: exact predicates
+  bool contains(const ExactHull &h, const P3 &pe)
   {
-    for (auto &t : h.tris) {
+    const IK::Point_3 p(CGAL::to_double(pe.x()), CGAL::to_double(pe.y()), CGAL::to_double(pe.z()));
+    for (auto &t : h.itris) {
       auto in = CGAL::orientation(t[0], t[1], t[2], h.inside);
       auto o = CGAL::orientation(t[0], t[1], t[2], p);
       if (o != CGAL::COPLANAR && o != in) return false;
@@ -67,6 +89,13 @@ namespace {
     for (size_t i = 0; i < s.segs.size(); ++i)
       for (size_t j = 0; j < t.tris.size(); ++j) {
         if (!CGAL::do_overlap(s.sbox[i], t.tbox[j])) continue;
+        // safe floating-point prefilter: both end points clearly on one side
+        const auto &q = t.tplane[j];
+        const auto &e = s.sd[i];
+        const double m = 1e-9 * (t.scale + s.scale + 1.0);
+        const double s0 = q[0] * e[0] + q[1] * e[1] + q[2] * e[2] - q[3];
+        const double s1 = q[0] * e[3] + q[1] * e[4] + q[2] * e[5] - q[3];
+        if ((s0 > m && s1 > m) || (s0 < -m && s1 < -m)) continue;
         if (!CGAL::do_intersect(s.segs[i], t.tris[j])) continue;
         auto r = CGAL::intersection(s.segs[i], t.tris[j]);
         if (!r) continue;
@@ -97,7 +126,7 @@ namespace {
   bool intersection_hull(const ExactHull &A, const ExactHull &B, Mesh &out, bool &nonempty)
   {
     std::vector<P3> cand;
-    for (auto &p : A.pts)
+    for (auto &p : A.pts)    // input points are doubles: exact containment by predicates
       if (contains(B, p)) cand.push_back(p);
     for (auto &p : B.pts)
       if (contains(A, p)) cand.push_back(p);
