@@ -19,13 +19,13 @@ ComputeERotatePolyhedron::ComputeERotatePolyhedron(LAMMPS *lmp, int narg, char *
   if (narg != 3) error->all(FLERR, "Illegal compute erotate/polyhedron command: no arguments expected");
   scalar_flag = 1;
   extscalar = 1;
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "Compute erotate/polyhedron requires atom_style polyhedron");
 }
 
 void ComputeERotatePolyhedron::init()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "Compute erotate/polyhedron requires atom_style polyhedron");
 }
 

@@ -24,7 +24,7 @@ DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg) :
                             "polyhedron/vtk N file");
   if (binary || multiproc || compressed)
     error->all(FLERR, "dump polyhedron/vtk: file name must not end in .bin or .gz or contain %");
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "dump polyhedron/vtk requires atom_style polyhedron");
   size_one = NREC;
   sort_flag = 1;
@@ -35,7 +35,7 @@ DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg) :
 
 void DumpPolyhedronVTK::init_style()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "dump polyhedron/vtk requires atom_style polyhedron");
   if (!multifile && me == 0)
     error->warning(FLERR, "dump polyhedron/vtk: without '*' in the file name every snapshot "

@@ -18,7 +18,7 @@ FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     FixNVE(lmp, narg, arg), avec(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix nve/polyhedron command: no arguments expected");
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "Fix nve/polyhedron requires atom_style polyhedron");
 }
 
@@ -30,7 +30,7 @@ FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg) :
 void FixNVEPolyhedron::init()
 {
   FixNVE::init();
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "Fix nve/polyhedron requires atom_style polyhedron");
 
   double **angmom = atom->angmom, **omega = atom->omega, **quat = atom->quat;

@@ -4,7 +4,9 @@
 
 #include "polyhedron_set.h"
 
+#include "accelerator_kokkos.h"
 #include "atom.h"
+#include "atom_masks.h"
 #include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "domain.h"
@@ -43,7 +45,7 @@ void PolyhedronSet::command(int narg, char **arg)
     error->all(FLERR, "polyhedron_set command before simulation box is defined");
   if (atom->natoms == 0) error->all(FLERR, "polyhedron_set command with no atoms existing");
   if (narg < 4) error->all(FLERR, "Illegal polyhedron_set command: too few arguments");
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  auto avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "polyhedron_set requires atom_style polyhedron");
 
   // ---- selection
@@ -75,6 +77,9 @@ void PolyhedronSet::command(int narg, char **arg)
     for (int i = 0; i < nlocal; i++) select[i] = region->match(x[i][0], x[i][1], x[i][2]);
   } else
     error->all(FLERR, "polyhedron_set: unknown style '{}' (atom, type, group or region)", style);
+
+  // with KOKKOS the current values may live on the device
+  if (lmp->kokkos) atomKK->sync(Host, ALL_MASK);
 
   double **quat = atom->quat;
   double **angmom = atom->angmom;
@@ -171,6 +176,8 @@ void PolyhedronSet::command(int narg, char **arg)
     } else
       error->all(FLERR, "polyhedron_set: unknown keyword '{}'", kw);
   }
+
+  if (lmp->kokkos) atomKK->modified(Host, ALL_MASK);
 
   // keep omega consistent with angmom, orientation and inertia
   bigint count = 0;

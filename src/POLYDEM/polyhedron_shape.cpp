@@ -24,7 +24,7 @@ using namespace LAMMPS_NS;
 void PolyhedronShape::command(int narg, char **arg)
 {
   if (narg < 2) error->all(FLERR, "Illegal polyhedron_shape command: expected ID and file");
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(atom->style_match("polyhedron"));
+  auto avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "polyhedron_shape requires atom_style polyhedron");
 
   const std::string id = arg[0];

@@ -246,6 +246,18 @@ TEST(AtomStyle, BadInputErrors)
   e = l.error_of("polyhedron_shape s " + potentials() + "/cube.shape color red");
   EXPECT_NE(e.find("unknown keyword 'color'"), std::string::npos) << e;
   EXPECT_NE(l.error_of("polyhedron_shape").find("polyhedron_shape"), std::string::npos);
+  {
+    // a malformed shape file: the error names the command, the file and the line
+    const std::string bad = tmpfile("bad.shape");
+    std::ofstream(bad) << "# broken\nvertices 4\n0 0 0\n1 0\n0 1 0\n0 0 1\n";
+    e = l.error_of("polyhedron_shape s " + bad);
+    EXPECT_NE(e.find("polyhedron_shape"), std::string::npos) << e;
+    EXPECT_NE(e.find("bad.shape:4"), std::string::npos) << e;
+    std::ofstream(bad) << "vertices 4\n0 0 0\n1 0 nan\n0 1 0\n0 0 1\n";
+    e = l.error_of("polyhedron_shape s " + bad);
+    EXPECT_NE(e.find("bad.shape:3"), std::string::npos) << e;
+    std::remove(bad.c_str());
+  }
   l.cmd("polyhedron_shape cube " + potentials() + "/cube.shape");
   e = l.error_of("polyhedron_shape cube " + potentials() + "/cube.shape");
   EXPECT_NE(e.find("already defined"), std::string::npos) << e;

@@ -1,0 +1,483 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - pair_style polyhedron
+------------------------------------------------------------------------- */
+
+#include "pair_polyhedron.h"
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_dummy.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "polydem_contact_model.h"
+#include "polydem_overlap.h"
+#include "polydem_shape_template.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using MathConst::MY_PI;
+
+static constexpr int SIZE_HISTORY = 3;    // tangential displacement
+
+/* ---------------------------------------------------------------------- */
+
+PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
+    Pair(lmp), youngs(nullptr), poisson(nullptr), matset(nullptr), restitution(nullptr),
+    friction(nullptr), pairset(nullptr), overlap_warn(0.05), dt(0.0), avec(nullptr),
+    fix_dummy(nullptr), fix_history(nullptr)
+{
+  single_enable = 0;
+  restartinfo = 1;
+  no_virial_fdotr_compute = 1;
+  centroidstressflag = CENTROID_NOTAVAIL;
+  finitecutflag = 1;
+  nondefault_history_transfer = 0;
+  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+
+  ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
+
+  // placeholder so that the history fix keeps its place in the fix list
+  fix_dummy = (FixDummy *) modify->add_fix("NEIGH_HISTORY_POLY_DUMMY" +
+                                           std::to_string(instance_me) + " all DUMMY");
+}
+
+PairPolyhedron::~PairPolyhedron()
+{
+  if (copymode) return;
+  if (!fix_history)
+    modify->delete_fix("NEIGH_HISTORY_POLY_DUMMY" + std::to_string(instance_me));
+  else
+    modify->delete_fix("NEIGH_HISTORY_POLY" + std::to_string(instance_me));
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(youngs);
+    memory->destroy(poisson);
+    memory->destroy(matset);
+    memory->destroy(restitution);
+    memory->destroy(friction);
+    memory->destroy(pairset);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPolyhedron::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(youngs, n + 1, "pair:youngs");
+  memory->create(poisson, n + 1, "pair:poisson");
+  memory->create(matset, n + 1, "pair:matset");
+  memory->create(restitution, n + 1, n + 1, "pair:restitution");
+  memory->create(friction, n + 1, n + 1, "pair:friction");
+  memory->create(pairset, n + 1, n + 1, "pair:pairset");
+  for (int i = 0; i <= n; i++) {
+    youngs[i] = poisson[i] = 0.0;
+    matset[i] = 0;
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = pairset[i][j] = 0;
+      restitution[i][j] = friction[i][j] = 0.0;
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_style polyhedron [overlap/warn f]
+------------------------------------------------------------------------- */
+
+void PairPolyhedron::settings(int narg, char **arg)
+{
+  overlap_warn = 0.05;
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "overlap/warn") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "pair_style polyhedron: overlap/warn needs a value");
+      overlap_warn = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(overlap_warn > 0.0) || !(overlap_warn <= 1.0))
+        error->all(FLERR, "pair_style polyhedron: overlap/warn must be in (0, 1], got '{}'",
+                   arg[iarg + 1]);
+    } else
+      error->all(FLERR, "pair_style polyhedron: unknown keyword '{}'", arg[iarg]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J E nu e mu : material (E, nu) of the types in I and J,
+                              restitution e and friction mu of the pairs
+   pair_coeff I J e mu      : e and mu of unlike pairs (I != J) only
+------------------------------------------------------------------------- */
+
+void PairPolyhedron::coeff(int narg, char **arg)
+{
+  if (narg != 4 && narg != 6)
+    error->all(FLERR, "pair_coeff polyhedron: expected 'I J E nu e mu' or 'I J e mu', got {} "
+               "values", narg);
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  double E = 0.0, nu = 0.0;
+  int k = 2;
+  if (narg == 6) {
+    E = utils::numeric(FLERR, arg[2], false, lmp);
+    nu = utils::numeric(FLERR, arg[3], false, lmp);
+    if (!(E > 0.0) || !std::isfinite(E))
+      error->all(FLERR, "pair_coeff polyhedron: Young's modulus E must be > 0, got '{}'", arg[2]);
+    if (!(nu > -1.0 && nu < 0.5))
+      error->all(FLERR, "pair_coeff polyhedron: Poisson's ratio must be in (-1, 0.5), got '{}'",
+                 arg[3]);
+    k = 4;
+  }
+  const double e = utils::numeric(FLERR, arg[k], false, lmp);
+  const double mu = utils::numeric(FLERR, arg[k + 1], false, lmp);
+  if (!(e > 0.0 && e <= 1.0))
+    error->all(FLERR, "pair_coeff polyhedron: restitution e must be in (0, 1], got '{}'", arg[k]);
+  if (!(mu >= 0.0) || !std::isfinite(mu))
+    error->all(FLERR, "pair_coeff polyhedron: friction mu must be >= 0, got '{}'", arg[k + 1]);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      if (narg == 4 && i == j)
+        error->all(FLERR, "pair_coeff polyhedron: type {} needs its material: 'I I E nu e mu'", i);
+      if (narg == 6) {
+        youngs[i] = youngs[j] = E;
+        poisson[i] = poisson[j] = nu;
+        matset[i] = matset[j] = 1;
+      }
+      restitution[i][j] = e;
+      friction[i][j] = mu;
+      pairset[i][j] = 1;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPolyhedron::init_style()
+{
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
+  if (!avec) error->all(FLERR, "pair_style polyhedron requires atom_style polyhedron");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "pair_style polyhedron requires ghost velocities: use 'comm_modify vel yes'");
+  for (int t = 0; t < avec->ntemplates(); t++)
+    if (avec->shape(t).nfaces() > 128)
+      error->all(FLERR, "pair_style polyhedron: shape '{}' has {} faces, more than 128",
+                 avec->shape_id(t), avec->shape(t).nfaces());
+
+  int irequest = neighbor->request(this, instance_me);
+  neighbor->requests[irequest]->size = 1;
+  neighbor->requests[irequest]->history = 1;
+
+  dt = update->dt;
+
+  if (fix_history == nullptr) {
+    auto cmd = fmt::format("NEIGH_HISTORY_POLY{} all NEIGH_HISTORY {}", instance_me, SIZE_HISTORY);
+    fix_history = (FixNeighHistory *) modify->replace_fix(
+        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(instance_me), cmd, 1);
+    fix_history->pair = this;
+  }
+  int ifix = modify->find_fix("NEIGH_HISTORY_POLY" + std::to_string(instance_me));
+  if (ifix < 0) error->all(FLERR, "pair_style polyhedron: history fix not found");
+  fix_history = (FixNeighHistory *) modify->fix[ifix];
+
+  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+  check_timestep();
+}
+
+/* ----------------------------------------------------------------------
+   unlike pairs without explicit e, mu: geometric means of the like pairs.
+   Cutoff: twice the largest bounding radius present (particles of any
+   size interact; LAMMPS's size neighbor list uses radius_i + radius_j).
+------------------------------------------------------------------------- */
+
+double PairPolyhedron::init_one(int i, int j)
+{
+  if (!matset[i] || !matset[j])
+    error->all(FLERR, "pair_coeff polyhedron: no material (E nu e mu) for type {}",
+               matset[i] ? j : i);
+  if (!pairset[i][j]) {
+    restitution[i][j] = sqrt(restitution[i][i] * restitution[j][j]);
+    friction[i][j] = sqrt(friction[i][i] * friction[j][j]);
+  }
+  restitution[j][i] = restitution[i][j];
+  friction[j][i] = friction[i][j];
+
+  double rmax = 0.0;
+  for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
+  double all;
+  MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return 2.0 * all;
+}
+
+/* ----------------------------------------------------------------------
+   printed estimate of the contact time: a like pair of the stiffest, lightest
+   particle with a contact patch of area R^2 (R: volume-equivalent radius),
+   k_n = K R^2 = 2 E R (Eq. 13), t_c = pi sqrt(m_eff / k_n)
+------------------------------------------------------------------------- */
+
+void PairPolyhedron::check_timestep()
+{
+  double tc = 1e300;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const double V = avec->shape(atom->pshape[i]).volume();
+    const double s = atom->pscale[i];
+    const double R = s * cbrt(3.0 * V / (4.0 * MY_PI));
+    const double kn = 2.0 * youngs[atom->type[i]] * R;
+    tc = MIN(tc, MY_PI * sqrt(0.5 * atom->rmass[i] / (kn * force->ftm2v)));
+  }
+  double all;
+  MPI_Allreduce(&tc, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (all >= 1e300 || comm->me != 0) return;
+  utils::logmesg(lmp, "pair polyhedron: estimated contact time {:.4g}, timestep {:.4g} = t_c/{:.3g}\n",
+                 all, update->dt, all / update->dt);
+  if (update->dt > all / 10.0)
+    error->warning(FLERR, "pair polyhedron: timestep {:.4g} exceeds t_c/10 = {:.4g} (estimated "
+                   "contact time {:.4g}): contacts will be poorly resolved",
+                   update->dt, all / 10.0, all);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPolyhedron::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  const bool shearupdate = !update->setupflag;
+  dt = update->dt;
+
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **omega = atom->omega, **torque = atom->torque, **quat = atom->quat;
+  double *radius = atom->radius, *rmass = atom->rmass, *pscale = atom->pscale;
+  int *pshape = atom->pshape, *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+
+  const int inum = list->inum;
+  int *ilist = list->ilist, *numneigh = list->numneigh, **firstneigh = list->firstneigh;
+  int **firsttouch = fix_history->firstflag;
+  double **firstshear = fix_history->firstvalue;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    int *touch = firsttouch[i];
+    double *allshear = firstshear[i];
+    int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    const auto vi = avec->shape(pshape[i]).view();
+    polydem::Pose<double> pi;
+    pi.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
+    pi.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
+    pi.s = pscale[i];
+    const auto A = polydem::make_posed(vi, pi);
+
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      double *shear = &allshear[SIZE_HISTORY * jj];
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1],
+                   delz = x[i][2] - x[j][2];
+      const double radsum = radius[i] + radius[j];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      auto no_contact = [&]() {
+        touch[jj] = 0;
+        shear[0] = shear[1] = shear[2] = 0.0;
+      };
+      if (rsq >= radsum * radsum) {
+        no_contact();
+        continue;
+      }
+      const auto vj = avec->shape(pshape[j]).view();
+      polydem::Pose<double> pj;
+      pj.x = polydem::make_vec3(x[j][0], x[j][1], x[j][2]);
+      pj.q = polydem::make_quat(quat[j][0], quat[j][1], quat[j][2], quat[j][3]);
+      pj.s = pscale[j];
+      const auto B = polydem::make_posed(vj, pj);
+
+      const auto g = polydem::gjk_intersect(A, B);
+      if (g.status == polydem::STATUS_SEPARATED) {
+        no_contact();
+        continue;
+      }
+      if (g.status != polydem::STATUS_OK) local_counts[CNT_NOCONV] += 1.0;
+      const auto ov = polydem::polyhedron_overlap(A, B, *ws);
+      if (ov.status != polydem::STATUS_OK) {
+        if (ov.status == polydem::STATUS_OVERFLOW) local_counts[CNT_OVERFLOW] += 1.0;
+        else if (ov.status == polydem::STATUS_DEGENERATE) local_counts[CNT_DEGENERATE] += 1.0;
+        no_contact();
+        continue;
+      }
+      touch[jj] = 1;
+      local_counts[CNT_CONTACTS] += 1.0;
+      const double si = pscale[i], sj = pscale[j];
+      const double Vi = vi.volume * si * si * si, Vj = vj.volume * sj * sj * sj;
+      if (ov.volume > overlap_warn * MIN(Vi, Vj)) local_counts[CNT_BIGOVERLAP] += 1.0;
+
+      // material, Eqs. 13, 15, 19, 20 (R: volume-equivalent radii)
+      const int itype = type[i], jtype = type[j];
+      const double Ri = cbrt(3.0 * Vi / (4.0 * MY_PI)), Rj = cbrt(3.0 * Vj / (4.0 * MY_PI));
+      polydem::ContactParams<double> p;
+      p.K = youngs[itype] / Ri + youngs[jtype] / Rj;
+      p.Kt = youngs[itype] / (2.0 * (1.0 + poisson[itype]) * Ri) +
+          youngs[jtype] / (2.0 * (1.0 + poisson[jtype]) * Rj);
+      p.damp = polydem::damping_factor(restitution[itype][jtype]);
+      p.mu = friction[itype][jtype];
+      p.meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      p.dt = shearupdate ? dt : 0.0;
+
+      polydem::ContactGeometry<double> geo;
+      geo.volume = ov.volume;
+      geo.area = ov.area;
+      geo.normal = ov.normal;
+      geo.centroid = ov.centroid;
+      geo.S_A = ov.S_A;
+      geo.M_A = ov.M_A;
+      geo.M_B = ov.M_B;
+      double hist[3] = {shear[0], shear[1], shear[2]};
+      const auto cf = polydem::contact_force(
+          geo, p, pi.x, pj.x, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
+          polydem::make_vec3(v[j][0], v[j][1], v[j][2]),
+          polydem::make_vec3(omega[i][0], omega[i][1], omega[i][2]),
+          polydem::make_vec3(omega[j][0], omega[j][1], omega[j][2]), hist);
+      if (shearupdate) {
+        shear[0] = hist[0];
+        shear[1] = hist[1];
+        shear[2] = hist[2];
+      }
+
+      f[i][0] += cf.F_A.x;
+      f[i][1] += cf.F_A.y;
+      f[i][2] += cf.F_A.z;
+      torque[i][0] += cf.tau_A.x;
+      torque[i][1] += cf.tau_A.y;
+      torque[i][2] += cf.tau_A.z;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= cf.F_A.x;
+        f[j][1] -= cf.F_A.y;
+        f[j][2] -= cf.F_A.z;
+        torque[j][0] += cf.tau_B.x;
+        torque[j][1] += cf.tau_B.y;
+        torque[j][2] += cf.tau_B.z;
+      }
+      if (evflag)
+        ev_tally_xyz(i, j, nlocal, newton_pair, cf.energy, 0.0, cf.F_A.x, cf.F_A.y, cf.F_A.z,
+                     delx, dely, delz);
+    }
+  }
+  if (neighbor->ago == 0) report_counters(false);
+}
+
+/* ----------------------------------------------------------------------
+   kernel failures and large overlaps are counted on every rank and reported
+   (collectively, at reneighboring) as warnings with counts, never silently
+------------------------------------------------------------------------- */
+
+void PairPolyhedron::report_counters(bool /*final*/)
+{
+  MPI_Allreduce(local_counts, counters, NCOUNT, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return;
+  const char *what[NCOUNT] = {"overlap workspace overflows (contact skipped)",
+                              "degenerate contacts (NaN or zero size; contact skipped)",
+                              "GJK non-convergences (overlap computed anyway)",
+                              "overlaps beyond overlap/warn of the smaller particle volume",
+                              nullptr};
+  for (int k = 0; k < CNT_CONTACTS; k++)
+    if (counters[k] > reported[k]) {
+      error->warning(FLERR, "pair polyhedron: {:.0f} {} by step {}", counters[k], what[k],
+                     update->ntimestep);
+      reported[k] = counters[k];
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPolyhedron::write_restart_settings(FILE *fp)
+{
+  fwrite(&overlap_warn, sizeof(double), 1, fp);
+}
+
+void PairPolyhedron::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
+}
+
+void PairPolyhedron::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  const int n = atom->ntypes;
+  for (int i = 1; i <= n; i++) {
+    fwrite(&matset[i], sizeof(int), 1, fp);
+    fwrite(&youngs[i], sizeof(double), 1, fp);
+    fwrite(&poisson[i], sizeof(double), 1, fp);
+    for (int j = i; j <= n; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      fwrite(&pairset[i][j], sizeof(int), 1, fp);
+      fwrite(&restitution[i][j], sizeof(double), 1, fp);
+      fwrite(&friction[i][j], sizeof(double), 1, fp);
+    }
+  }
+}
+
+void PairPolyhedron::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int n = atom->ntypes, me = comm->me;
+  for (int i = 1; i <= n; i++) {
+    if (me == 0) {
+      utils::sfread(FLERR, &matset[i], sizeof(int), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &youngs[i], sizeof(double), 1, fp, nullptr, error);
+      utils::sfread(FLERR, &poisson[i], sizeof(double), 1, fp, nullptr, error);
+    }
+    MPI_Bcast(&matset[i], 1, MPI_INT, 0, world);
+    MPI_Bcast(&youngs[i], 1, MPI_DOUBLE, 0, world);
+    MPI_Bcast(&poisson[i], 1, MPI_DOUBLE, 0, world);
+    for (int j = i; j <= n; j++) {
+      if (me == 0) {
+        utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &pairset[i][j], sizeof(int), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &restitution[i][j], sizeof(double), 1, fp, nullptr, error);
+        utils::sfread(FLERR, &friction[i][j], sizeof(double), 1, fp, nullptr, error);
+      }
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      MPI_Bcast(&pairset[i][j], 1, MPI_INT, 0, world);
+      MPI_Bcast(&restitution[i][j], 1, MPI_DOUBLE, 0, world);
+      MPI_Bcast(&friction[i][j], 1, MPI_DOUBLE, 0, world);
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void *PairPolyhedron::extract(const char *str, int &dim)
+{
+  dim = 2;
+  if (strcmp(str, "restitution") == 0) return (void *) restitution;
+  if (strcmp(str, "friction") == 0) return (void *) friction;
+  dim = 1;
+  if (strcmp(str, "youngs") == 0) return (void *) youngs;
+  if (strcmp(str, "poisson") == 0) return (void *) poisson;
+  if (strcmp(str, "counters") == 0) return (void *) counters;
+  return nullptr;
+}
+
+double PairPolyhedron::memory_usage()
+{
+  return Pair::memory_usage() + (double) sizeof(polydem::OverlapWorkspace<double, 128>);
+}

@@ -1,0 +1,71 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - pair_style polyhedron: energy-conserving overlap-volume contact
+   between rigid convex polyhedra (polyhedral seed §2.2-2.5): bounding-sphere
+   broad phase on LAMMPS's neighbor list, GJK, overlap polyhedron by dual
+   Quickhull, Feng's normal force from W(V), damping, Cundall-Strack friction
+   with history. Physics in polydem_overlap.h and polydem_contact_model.h.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(polyhedron,PairPolyhedron);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_POLYHEDRON_H
+#define LMP_PAIR_POLYHEDRON_H
+
+#include "pair.h"
+
+#include <memory>
+
+namespace polydem {
+template <typename T, int MF> struct OverlapWorkspace;
+}
+
+namespace LAMMPS_NS {
+
+class PairPolyhedron : public Pair {
+ public:
+  PairPolyhedron(class LAMMPS *);
+  ~PairPolyhedron() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void *extract(const char *, int &) override;
+  double memory_usage() override;
+
+  // counters since the start of the run (global after report_counters)
+  enum { CNT_OVERFLOW, CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, NCOUNT };
+  double counters[NCOUNT];
+
+ protected:
+  double *youngs, *poisson;    // per type
+  int *matset;                 // per type: material given
+  double **restitution, **friction;
+  int **pairset;               // explicit e, mu for an unlike pair
+  double overlap_warn;         // warn for V > overlap_warn * smaller particle volume
+  double dt;
+
+  class AtomVecPolyhedron *avec;
+  class FixDummy *fix_dummy;
+  class FixNeighHistory *fix_history;
+  std::unique_ptr<polydem::OverlapWorkspace<double, 128>> ws;
+  double local_counts[NCOUNT];
+  double reported[NCOUNT];
+
+  void allocate();
+  void report_counters(bool final);
+  void check_timestep();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,144 @@
+// pair_style polyhedron through LAMMPS (issue 4, first acceptance items):
+// energy conservation of elastic collisions and its dt^2 convergence,
+// momentum conservation, bad pair_coeff input.
+
+#include "polydem_lmp.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+using polydem_test::Lmp;
+using polydem_test::potentials;
+
+namespace {
+
+std::string num(double x)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.17g", x);
+  return buf;
+}
+
+struct Collision {
+  double max_rel_energy_error;
+  double max_rel_momentum_error;
+  double min_pe_seen;    // > 0 means the particles did touch
+  double max_pe;
+  double contact_time;    // time with W > 0
+  double final_rel_energy_error;    // after the particles separated
+};
+
+// Two dodecahedra (edge 1 mm) approach at 0.4 m/s each, offset (oblique) and
+// spinning; elastic (e = 1) and frictionless (mu = 0).
+Collision collide(double dt, long steps, const std::string &shape = "dodecahedron.shape",
+                  double scale = 0.001)
+{
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.02 0.02 -0.02 0.02 -0.02 0.02",
+          "create_box 1 box", "polyhedron_shape s " + potentials() + "/" + shape,
+          "create_atoms 1 single -0.002 0.0 0.0", "create_atoms 1 single 0.002 0.0007 0.0003",
+          "polyhedron_set group all scale " + num(scale) + " density 2500",
+          "polyhedron_set atom 1 quat 1 2 3 30 omega 30 -20 50",
+          "polyhedron_set atom 2 quat -1 0.5 2 70 omega -40 10 25",
+          "velocity all set 0 0 0", "set atom 1 vx 0.4", "set atom 2 vx -0.4",
+          "pair_style polyhedron", "pair_coeff * * 1.0e7 0.3 1.0 0.0", "neighbor 0.0005 bin",
+          "neigh_modify every 1 delay 0 check yes", "fix 1 all nve/polyhedron",
+          "compute kt all ke", "compute er all erotate/polyhedron", "thermo 10",
+          "thermo_style custom step pe", "timestep " + num(dt), "run 0"});
+  auto energy = [&]() { return l.thermo("c_kt") + l.thermo("c_er") + l.thermo("pe"); };
+  auto momentum = [&](double *p) {
+    p[0] = p[1] = p[2] = 0.0;
+    auto *a = l.lmp->atom;
+    for (int i = 0; i < a->nlocal; i++)
+      for (int k = 0; k < 3; k++) p[k] += a->rmass[i] * a->v[i][k];
+  };
+  const double e0 = energy();
+  double p0[3];
+  momentum(p0);
+  const double pscale = l.lmp->atom->rmass[0] * 0.4;
+  Collision c{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  const long chunk = 10;
+  for (long s = 0; s < steps; s += chunk) {
+    l.cmd("run " + std::to_string(chunk) + " pre no post no");
+    const double e = energy();
+    c.max_rel_energy_error = std::fmax(c.max_rel_energy_error, std::fabs(e - e0) / e0);
+    c.final_rel_energy_error = std::fabs(e - e0) / e0;
+    const double pe = l.thermo("pe");
+    c.max_pe = std::fmax(c.max_pe, pe);
+    if (pe > 0.0) c.contact_time += chunk * dt;
+    double p[3];
+    momentum(p);
+    for (int k = 0; k < 3; k++)
+      c.max_rel_momentum_error =
+          std::fmax(c.max_rel_momentum_error, std::fabs(p[k] - p0[k]) / pscale);
+  }
+  return c;
+}
+
+}    // namespace
+
+// Elastic oblique collision with spin: total energy (translational +
+// rotational + W(V)) is conserved across the collision, and its deviation
+// during the contact falls as dt^2 (Feng's force is the exact gradient of
+// W(V); the integrator is symplectic). The contact lasts t_c = 2.75e-4 s
+// (measured below); dt = t_c/200, t_c/400, t_c/800.
+TEST(PairPolyhedron, ElasticCollisionConservesEnergy)
+{
+  const double tc = 2.75e-4;
+  const double T = 0.006;    // approach (2 ms), contact, separation
+  const Collision c1 = collide(tc / 200, (long) (T / (tc / 200)));
+  const Collision c2 = collide(tc / 400, (long) (T / (tc / 400)));
+  const Collision c3 = collide(tc / 800, (long) (T / (tc / 800)));
+  ASSERT_GT(c1.max_pe, 0.0) << "the particles never touched";
+  EXPECT_EQ(c1.final_rel_energy_error, c1.final_rel_energy_error);    // not NaN
+  std::printf("contact time %.3g s; max energy deviation during contact: dt=t_c/200 %.3g, "
+              "/400 %.3g, /800 %.3g; after separation %.3g %.3g %.3g; max W %.3g J; "
+              "momentum error %.3g\n",
+              c1.contact_time, c1.max_rel_energy_error, c2.max_rel_energy_error,
+              c3.max_rel_energy_error, c1.final_rel_energy_error, c2.final_rel_energy_error,
+              c3.final_rel_energy_error, c1.max_pe, c1.max_rel_momentum_error);
+  EXPECT_NEAR(c1.contact_time / tc, 1.0, 0.1);
+  // before vs after the collision, at dt = t_c/200
+  EXPECT_LE(c1.final_rel_energy_error, 1e-6);
+  // second order during the contact
+  EXPECT_NEAR(std::log2(c1.max_rel_energy_error / c2.max_rel_energy_error), 2.0, 0.3);
+  EXPECT_NEAR(std::log2(c2.max_rel_energy_error / c3.max_rel_energy_error), 2.0, 0.3);
+  // Newton's third law: total momentum to round-off
+  EXPECT_LE(c1.max_rel_momentum_error, 1e-12);
+}
+
+TEST(PairPolyhedron, BadCoefficients)
+{
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
+          "create_box 2 box", "pair_style polyhedron"});
+  auto has = [&](const std::string &cmd, const std::string &what) {
+    const std::string e = l.error_of(cmd);
+    EXPECT_NE(e.find(what), std::string::npos) << cmd << " -> " << e;
+  };
+  has("pair_coeff * * 1e7 0.3 0.9", "expected 'I J E nu e mu'");
+  has("pair_coeff * * 1e7 0.3 0.9 0.5 7", "expected 'I J E nu e mu'");
+  has("pair_coeff * * -1e7 0.3 0.9 0.5", "Young's modulus E must be > 0");
+  has("pair_coeff * * 0 0.3 0.9 0.5", "Young's modulus E must be > 0");
+  has("pair_coeff * * 1e7 0.5 0.9 0.5", "Poisson's ratio must be in (-1, 0.5)");
+  has("pair_coeff * * 1e7 -1.0 0.9 0.5", "Poisson's ratio must be in (-1, 0.5)");
+  has("pair_coeff * * 1e7 0.3 0.0 0.5", "restitution e must be in (0, 1]");
+  has("pair_coeff * * 1e7 0.3 1.1 0.5", "restitution e must be in (0, 1]");
+  has("pair_coeff * * 1e7 0.3 0.9 -0.1", "friction mu must be >= 0");
+  has("pair_coeff 1 1 0.9 0.5", "needs its material");
+  has("pair_style polyhedron overlap/warn 2", "overlap/warn must be in (0, 1]");
+  has("pair_style polyhedron bogus 1", "unknown keyword 'bogus'");
+  {
+    Lmp a;
+    a.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
+            "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
+            "create_atoms 1 single 0.5 0.5 0.5", "polyhedron_set atom 1 scale 0.01",
+            "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.9 0.5",
+            "fix 1 all nve/polyhedron"});
+    const std::string e = a.error_of("run 1");
+    EXPECT_NE(e.find("comm_modify vel yes"), std::string::npos) << e;
+  }
+}
