@@ -213,13 +213,19 @@ template <int MF> void gjk_then_overlap(benchmark::State &st, PairSet &ps)
 
 }    // namespace
 
+void overlap_ws12(benchmark::State &st, PairSet &ps) { overlap_full<12>(st, ps); }
+void overlap_ws22(benchmark::State &st, PairSet &ps) { overlap_full<22>(st, ps); }
+void overlap_wsmax(benchmark::State &st, PairSet &ps) { overlap_full<MAX_TEMPLATE_FACES>(st, ps); }
+void gjk_overlap_ws12(benchmark::State &st, PairSet &ps) { gjk_then_overlap<12>(st, ps); }
+void gjk_overlap_ws22(benchmark::State &st, PairSet &ps) { gjk_then_overlap<22>(st, ps); }
+
 BENCHMARK_CAPTURE(gjk_only, dodecahedron, dodeca_pairs());
-BENCHMARK_CAPTURE(overlap_full<12>, dodecahedron_ws12, dodeca_pairs());
-BENCHMARK_CAPTURE(overlap_full<MAX_TEMPLATE_FACES>, dodecahedron_wsmax, dodeca_pairs());
-BENCHMARK_CAPTURE(gjk_then_overlap<12>, dodecahedron_ws12, dodeca_pairs());
+BENCHMARK_CAPTURE(overlap_ws12, dodecahedron, dodeca_pairs());
+BENCHMARK_CAPTURE(overlap_wsmax, dodecahedron, dodeca_pairs());
+BENCHMARK_CAPTURE(gjk_overlap_ws12, dodecahedron, dodeca_pairs());
 BENCHMARK_CAPTURE(gjk_only, cylinder42, cyl_pairs());
-BENCHMARK_CAPTURE(overlap_full<22>, cylinder42_ws22, cyl_pairs());
-BENCHMARK_CAPTURE(overlap_full<MAX_TEMPLATE_FACES>, cylinder42_wsmax, cyl_pairs());
-BENCHMARK_CAPTURE(gjk_then_overlap<22>, cylinder42_ws22, cyl_pairs());
+BENCHMARK_CAPTURE(overlap_ws22, cylinder42, cyl_pairs());
+BENCHMARK_CAPTURE(overlap_wsmax, cylinder42, cyl_pairs());
+BENCHMARK_CAPTURE(gjk_overlap_ws22, cylinder42, cyl_pairs());
 
 BENCHMARK_MAIN();

@@ -83,6 +83,24 @@ namespace overlap_detail {
       pl[4 * f + 3] = a.s * q[3] + dot(n, xo);
     }
   }
+  // false if the posed shape o lies inside n . (p - xs) <= h - tol: the plane
+  // cannot bound the overlap with o and may be dropped
+  template <typename T>
+  POLYDEM_FN bool plane_cuts(const PosedShape<T> &o, const T *q, const Vec3<T> &xs, T tol)
+  {
+    const Vec3<T> n = make_vec3(q[0], q[1], q[2]);
+    const T c = dot(n, o.x - xs);
+    const T lim = q[3] - tol;
+    if (c + posed_radius(o) <= lim) return false;    // bounding sphere inside
+    const Vec3<T> nb = matTvec(o.R, n);
+    const T *v = o.view->verts;
+    T m = nb.x * v[0] + nb.y * v[1] + nb.z * v[2];
+    for (int i = 1; i < o.view->nverts; ++i) {
+      const T d = nb.x * v[3 * i] + nb.y * v[3 * i + 1] + nb.z * v[3 * i + 2];
+      m = d > m ? d : m;
+    }
+    return c + o.s * m > lim;
+  }
 }    // namespace overlap_detail
 
 template <typename T> POLYDEM_FN void overlap_result_zero(OverlapResult<T> &r, int status)
@@ -132,10 +150,30 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   T *pl = w.pl + 4 * NB;
   overlap_detail::posed_planes(a, xs, pl);
   overlap_detail::posed_planes(b, xs, pl + 4 * fa);
+  // drop the planes of B that do not cut A: A n B' = A n B exactly. (Dropping
+  // on both sides at once would not be exact: B' is larger than B.)
+  int ka = 0, kb = 0;
+  for (int i = 0; i < fa + fb; ++i) {
+    const T *q = pl + 4 * i;
+    if (i >= fa && !overlap_detail::plane_cuts(a, q, xs, tol)) continue;
+    T *d = pl + 4 * (ka + kb);    // compaction: d <= q
+    d[0] = q[0];
+    d[1] = q[1];
+    d[2] = q[2];
+    d[3] = q[3];
+    if (i < fa)
+      ++ka;
+    else
+      ++kb;
+  }
+  if (ka + kb < 4) {    // cannot bound a solid: the shapes are apart
+    overlap_result_zero(res, STATUS_SEPARATED);
+    return res;
+  }
   // polarisation point: Chebyshev centre of both half-space systems
   Vec3<T> xc;
   T r;
-  chebyshev_centre(pl, fa + fb, xc, r);
+  chebyshev_centre(pl, ka + kb, xc, r);
   if (!(r == r)) {
     overlap_result_zero(res, STATUS_DEGENERATE);
     return res;
@@ -149,13 +187,13 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   // shift to x_o (seed Eq. 4: every h > 0) and set owners; B planes that
   // coincide with an A plane are merged into it (owner both)
   int np = NB;
-  for (int i = 0; i < fa + fb; ++i) {
+  for (int i = 0; i < ka + kb; ++i) {
     T *q = pl + 4 * i;
     const T h = q[3] - (q[0] * xc.x + q[1] * xc.y + q[2] * xc.z);
-    unsigned char own = i < fa ? OWNER_A : OWNER_B;
-    if (i >= fa) {
+    unsigned char own = i < ka ? OWNER_A : OWNER_B;
+    if (i >= ka) {
       bool merged = false;
-      for (int j = NB; j < NB + fa && !merged; ++j) {
+      for (int j = NB; j < NB + ka && !merged; ++j) {
         const T *p = w.pl + 4 * j;
         const T dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
         if (dx * dx + dy * dy + dz * dz <= T(256) * eps * eps && fabs(p[3] - h) <= tol) {
