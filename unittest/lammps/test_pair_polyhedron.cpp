@@ -110,6 +110,49 @@ TEST(PairPolyhedron, ElasticCollisionConservesEnergy)
   EXPECT_LE(c1.max_rel_momentum_error, 1e-12);
 }
 
+// Two aligned cubes (edge a) overlapping face to face by delta, offset by dy
+// sideways. The overlap is the box a (a-dy) delta. A's boundary inside B is
+// the patch A = a (a-dy) of its +x face and the strip a delta of its +y face
+// (the z faces are coplanar with B's and cancel), so the exact gradient is
+// S_A = (A, a delta, 0), and with W' = K V^(1/3), K = 2E/R, R = a (3/4pi)^(1/3):
+//   F_A = -W' S_A (Eq. 12-13 along x, plus the lateral strip term),
+//   tau_z(A) = tau_z(B) = W' (A dy/2 - a delta (a - delta)/2),
+//   W = 3/4 K V^(4/3).
+TEST(PairPolyhedron, FaceToFaceCubesMatchAnalytic)
+{
+  const double a = 0.01, delta = 2e-4, dy = 3e-3, E = 5e7;
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
+          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
+          "create_atoms 1 single 0 0 0",
+          "create_atoms 1 single " + num(a - delta) + " " + num(dy) + " 0",
+          "polyhedron_set group all scale " + num(a) + " density 2000",
+          "pair_style polyhedron", "pair_coeff * * " + num(E) + " 0.3 1.0 0.0",
+          "neighbor 0.001 bin", "fix 1 all nve/polyhedron", "thermo_style custom step pe",
+          "run 0"});
+  const double A = a * (a - dy), V = A * delta;
+  const double R = a * std::cbrt(3.0 / (4.0 * M_PI)), K = 2.0 * E / R;
+  const double Wp = K * std::cbrt(V);
+  const double Fx = Wp * A, Fy = Wp * a * delta;
+  const double tz = Wp * (A * dy / 2.0 - a * delta * (a - delta) / 2.0);
+  auto *at = l.lmp->atom;
+  const int i = at->map(1), j = at->map(2);
+  EXPECT_NEAR(at->f[i][0], -Fx, 1e-10 * Fx);
+  EXPECT_NEAR(at->f[j][0], Fx, 1e-10 * Fx);
+  EXPECT_NEAR(at->f[i][1], -Fy, 1e-9 * Fx);
+  EXPECT_NEAR(at->f[j][1], Fy, 1e-9 * Fx);
+  EXPECT_NEAR(at->f[i][2], 0.0, 1e-10 * Fx);
+  EXPECT_NEAR(at->f[j][2], 0.0, 1e-10 * Fx);
+  EXPECT_NEAR(at->torque[i][2], tz, 1e-9 * Fx * a);
+  EXPECT_NEAR(at->torque[j][2], tz, 1e-9 * Fx * a);
+  for (int k = 0; k < 2; k++) {
+    EXPECT_NEAR(at->torque[i][k], 0.0, 1e-9 * Fx * a);
+    EXPECT_NEAR(at->torque[j][k], 0.0, 1e-9 * Fx * a);
+  }
+  EXPECT_NEAR(l.thermo("pe"), 0.75 * K * std::pow(V, 4.0 / 3.0), 1e-10 * Fx * delta);
+}
+
 TEST(PairPolyhedron, BadCoefficients)
 {
   Lmp l;
