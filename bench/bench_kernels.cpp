@@ -143,9 +143,9 @@ PairSet *make_pairs(Shape s, int n)
     for (int it = 0; it < 60; ++it) {
       const double mid = 0.5 * (lo + hi);
       pb.x = mid * d;
-      const double v = polyhedron_overlap(make_posed(ps->shape.view, pa),
-                                          make_posed(ps->shape.view, pb), ws)
-                           .volume;
+      const double v =
+          polyhedron_overlap(make_posed(ps->shape.view, pa), make_posed(ps->shape.view, pb), ws)
+              .volume;
       (v > target ? lo : hi) = mid;
     }
     pb.x = lo * d;
@@ -213,11 +213,26 @@ template <int MF> void gjk_then_overlap(benchmark::State &st, PairSet &ps)
 
 }    // namespace
 
-void overlap_ws12(benchmark::State &st, PairSet &ps) { overlap_full<12>(st, ps); }
-void overlap_ws22(benchmark::State &st, PairSet &ps) { overlap_full<22>(st, ps); }
-void overlap_wsmax(benchmark::State &st, PairSet &ps) { overlap_full<MAX_TEMPLATE_FACES>(st, ps); }
-void gjk_overlap_ws12(benchmark::State &st, PairSet &ps) { gjk_then_overlap<12>(st, ps); }
-void gjk_overlap_ws22(benchmark::State &st, PairSet &ps) { gjk_then_overlap<22>(st, ps); }
+void overlap_ws12(benchmark::State &st, PairSet &ps)
+{
+  overlap_full<12>(st, ps);
+}
+void overlap_ws22(benchmark::State &st, PairSet &ps)
+{
+  overlap_full<22>(st, ps);
+}
+void overlap_wsmax(benchmark::State &st, PairSet &ps)
+{
+  overlap_full<MAX_TEMPLATE_FACES>(st, ps);
+}
+void gjk_overlap_ws12(benchmark::State &st, PairSet &ps)
+{
+  gjk_then_overlap<12>(st, ps);
+}
+void gjk_overlap_ws22(benchmark::State &st, PairSet &ps)
+{
+  gjk_then_overlap<22>(st, ps);
+}
 
 BENCHMARK_CAPTURE(gjk_only, dodecahedron, dodeca_pairs());
 BENCHMARK_CAPTURE(overlap_ws12, dodecahedron, dodeca_pairs());

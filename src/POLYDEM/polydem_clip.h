@@ -121,9 +121,8 @@ namespace clip_detail {
   }
 }    // namespace clip_detail
 
-template <typename T, int MF, int ME>
-POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri,
-                                             ClipWorkspace<T, MF, ME> &ws)
+template <typename T, int MF, int ME> POLYDEM_FN ClipResult<T>
+polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspace<T, MF, ME> &ws)
 {
   ClipResult<T> res;
   clip_result_zero(res, STATUS_OK);
@@ -151,10 +150,14 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
   T mu = T(0), mv = T(0);
   for (int k = 0; k < sv.nedges; ++k) {
     const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
-    const Vec3<T> pi = a.x + a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
-                                                           sv.verts[3 * i + 2])) - t0;
-    const Vec3<T> pj = a.x + a.s * matvec(a.R, make_vec3(sv.verts[3 * j], sv.verts[3 * j + 1],
-                                                           sv.verts[3 * j + 2])) - t0;
+    const Vec3<T> pi =
+        a.x +
+        a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1], sv.verts[3 * i + 2])) -
+        t0;
+    const Vec3<T> pj =
+        a.x +
+        a.s * matvec(a.R, make_vec3(sv.verts[3 * j], sv.verts[3 * j + 1], sv.verts[3 * j + 2])) -
+        t0;
     const T si = dot(nw, pi), sj = dot(nw, pj);
     if ((si < T(0)) == (sj < T(0))) continue;
     const T t = si / (si - sj);

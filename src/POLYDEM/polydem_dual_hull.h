@@ -47,13 +47,13 @@ template <typename T, int MaxPlanes> struct DualHullWorkspace {
   short conflict[MAXP];
   T cviol[MAXP];
   // triangles = primal vertices
-  short tc[MAXT][3];     // plane indices (dual vertices)
-  short tadj[MAXT][3];   // neighbour across edge (tc[k], tc[k+1])
-  Vec3<T> P[MAXT];       // unpolarised primal vertex (seed Eq. 8)
-  T tviol[MAXT];         // violation of the current apex plane
-  int tstamp[MAXT];      // iteration at which tviol was computed
+  short tc[MAXT][3];             // plane indices (dual vertices)
+  short tadj[MAXT][3];           // neighbour across edge (tc[k], tc[k+1])
+  Vec3<T> P[MAXT];               // unpolarised primal vertex (seed Eq. 8)
+  T tviol[MAXT];                 // violation of the current apex plane
+  int tstamp[MAXT];              // iteration at which tviol was computed
   unsigned char tstate[MAXT];    // 0 free, 1 alive, 2 visible
-  int ntslots;           // high-water mark of used slots
+  int ntslots;                   // high-water mark of used slots
   short freelist[MAXT];
   int nfree;
   // per-iteration scratch
@@ -66,13 +66,13 @@ template <typename T, int MaxPlanes> struct DualHullWorkspace {
 
 // Integrals over the intersection polyhedron (coordinates centred on x_o).
 template <typename T> struct HullIntegrals {
-  T volume;            // seed Eq. 9
-  Vec3<T> vmoment;     // int p dV (centroid = vmoment / volume)
-  Vec3<T> S[2];        // int n dA over faces owned by A (0) / B (1)
-  Vec3<T> M[2];        // int (p - ref_k) x n dA over those faces
-  T area[2];           // scalar area of those faces
-  Vec3<T> amoment[2];  // int p dA over those faces
-  int nverts;          // primal vertices (= dual triangles)
+  T volume;              // seed Eq. 9
+  Vec3<T> vmoment;       // int p dV (centroid = vmoment / volume)
+  Vec3<T> S[2];          // int n dA over faces owned by A (0) / B (1)
+  Vec3<T> M[2];          // int (p - ref_k) x n dA over those faces
+  T area[2];             // scalar area of those faces
+  Vec3<T> amoment[2];    // int p dA over those faces
+  int nverts;            // primal vertices (= dual triangles)
 };
 
 namespace hull_detail {
@@ -290,9 +290,8 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
 // so volumes are pyramids from x_o (seed Eq. 9 with o = x_o). Planes owned by
 // both particles count half for each. ref[k] = reference point of particle k
 // for the moments M (coordinates centred on x_o).
-template <typename T, int MP>
-POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2],
-                                    HullIntegrals<T> &out)
+template <typename T, int MP> POLYDEM_FN void
+dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], HullIntegrals<T> &out)
 {
   const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
   T vol = T(0);

@@ -41,8 +41,7 @@ template <typename T> POLYDEM_FN T posed_radius(const PosedShape<T> &a)
 // Seed Eq. 2: lab-frame vertex of A maximising dir . p (dir need not be unit).
 // Brute force over the template's vertices: at <= MAX_TEMPLATE_VERTS this is
 // branch-light and as fast as hill climbing on GPUs.
-template <typename T>
-POLYDEM_FN Vec3<T> support_point(const PosedShape<T> &a, const Vec3<T> &dir)
+template <typename T> POLYDEM_FN Vec3<T> support_point(const PosedShape<T> &a, const Vec3<T> &dir)
 {
   const Vec3<T> db = matTvec(a.R, dir);
   const T *v = a.view->verts;
@@ -69,8 +68,7 @@ POLYDEM_FN bool bounding_spheres_overlap(const PosedShape<T> &a, const PosedShap
 }
 
 // Size scale of a pair [length], used to scale all tolerances.
-template <typename T>
-POLYDEM_FN T pair_length_scale(const PosedShape<T> &a, const PosedShape<T> &b)
+template <typename T> POLYDEM_FN T pair_length_scale(const PosedShape<T> &a, const PosedShape<T> &b)
 {
   const T ra = posed_radius(a), rb = posed_radius(b);
   return ra > rb ? ra : rb;
@@ -181,9 +179,8 @@ namespace gjk_detail {
 
   // true if the origin and d are strictly on different sides of plane (a,b,c)
   // or the tetrahedron is flat there (then the face must be examined).
-  template <typename T>
-  POLYDEM_FN bool origin_outside(const Vec3<T> &a, const Vec3<T> &b, const Vec3<T> &c,
-                                 const Vec3<T> &d)
+  template <typename T> POLYDEM_FN bool origin_outside(const Vec3<T> &a, const Vec3<T> &b,
+                                                       const Vec3<T> &c, const Vec3<T> &d)
   {
     const Vec3<T> nrm = cross(b - a, c - a);
     const T sp = -dot(a, nrm), sd = dot(d - a, nrm);
@@ -198,8 +195,7 @@ namespace gjk_detail {
     Vec3<T> bw[3] = {w[0], w[0], w[0]};
     int bn = 0;
     for (int f = 0; f < 4; ++f) {
-      if (!origin_outside(w[faces[f][0]], w[faces[f][1]], w[faces[f][2]], w[faces[f][3]]))
-        continue;
+      if (!origin_outside(w[faces[f][0]], w[faces[f][1]], w[faces[f][2]], w[faces[f][3]])) continue;
       Vec3<T> s[3] = {w[faces[f][0]], w[faces[f][1]], w[faces[f][2]]};
       int m = 3;
       const Vec3<T> p = closest_triangle(s, m);
@@ -225,9 +221,8 @@ namespace gjk_detail {
 // GJK (seed Algorithm I, distance form). Reports STATUS_OK (intersecting) if
 // the polyhedra overlap or are closer than tol_rel * L, where L is the larger
 // bounding radius [length]; tol_rel is dimensionless (default 1e3 eps).
-template <typename T>
-POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b,
-                                      T tol_rel = T(1000) * Eps<T>::value)
+template <typename T> POLYDEM_FN GjkResult<T>
+gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b, T tol_rel = T(1000) * Eps<T>::value)
 {
   GjkResult<T> res;
   res.status = STATUS_NO_CONVERGENCE;

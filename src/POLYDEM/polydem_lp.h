@@ -71,8 +71,7 @@ namespace lp_detail {
 // the start point is the origin. On return xc is the centre, r the inscribed
 // radius [length] (r <= 0: empty or flat intersection). Returns the number of
 // iterations used (LP_MAX_ITER if capped; the result is then still feasible).
-template <typename T>
-POLYDEM_FN int chebyshev_centre(const T *planes, int m, Vec3<T> &xc, T &r)
+template <typename T> POLYDEM_FN int chebyshev_centre(const T *planes, int m, Vec3<T> &xc, T &r)
 {
   // z = (x, r); constraint rows a_i = (n_i, 1), objective c = (0,0,0,1)
   T z[4] = {T(0), T(0), T(0), T(0)};

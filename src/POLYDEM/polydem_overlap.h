@@ -120,9 +120,8 @@ template <typename T> POLYDEM_FN void overlap_result_zero(OverlapResult<T> &r, i
 
 // Overlap of two posed polyhedra. Call after GJK has reported intersection
 // (it is also correct, only slower, on separated pairs).
-template <typename T, int MF>
-POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b,
-                                               OverlapWorkspace<T, MF> &ws)
+template <typename T, int MF> POLYDEM_FN OverlapResult<T>
+polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b, OverlapWorkspace<T, MF> &ws)
 {
   OverlapResult<T> res;
   overlap_result_zero(res, STATUS_OK);
@@ -143,8 +142,8 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   // the round-off of the larger one's planes
   const T ra = posed_radius(a), rb = posed_radius(b);
   const T Lmin = ra < rb ? ra : rb;
-  const T tol = eps * (T(OVERLAP_HULL_TOL) * Lmin + L);              // [length]
-  const T ttouch = eps * (T(OVERLAP_TOUCH_TOL) * Lmin + T(4) * L);   // [length]
+  const T tol = eps * (T(OVERLAP_HULL_TOL) * Lmin + L);               // [length]
+  const T ttouch = eps * (T(OVERLAP_TOUCH_TOL) * Lmin + T(4) * L);    // [length]
   // planes relative to the start point xs (midpoint of the centroids)
   const Vec3<T> xs = T(0.5) * (a.x + b.x);
   T *pl = w.pl + 4 * NB;

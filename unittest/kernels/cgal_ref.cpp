@@ -24,10 +24,10 @@ namespace {
     std::vector<EK::Triangle_3> tris;
     std::vector<EK::Segment_3> segs;
     std::vector<CGAL::Bbox_3> tbox, sbox;
-    std::vector<std::array<double, 4>> tplane;    // approximate planes for a safe prefilter
+    std::vector<std::array<double, 4>> tplane;        // approximate planes for a safe prefilter
     std::vector<std::array<IK::Point_3, 3>> itris;    // the same triangles, double input points
     std::vector<std::array<double, 6>> sd;            // segment end points (double)
-    IK::Point_3 inside;    // a point strictly inside
+    IK::Point_3 inside;                               // a point strictly inside
     double scale = 0;
   };
 
@@ -217,7 +217,8 @@ RefClip ref_clip(const Pts &p, const std::array<double, 3> &t0, const std::array
       u[i] = x[1][i] - x[0][i];
       w[i] = x[2][i] - x[0][i];
     }
-    double cr[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+    double cr[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                    u[0] * w[1] - u[1] * w[0]};
     double at = 0.5 * std::sqrt(cr[0] * cr[0] + cr[1] * cr[1] + cr[2] * cr[2]);
     ar += at;
     cx += at * (x[0][0] + x[1][0] + x[2][0]) / 3;

@@ -10,13 +10,13 @@
 
 namespace polydem_test {
 
+using polydem::make_vec3;
 using polydem::Pose;
 using polydem::Quat;
 using polydem::Vec3;
-using polydem::make_vec3;
 
 struct Pair {
-  int a, b;                 // shape indices in the pool
+  int a, b;    // shape indices in the pool
   Pose<double> pa, pb;
   const char *family;
 };

@@ -33,8 +33,14 @@ Triangle<double> make_tri(Vec3<double> a, Vec3<double> b, Vec3<double> c)
   return t;
 }
 
-std::array<double, 3> arr(Vec3<double> v) { return {v.x, v.y, v.z}; }
-Vec3<double> vec(const std::array<double, 3> &a) { return make_vec3(a[0], a[1], a[2]); }
+std::array<double, 3> arr(Vec3<double> v)
+{
+  return {v.x, v.y, v.z};
+}
+Vec3<double> vec(const std::array<double, 3> &a)
+{
+  return make_vec3(a[0], a[1], a[2]);
+}
 
 }    // namespace
 
@@ -87,7 +93,8 @@ TEST(KernelClip, RandomTrianglesVsCgal)
     Triangle<float> tf;
     for (int k = 0; k < 3; ++k)
       tf.v[k] = make_vec3((float) t.v[k].x, (float) t.v[k].y, (float) t.v[k].z);
-    const ClipResult<float> rf = polyhedron_triangle(make_posed(pool().f[s]->view, to_float(p)), tf, wsf);
+    const ClipResult<float> rf =
+        polyhedron_triangle(make_posed(pool().f[s]->view, to_float(p)), tf, wsf);
     ASSERT_TRUE(rf.status == STATUS_OK || rf.status == STATUS_SEPARATED);
     eaf = std::max(eaf, std::fabs(rf.area - ref.area) / (L * L));
     evf = std::max(evf, std::fabs(rf.volume - ref.volume) / Vp);
@@ -175,9 +182,12 @@ TEST(KernelClip, FlatWallGradients)
     const int s = (int) (u(rng) * pool().data.size()) % (int) pool().data.size();
     const ShapeData &sd = pool().data[s];
     const double H = 2.5 * sd.radius;
-    const Triangle<double> t1 = make_tri(make_vec3(-H, -H, 0.0), make_vec3(H, -H, 0.0), make_vec3(H, H, 0.0));
-    const Triangle<double> t2 = make_tri(make_vec3(-H, -H, 0.0), make_vec3(H, H, 0.0), make_vec3(-H, H, 0.0));
-    Pose<double> p = make_pose(make_vec3(0.0, 0.0, (1.2 * u(rng) - 0.6) * sd.radius), random_quat(rng), 1.0);
+    const Triangle<double> t1 =
+        make_tri(make_vec3(-H, -H, 0.0), make_vec3(H, -H, 0.0), make_vec3(H, H, 0.0));
+    const Triangle<double> t2 =
+        make_tri(make_vec3(-H, -H, 0.0), make_vec3(H, H, 0.0), make_vec3(-H, H, 0.0));
+    Pose<double> p =
+        make_pose(make_vec3(0.0, 0.0, (1.2 * u(rng) - 0.6) * sd.radius), random_quat(rng), 1.0);
     auto wall = [&](const Pose<double> &q, Vec3<double> *S, Vec3<double> *M) {
       auto a = polyhedron_triangle(make_posed(pool().d[s]->view, q), t1, wsd);
       auto b = polyhedron_triangle(make_posed(pool().d[s]->view, q), t2, wsd);
@@ -213,20 +223,19 @@ TEST(KernelClip, FlatWallGradients)
 
 TEST(KernelClip, Workspace)
 {
-  std::printf("[ workspace ] clip double %lu bytes, float %lu bytes\n", clip_workspace_bytes<double>(),
-              clip_workspace_bytes<float>());
+  std::printf("[ workspace ] clip double %lu bytes, float %lu bytes\n",
+              clip_workspace_bytes<double>(), clip_workspace_bytes<float>());
   // degenerate triangle -> status, no crash
   Pose<double> p = make_pose(make_vec3(0.0, 0.0, 0.0), make_quat(1.0, 0.0, 0.0, 0.0), 1.0);
-  auto r = polyhedron_triangle(make_posed(pool().d[0]->view, p),
-                               make_tri(make_vec3(0.0, 0.0, 0.0), make_vec3(1.0, 0.0, 0.0),
-                                        make_vec3(2.0, 0.0, 0.0)),
-                               wsd);
+  auto r = polyhedron_triangle(
+      make_posed(pool().d[0]->view, p),
+      make_tri(make_vec3(0.0, 0.0, 0.0), make_vec3(1.0, 0.0, 0.0), make_vec3(2.0, 0.0, 0.0)), wsd);
   EXPECT_EQ(r.status, STATUS_DEGENERATE);
   // cube (side 1) half into a big triangle: V = 1/2, A = 1
-  r = polyhedron_triangle(make_posed(pool().d[0]->view, p),
-                          make_tri(make_vec3(-5.0, -5.0, 0.0), make_vec3(5.0, -5.0, 0.0),
-                                   make_vec3(0.0, 5.0, 0.0)),
-                          wsd);
+  r = polyhedron_triangle(
+      make_posed(pool().d[0]->view, p),
+      make_tri(make_vec3(-5.0, -5.0, 0.0), make_vec3(5.0, -5.0, 0.0), make_vec3(0.0, 5.0, 0.0)),
+      wsd);
   EXPECT_NEAR(r.volume, 0.5, 1e-14);
   EXPECT_NEAR(r.area, 1.0, 1e-14);
   EXPECT_NEAR(r.S.z, -1.0, 1e-14);

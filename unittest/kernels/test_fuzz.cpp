@@ -17,8 +17,14 @@ using namespace polydem_test;
 
 namespace {
 
-template <typename T> bool finite(T v) { return std::isfinite((double) v); }
-template <typename T> bool finite(const Vec3<T> &v) { return finite(v.x) && finite(v.y) && finite(v.z); }
+template <typename T> bool finite(T v)
+{
+  return std::isfinite((double) v);
+}
+template <typename T> bool finite(const Vec3<T> &v)
+{
+  return finite(v.x) && finite(v.y) && finite(v.z);
+}
 
 ShapePool &pool()
 {
@@ -49,8 +55,9 @@ template <typename T> void fuzz_overlap(long n, unsigned seed, Counts<T> &c)
     const double sa = sig * (0.3 + u(rng)), sb = sig * (0.3 + 3 * u(rng));
     Pose<double> pa = make_pose(pos * random_unit(rng), random_quat(rng), sa);
     const double rr = sa * pool().data[a].radius + sb * pool().data[b].radius;
-    Pose<double> pb = make_pose(pa.x + (1.05 * rr * u(rng)) * random_unit(rng), random_quat(rng), sb);
-    if (i % 97 == 0) pb = pa;                                           // coincident
+    Pose<double> pb =
+        make_pose(pa.x + (1.05 * rr * u(rng)) * random_unit(rng), random_quat(rng), sb);
+    if (i % 97 == 0) pb = pa;                                          // coincident
     if (i % 89 == 0) pb.x = pa.x + make_vec3(rr * 1e-12, 0.0, 0.0);    // nearly coincident
     Pose<T> fa, fb;
     if constexpr (std::is_same<T, float>::value) {
@@ -60,10 +67,12 @@ template <typename T> void fuzz_overlap(long n, unsigned seed, Counts<T> &c)
       fa = pa;
       fb = pb;
     }
-    const ShapeView<T> &va = std::is_same<T, float>::value ? (const ShapeView<T> &) pool().f[a]->view
-                                                           : (const ShapeView<T> &) pool().d[a]->view;
-    const ShapeView<T> &vb = std::is_same<T, float>::value ? (const ShapeView<T> &) pool().f[b]->view
-                                                           : (const ShapeView<T> &) pool().d[b]->view;
+    const ShapeView<T> &va = std::is_same<T, float>::value
+                                 ? (const ShapeView<T> &) pool().f[a]->view
+                                 : (const ShapeView<T> &) pool().d[a]->view;
+    const ShapeView<T> &vb = std::is_same<T, float>::value
+                                 ? (const ShapeView<T> &) pool().f[b]->view
+                                 : (const ShapeView<T> &) pool().d[b]->view;
     const PosedShape<T> A = make_posed(va, fa), B = make_posed(vb, fb);
     const GjkResult<T> g = gjk_intersect(A, B);
     ASSERT_TRUE(finite(g.distance));

@@ -22,9 +22,9 @@ template <typename T> bool same_bits(const T &a, const T &b)
   return std::memcmp(&a, &b, sizeof(T)) == 0;
 }
 
-template <typename T>
-void check(const OverlapResult<T> &a, const OverlapResult<T> &b, const GjkResult<T> &ga,
-           const GjkResult<T> &gb, const ClipResult<T> &ca, const ClipResult<T> &cb, int i)
+template <typename T> void check(const OverlapResult<T> &a, const OverlapResult<T> &b,
+                                 const GjkResult<T> &ga, const GjkResult<T> &gb,
+                                 const ClipResult<T> &ca, const ClipResult<T> &cb, int i)
 {
   EXPECT_EQ(a.status, b.status) << i;
   EXPECT_TRUE(same_bits(a.volume, b.volume)) << i;

@@ -50,7 +50,8 @@ OverlapResult<float> run_f(const Pair &p)
 }
 GjkResult<double> gjk_d(const Pair &p)
 {
-  return gjk_intersect(make_posed(pool().d[p.a]->view, p.pa), make_posed(pool().d[p.b]->view, p.pb));
+  return gjk_intersect(make_posed(pool().d[p.a]->view, p.pa),
+                       make_posed(pool().d[p.b]->view, p.pb));
 }
 
 double length_of(const Pair &p)
@@ -71,8 +72,8 @@ struct Stats {
 // compare one pair with CGAL; centroid compared when V_ref >= 1e-6 V_particle
 void check_pair(const Pair &p, Stats &st, bool do_float = true)
 {
-  const RefResult ref =
-      ref_intersection(posed_vertices(pool().data[p.a], p.pa), posed_vertices(pool().data[p.b], p.pb));
+  const RefResult ref = ref_intersection(posed_vertices(pool().data[p.a], p.pa),
+                                         posed_vertices(pool().data[p.b], p.pb));
   const double L = length_of(p), Vp = vpart(p);
   const OverlapResult<double> r = run_d(p);
   ASSERT_TRUE(r.status == STATUS_OK || r.status == STATUS_SEPARATED)
@@ -83,7 +84,8 @@ void check_pair(const Pair &p, Stats &st, bool do_float = true)
   ++st.n;
   if (ref.volume >= 1e-6 * Vp) {
     ++st.npos;
-    const double dc = norm(r.centroid - make_vec3(ref.centroid[0], ref.centroid[1], ref.centroid[2])) / L;
+    const double dc =
+        norm(r.centroid - make_vec3(ref.centroid[0], ref.centroid[1], ref.centroid[2])) / L;
     st.max_cd = std::max(st.max_cd, dc);
     EXPECT_LE(dc, 1e-9) << p.family;
   }
@@ -101,10 +103,9 @@ void check_pair(const Pair &p, Stats &st, bool do_float = true)
                          << " scales " << p.pa.s << " " << p.pb.s << " shapes " << p.a << " "
                          << p.b;
     if (ref.volume >= 1e-2 * Vp) {
-      const double dc =
-          norm(make_vec3<double>(rf.centroid.x, rf.centroid.y, rf.centroid.z) -
-               make_vec3(ref.centroid[0], ref.centroid[1], ref.centroid[2])) /
-          L;
+      const double dc = norm(make_vec3<double>(rf.centroid.x, rf.centroid.y, rf.centroid.z) -
+                             make_vec3(ref.centroid[0], ref.centroid[1], ref.centroid[2])) /
+                        L;
       st.max_cf = std::max(st.max_cf, dc);
       EXPECT_LE(dc, 1e-4) << p.family;
     }
@@ -262,8 +263,8 @@ TEST(KernelOverlap, SymmetryAndInvariance)
     f = std::max(f, norm(rm.M_B - qrotate(Q, r.M_B)) / (L * L * L));
     e_rig = std::max(e_rig, f);
   }
-  std::printf("[ symmetry ] max deviation swap %.2e, rigid motion %.2e (relative to L^k)\n",
-              e_swap, e_rig);
+  std::printf("[ symmetry ] max deviation swap %.2e, rigid motion %.2e (relative to L^k)\n", e_swap,
+              e_rig);
   EXPECT_LE(e_swap, 1e-11);
   EXPECT_LE(e_rig, 1e-11);
 }

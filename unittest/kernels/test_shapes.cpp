@@ -84,8 +84,7 @@ ShapeData make_shape(const std::vector<std::array<double, 3>> &in)
       int j = he[{tri[i][(e + 1) % 3], tri[i][e]}];
       double dn = 0;
       for (int k = 0; k < 3; ++k) dn += std::fabs(tp[i][k] - tp[j][k]);
-      if (dn < 1e-10 && std::fabs(tp[i][3] - tp[j][3]) < 1e-10 * s.radius)
-        grp[find(i)] = find(j);
+      if (dn < 1e-10 && std::fabs(tp[i][3] - tp[j][3]) < 1e-10 * s.radius) grp[find(i)] = find(j);
     }
   std::map<int, int> gid;
   for (int i = 0; i < nt; ++i)
@@ -195,7 +194,8 @@ polydem::Quat<double> random_quat(std::mt19937_64 &rng)
   return polydem::qnormalize(polydem::make_quat(g(rng), g(rng), g(rng), g(rng)));
 }
 
-std::vector<std::array<double, 3>> posed_vertices(const ShapeData &s, const polydem::Pose<double> &p)
+std::vector<std::array<double, 3>> posed_vertices(const ShapeData &s,
+                                                  const polydem::Pose<double> &p)
 {
   auto R = polydem::quat_to_mat(p.q);
   std::vector<std::array<double, 3>> out;
