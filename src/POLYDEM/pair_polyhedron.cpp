@@ -219,6 +219,7 @@ double PairPolyhedron::init_one(int i, int j)
   }
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
+  polydem::damping_factor(restitution[i][j]);    // calibrate now, not at the first contact
 
   double rmax = 0.0;
   for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
