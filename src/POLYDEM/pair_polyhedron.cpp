@@ -35,7 +35,7 @@ static constexpr int SIZE_HISTORY = 3;    // tangential displacement
 
 PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
     Pair(lmp), youngs(nullptr), poisson(nullptr), matset(nullptr), restitution(nullptr),
-    friction(nullptr), pairset(nullptr), overlap_warn(0.05), dt(0.0), avec(nullptr),
+    friction(nullptr), pairset(nullptr), overlap_warn(0.05), core(1.0e-4), dt(0.0), avec(nullptr),
     fix_dummy(nullptr), fix_history(nullptr)
 {
   single_enable = 0;
@@ -97,13 +97,22 @@ void PairPolyhedron::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style polyhedron [overlap/warn f]
+   pair_style polyhedron [overlap/warn f] [core f]
 ------------------------------------------------------------------------- */
 
 void PairPolyhedron::settings(int narg, char **arg)
 {
   overlap_warn = 0.05;
+  core = 1.0e-4;
   for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "core") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "pair_style polyhedron: core needs a value");
+      core = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(core >= 0.0 && core < 1.0))
+        error->all(FLERR, "pair_style polyhedron: core must be in [0, 1), got '{}'",
+                   arg[iarg + 1]);
+      continue;
+    }
     if (strcmp(arg[iarg], "overlap/warn") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "pair_style polyhedron: overlap/warn needs a value");
       overlap_warn = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -340,6 +349,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
       p.mu = friction[itype][jtype];
       p.meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
       p.dt = shearupdate ? dt : 0.0;
+      p.V0 = core * MIN(Vi, Vj);
 
       polydem::ContactGeometry<double> geo;
       geo.volume = ov.volume;
@@ -410,12 +420,15 @@ void PairPolyhedron::report_counters(bool /*final*/)
 void PairPolyhedron::write_restart_settings(FILE *fp)
 {
   fwrite(&overlap_warn, sizeof(double), 1, fp);
+  fwrite(&core, sizeof(double), 1, fp);
 }
 
 void PairPolyhedron::read_restart_settings(FILE *fp)
 {
   if (comm->me == 0) utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
+  if (comm->me == 0) utils::sfread(FLERR, &core, sizeof(double), 1, fp, nullptr, error);
   MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&core, 1, MPI_DOUBLE, 0, world);
 }
 
 void PairPolyhedron::write_restart(FILE *fp)

@@ -51,6 +51,7 @@ class PairPolyhedron : public Pair {
   double **restitution, **friction;
   int **pairset;               // explicit e, mu for an unlike pair
   double overlap_warn;         // warn for V > overlap_warn * smaller particle volume
+  double core;                 // quadratic W below V0 = core * smaller particle volume
   double dt;
 
   class AtomVecPolyhedron *avec;

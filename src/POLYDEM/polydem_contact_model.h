@@ -5,7 +5,16 @@
 
    Normal, elastic (Feng's energy-conserving model, Eqs. 12-13):
      W'(V) = K V^{1/3},  K = E_A/R_A + E_B/R_B   (R: volume-equivalent radii)
-     W(V)  = 3/4 K V^{4/3}
+     W(V)  = 3/4 K V^{4/3} - 5/36 K V0^{4/3}                for V >= V0
+   with a polynomial core below V0 (W, W', W'' continuous, W(0) = 0):
+     W'(V) = K V0^{-2/3} (5/3 V - 2/3 V^2/V0)
+     W(V)  = K V0^{-2/3} (5/6 V^2 - 2/9 V^3/V0)              for V <  V0
+   The pure V^{1/3} law (V0 = 0) has an unbounded stiffness W''(V) A_n^2 as
+   V -> 0: a flat face resting under gravity then needs time steps far below
+   any practical dt and chatters. The core bounds the stiffness of small
+   overlaps by 5/3 K V0^{-2/3} A_n^2 (pair_style polyhedron keyword core,
+   V0 = core * smaller particle volume); it is C2, so the integrator keeps
+   its second order.
      F_A = -W'(V) S_A,  tau_A = -W'(V) M_A,  tau_B = -W'(V) M_B,  F_B = -F_A
    with S_A = dV/dx_A, M = dV/dtheta from polydem_overlap.h, so the elastic
    part is exactly the negative gradient of W(V) in translation and rotation
@@ -45,6 +54,7 @@ template <typename T> struct ContactParams {
   T mu;       // Coulomb friction coefficient
   T meff;     // m_A m_B / (m_A + m_B)
   T dt;       // time step (tangential displacement increment)
+  T V0 = T(0);    // volume below which W is quadratic (0: pure V^{1/3} law)
 };
 
 // Restitution of the normalised face contact x'' = -x^(1/3) - 2 zeta
@@ -128,8 +138,21 @@ POLYDEM_FN ContactForce<T> contact_force(const ContactGeometry<T> &g, const Cont
                                          const Vec3<T> &wA, const Vec3<T> &wB, T *shear)
 {
   ContactForce<T> out;
-  const T Wp = p.K * cbrt(g.volume);    // W'(V), Eq. 12-13
-  out.energy = T(0.75) * Wp * g.volume;
+  const T V = g.volume;
+  T Wp, kloc;    // W'(V) (Eq. 12-13) and the local normal stiffness W''(V) A_n^2
+  if (V < p.V0) {
+    const T c0 = cbrt(p.V0);
+    const T c = p.K / (c0 * c0);
+    const T u = V / p.V0;
+    Wp = c * V * (T(5) / T(3) - T(2) / T(3) * u);
+    out.energy = c * V * V * (T(5) / T(6) - T(2) / T(9) * u);
+    kloc = c * (T(5) / T(3) - T(4) / T(3) * u) * g.area * g.area;
+  } else {
+    const T v13 = cbrt(V);
+    Wp = p.K * v13;
+    out.energy = T(0.75) * Wp * V - T(5) / T(36) * p.K * p.V0 * cbrt(p.V0);
+    kloc = v13 > T(0) ? p.K * g.area * g.area / (T(3) * v13 * v13) : T(0);
+  }
   out.F_A = -Wp * g.S_A;
   out.tau_A = -Wp * g.M_A;
   out.tau_B = -Wp * g.M_B;
@@ -140,8 +163,6 @@ POLYDEM_FN ContactForce<T> contact_force(const ContactGeometry<T> &g, const Cont
   const T vn = dot(vr, n);
 
   // normal damping, Eq. 14, with the local stiffness W''(V) A_n^2
-  const T v13 = cbrt(g.volume);
-  const T kloc = v13 > T(0) ? p.K * g.area * g.area / (T(3) * v13 * v13) : T(0);
   T gn = T(2) * p.damp * sqrt(kloc * p.meff);
   if (p.dt > T(0) && gn * p.dt > p.meff) gn = p.meff / p.dt;
   const Vec3<T> Fd = (-gn * vn) * n;

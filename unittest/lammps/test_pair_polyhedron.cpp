@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 #include <cstdio>
 
 using polydem_test::Lmp;
@@ -121,7 +122,14 @@ TEST(PairPolyhedron, ElasticCollisionConservesEnergy)
 //   F_A = -W' S_A (Eq. 12-13 along x, plus the lateral strip term),
 //   tau_z(A) = tau_z(B) = W' (A dy/2 - a delta (a - delta)/2),
 //   W = 3/4 K V^(4/3).
-TEST(PairPolyhedron, FaceToFaceCubesMatchAnalytic)
+struct FaceCase {
+  double Fx, Fy, tz, pe;    // expected
+  double fi[3], fj[3], ti[3], tj[3], pe_got;
+};
+
+// core = 0: the seed's pure V^(1/3) law; core > 0: the overlap lies in the
+// polynomial core, W'(V) = K V0^(-2/3) (5/3 V - 2/3 V^2/V0).
+FaceCase face_to_face(double core)
 {
   const double a = 0.01, delta = 2e-4, dy = 3e-3, E = 5e7;
   Lmp l;
@@ -131,29 +139,64 @@ TEST(PairPolyhedron, FaceToFaceCubesMatchAnalytic)
           "create_atoms 1 single 0 0 0",
           "create_atoms 1 single " + num(a - delta) + " " + num(dy) + " 0",
           "polyhedron_set group all scale " + num(a) + " density 2000",
-          "pair_style polyhedron", "pair_coeff * * " + num(E) + " 0.3 1.0 0.0",
+          "pair_style polyhedron core " + num(core), "pair_coeff * * " + num(E) + " 0.3 1.0 0.0",
           "neighbor 0.001 bin", "fix 1 all nve/polyhedron", "thermo_style custom step pe",
           "run 0"});
   const double A = a * (a - dy), V = A * delta;
   const double R = a * std::cbrt(3.0 / (4.0 * M_PI)), K = 2.0 * E / R;
-  const double Wp = K * std::cbrt(V);
-  const double Fx = Wp * A, Fy = Wp * a * delta;
-  const double tz = Wp * (A * dy / 2.0 - a * delta * (a - delta) / 2.0);
+  const double V0 = core * a * a * a;
+  FaceCase c;
+  double Wp;
+  if (V < V0) {
+    const double k0 = K / std::pow(V0, 2.0 / 3.0);
+    Wp = k0 * (5.0 / 3.0 * V - 2.0 / 3.0 * V * V / V0);
+    c.pe = k0 * (5.0 / 6.0 * V * V - 2.0 / 9.0 * V * V * V / V0);
+  } else {
+    Wp = K * std::cbrt(V);
+    c.pe = 0.75 * K * std::pow(V, 4.0 / 3.0) - 5.0 / 36.0 * K * std::pow(V0, 4.0 / 3.0);
+  }
+  c.Fx = Wp * A;
+  c.Fy = Wp * a * delta;
+  c.tz = Wp * (A * dy / 2.0 - a * delta * (a - delta) / 2.0);
   auto *at = l.lmp->atom;
   const int i = at->map(1), j = at->map(2);
-  EXPECT_NEAR(at->f[i][0], -Fx, 1e-10 * Fx);
-  EXPECT_NEAR(at->f[j][0], Fx, 1e-10 * Fx);
-  EXPECT_NEAR(at->f[i][1], -Fy, 1e-9 * Fx);
-  EXPECT_NEAR(at->f[j][1], Fy, 1e-9 * Fx);
-  EXPECT_NEAR(at->f[i][2], 0.0, 1e-10 * Fx);
-  EXPECT_NEAR(at->f[j][2], 0.0, 1e-10 * Fx);
-  EXPECT_NEAR(at->torque[i][2], tz, 1e-9 * Fx * a);
-  EXPECT_NEAR(at->torque[j][2], tz, 1e-9 * Fx * a);
-  for (int k = 0; k < 2; k++) {
-    EXPECT_NEAR(at->torque[i][k], 0.0, 1e-9 * Fx * a);
-    EXPECT_NEAR(at->torque[j][k], 0.0, 1e-9 * Fx * a);
+  for (int k = 0; k < 3; k++) {
+    c.fi[k] = at->f[i][k];
+    c.fj[k] = at->f[j][k];
+    c.ti[k] = at->torque[i][k];
+    c.tj[k] = at->torque[j][k];
   }
-  EXPECT_NEAR(l.thermo("pe"), 0.75 * K * std::pow(V, 4.0 / 3.0), 1e-10 * Fx * delta);
+  c.pe_got = l.thermo("pe");
+  return c;
+}
+
+// Two aligned cubes (edge a) overlapping face to face by delta, offset by dy
+// sideways. The overlap is the box a (a-dy) delta. A's boundary inside B is
+// the patch A = a (a-dy) of its +x face and the strip a delta of its +y face
+// (the z faces are coplanar with B's and cancel), so the exact gradient is
+// S_A = (A, a delta, 0), and with K = 2E/R, R = a (3/4pi)^(1/3):
+//   F_A = -W'(V) S_A (Eq. 12-13 along x, plus the lateral strip term),
+//   tau_z(A) = tau_z(B) = W' (A dy/2 - a delta (a - delta)/2).
+TEST(PairPolyhedron, FaceToFaceCubesMatchAnalytic)
+{
+  for (double core : {0.0, 0.1}) {
+    const FaceCase c = face_to_face(core);
+    SCOPED_TRACE("core " + num(core));
+    const double F = c.Fx, L = 0.01;
+    EXPECT_NEAR(c.fi[0], -c.Fx, 1e-10 * F);
+    EXPECT_NEAR(c.fj[0], c.Fx, 1e-10 * F);
+    EXPECT_NEAR(c.fi[1], -c.Fy, 1e-9 * F);
+    EXPECT_NEAR(c.fj[1], c.Fy, 1e-9 * F);
+    EXPECT_NEAR(c.fi[2], 0.0, 1e-10 * F);
+    EXPECT_NEAR(c.fj[2], 0.0, 1e-10 * F);
+    EXPECT_NEAR(c.ti[2], c.tz, 1e-9 * F * L);
+    EXPECT_NEAR(c.tj[2], c.tz, 1e-9 * F * L);
+    for (int k = 0; k < 2; k++) {
+      EXPECT_NEAR(c.ti[k], 0.0, 1e-9 * F * L);
+      EXPECT_NEAR(c.tj[k], 0.0, 1e-9 * F * L);
+    }
+    EXPECT_NEAR(c.pe_got, c.pe, 1e-10 * std::fabs(c.pe));
+  }
 }
 
 // Newton's third law and rotational invariance: an isolated granular gas of
@@ -245,6 +288,44 @@ TEST(PairPolyhedron, RestitutionOfFaceToFaceCubes)
   }
 }
 
+// Friction (issue 4, item 3): a 2.5 cm cube resting on a frozen row of 20
+// cubes (seed Table 2 material, mu = 0.5, dt = 1e-5 s as in the seed); the
+// floor is tilted by turning gravity by theta about y. tan(theta) < mu: it
+// sticks; tan(theta) > mu: it slides with a = g (sin - mu cos) within 2 %.
+double incline_speed(double theta_deg, double mu)
+{
+  Lmp l;
+  std::vector<std::string> c = {
+      "units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+      "comm_modify vel yes", "region box block -0.3 0.3 -0.05 0.05 -0.05 0.08",
+      "create_box 2 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape"};
+  for (int k = 0; k < 20; k++) c.push_back("create_atoms 1 single " + num(-0.25 + 0.025 * k) + " 0 0");
+  const double th = theta_deg * M_PI / 180.0;
+  for (const std::string &x : std::vector<std::string>{
+           "create_atoms 2 single -0.15 0 0.02501", "polyhedron_set group all density 1500",
+        "group top type 2", "pair_style polyhedron", "pair_coeff * * 1.0e6 0.1 0.3 " + num(mu),
+        "neighbor 0.001 bin", "neigh_modify exclude type 1 1", "fix 1 top nve/polyhedron",
+        "fix g top gravity 9.81 vector 0 0 -1", "timestep 1e-5", "run 5000", "unfix g",
+        "fix g top gravity 9.81 vector " + num(std::sin(th)) + " 0 " + num(-std::cos(th)),
+        "velocity top set 0 0 0", "run 10000"})
+    c.push_back(x);
+  l.cmds(c);
+  auto *a = l.lmp->atom;
+  return a->v[a->map(21)][0];
+}
+
+TEST(PairPolyhedron, FrictionInclineSticksOrSlides)
+{
+  const double mu = 0.5, g = 9.81, t = 0.1;
+  const double v20 = incline_speed(20.0, mu), v40 = incline_speed(40.0, mu);
+  const double th = 40.0 * M_PI / 180.0;
+  const double v40_exact = g * (std::sin(th) - mu * std::cos(th)) * t;
+  std::printf("incline: 20 deg v = %.3g m/s (sticks); 40 deg v = %.5f vs %.5f m/s\n", v20, v40,
+              v40_exact);
+  EXPECT_LT(std::fabs(v20), 1e-6);
+  EXPECT_NEAR(v40, v40_exact, 0.02 * v40_exact);
+}
+
 TEST(PairPolyhedron, BadCoefficients)
 {
   Lmp l;
@@ -266,6 +347,8 @@ TEST(PairPolyhedron, BadCoefficients)
   has("pair_coeff 1 1 0.9 0.5", "needs its material");
   has("pair_style polyhedron overlap/warn 2", "overlap/warn must be in (0, 1]");
   has("pair_style polyhedron bogus 1", "unknown keyword 'bogus'");
+  has("pair_style polyhedron core 1.5", "core must be in [0, 1)");
+  has("pair_style polyhedron core -1", "core must be in [0, 1)");
   {
     Lmp a;
     a.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
