@@ -338,18 +338,12 @@ void PairPolyhedron::compute(int eflag, int vflag)
       const double Vi = vi.volume * si * si * si, Vj = vj.volume * sj * sj * sj;
       if (ov.volume > overlap_warn * MIN(Vi, Vj)) local_counts[CNT_BIGOVERLAP] += 1.0;
 
-      // material, Eqs. 13, 15, 19, 20 (R: volume-equivalent radii)
+      // material, Eqs. 13, 19, 20
       const int itype = type[i], jtype = type[j];
-      const double Ri = cbrt(3.0 * Vi / (4.0 * MY_PI)), Rj = cbrt(3.0 * Vj / (4.0 * MY_PI));
-      polydem::ContactParams<double> p;
-      p.K = youngs[itype] / Ri + youngs[jtype] / Rj;
-      p.Kt = youngs[itype] / (2.0 * (1.0 + poisson[itype]) * Ri) +
-          youngs[jtype] / (2.0 * (1.0 + poisson[jtype]) * Rj);
-      p.damp = polydem::damping_factor(restitution[itype][jtype]);
-      p.mu = friction[itype][jtype];
-      p.meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      p.dt = shearupdate ? dt : 0.0;
-      p.V0 = core * MIN(Vi, Vj);
+      const auto p = polydem::make_contact_params(
+          youngs[itype], poisson[itype], Vi, rmass[i], youngs[jtype], poisson[jtype], Vj,
+          rmass[j], polydem::damping_factor(restitution[itype][jtype]), friction[itype][jtype],
+          core, shearupdate ? dt : 0.0);
 
       polydem::ContactGeometry<double> geo;
       geo.volume = ov.volume;

@@ -111,6 +111,27 @@ inline double damping_factor(double e)
   return z;
 }
 
+// Parameters of one contact from the two particles' Young's moduli, Poisson
+// ratios, volumes (already scaled) and masses (Eqs. 13, 19; R: radius of the
+// sphere of equal volume), the pair's damping ratio and friction, the core
+// fraction and the time step (0 during setup: no history update).
+template <typename T>
+POLYDEM_FN ContactParams<T> make_contact_params(T Ei, T nui, T Vi, T mi, T Ej, T nuj, T Vj, T mj,
+                                                T damp, T mu, T core, T dt)
+{
+  const T f = T(3) / (T(4) * T(3.14159265358979323846));
+  const T Ri = cbrt(f * Vi), Rj = cbrt(f * Vj);
+  ContactParams<T> p;
+  p.K = Ei / Ri + Ej / Rj;
+  p.Kt = Ei / (T(2) * (T(1) + nui) * Ri) + Ej / (T(2) * (T(1) + nuj) * Rj);
+  p.damp = damp;
+  p.mu = mu;
+  p.meff = mi * mj / (mi + mj);
+  p.dt = dt;
+  p.V0 = core * (Vi < Vj ? Vi : Vj);
+  return p;
+}
+
 template <typename T> struct ContactForce {
   Vec3<T> F_A;      // force on A (B gets -F_A)
   Vec3<T> tau_A;    // torque on A about x_A
