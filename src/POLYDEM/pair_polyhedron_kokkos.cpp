@@ -1,0 +1,766 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - pair_style polyhedron/kk
+------------------------------------------------------------------------- */
+
+#include "pair_polyhedron_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "atom_vec_polyhedron_kokkos.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_neigh_history_kokkos.h"
+#include "force.h"
+#include "kokkos.h"
+#include "memory_kokkos.h"
+#include "modify.h"
+#include "neigh_list_kokkos.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "polydem_contact_model.h"
+#include "polydem_overlap.h"
+#include "polydem_shape_template.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace LAMMPS_NS;
+
+namespace {
+
+constexpr int SIZE_HISTORY = 3;    // tangential displacement, as the plain style
+
+template <class DeviceType> struct PolyKK {
+  typedef ArrayTypes<DeviceType> AT;
+  typedef typename AT::t_neighbors_2d t_neighbors;
+  typedef typename AT::t_int_1d_randomread t_int_ro;
+};
+
+/* ----------------------------------------------------------------------
+   step 1 of the contact-pair array (seed §2.2): candidates of list entry ii
+   = neighbors whose bounding spheres overlap; the others lose their contact
+   history here, exactly as in the plain style
+------------------------------------------------------------------------- */
+
+template <class DeviceType, bool FILL> struct PolyCandidateFunctor {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array_randomread x;
+  typename AT::t_float_1d_randomread radius;
+  typename AT::t_int_1d_randomread ilist, numneigh;
+  typename AT::t_neighbors_2d neighbors;
+  typename AT::t_int_2d firsttouch;
+  typename AT::t_float_2d firstshear;
+  Kokkos::View<int *, DeviceType> count, offset;
+  Kokkos::View<int *[2], DeviceType> pairs;
+  Kokkos::View<int *, DeviceType> npartner;    // list entries per local atom (both sides)
+  int nlocal, count_partners;
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int ii) const
+  {
+    const int i = ilist(ii);
+    const int jnum = numneigh(i);
+    const double xi = x(i, 0), yi = x(i, 1), zi = x(i, 2), ri = radius(i);
+    int n = 0;
+    const int base = FILL ? offset(ii) : 0;
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = neighbors(i, jj) & NEIGHMASK;
+      const double delx = xi - x(j, 0), dely = yi - x(j, 1), delz = zi - x(j, 2);
+      const double radsum = ri + radius(j);
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      if (!FILL && count_partners) {
+        Kokkos::atomic_increment(&npartner(i));
+        if (j < nlocal) Kokkos::atomic_increment(&npartner(j));
+      }
+      if (rsq >= radsum * radsum) {
+        if (!FILL) {
+          firsttouch(i, jj) = 0;
+          for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = 0.0;
+        }
+        continue;
+      }
+      if (FILL) {
+        pairs(base + n, 0) = i;
+        pairs(base + n, 1) = jj;
+      }
+      n++;
+    }
+    if (!FILL) count(ii) = n;
+  }
+};
+
+template <class DeviceType> struct PolyMaxFunctor {
+  typedef DeviceType device_type;
+  typedef int value_type;
+  Kokkos::View<int *, DeviceType> npartner;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int &m) const
+  {
+    if (npartner(i) > m) m = npartner(i);
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile int &dst, const volatile int &src) const
+  {
+    if (src > dst) dst = src;
+  }
+  KOKKOS_INLINE_FUNCTION void init(int &m) const { m = 0; }
+};
+
+/* ----------------------------------------------------------------------
+   FixNeighHistoryKokkos of LAMMPS 29Sep2021 with a complete copy_arrays:
+   the original copies one value per partner instead of dnum, which loses
+   the history whenever atoms are sorted or leave a rank (AtomVec::copy).
+   Registered at run time under its own name (no style file needed).
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+class FixNeighHistoryPolyhedronKokkos : public FixNeighHistoryKokkos<DeviceType> {
+ public:
+  FixNeighHistoryPolyhedronKokkos(LAMMPS *lmp, int narg, char **arg) :
+      FixNeighHistoryKokkos<DeviceType>(lmp, narg, arg)
+  {
+  }
+  void copy_arrays(int i, int j, int delflag) override
+  {
+    // syncs the host arrays, copies the partner IDs, marks the host modified
+    FixNeighHistoryKokkos<DeviceType>::copy_arrays(i, j, delflag);
+    for (int m = 0; m < this->dnum * this->npartner[i]; m++)
+      this->valuepartner[j][m] = this->valuepartner[i][m];
+  }
+  static Fix *create(LAMMPS *lmp, int narg, char **arg)
+  {
+    return new FixNeighHistoryPolyhedronKokkos<DeviceType>(lmp, narg, arg);
+  }
+};
+
+// the protected partner capacity of FixNeighHistory (see ensure_partners)
+struct HistoryAccess : public FixNeighHistory {
+  static int &capacity(FixNeighHistory *f) { return f->*(&HistoryAccess::maxpartner); }
+};
+
+// step 2: exclusive prefix sum of the counts; offset(inum) = number of pairs
+template <class DeviceType> struct PolyScanFunctor {
+  typedef DeviceType device_type;
+  typedef int value_type;
+  Kokkos::View<int *, DeviceType> count, offset;
+  int inum;
+  KOKKOS_INLINE_FUNCTION void operator()(const int ii, int &update, const bool final) const
+  {
+    const int c = ii < inum ? count(ii) : 0;
+    if (final) offset(ii) = update;
+    update += c;
+  }
+};
+
+// energy, virial and kernel-status counters of one batch
+struct PolyReduce {
+  double evdwl;
+  double v[6];
+  double cnt[PairPolyhedron::NCOUNT];
+  KOKKOS_INLINE_FUNCTION PolyReduce()
+  {
+    evdwl = 0.0;
+    for (int k = 0; k < 6; k++) v[k] = 0.0;
+    for (int k = 0; k < PairPolyhedron::NCOUNT; k++) cnt[k] = 0.0;
+  }
+  KOKKOS_INLINE_FUNCTION void operator+=(const PolyReduce &r)
+  {
+    evdwl += r.evdwl;
+    for (int k = 0; k < 6; k++) v[k] += r.v[k];
+    for (int k = 0; k < PairPolyhedron::NCOUNT; k++) cnt[k] += r.cnt[k];
+  }
+  KOKKOS_INLINE_FUNCTION void operator+=(const volatile PolyReduce &r) volatile
+  {
+    evdwl += r.evdwl;
+    for (int k = 0; k < 6; k++) v[k] += r.v[k];
+    for (int k = 0; k < PairPolyhedron::NCOUNT; k++) cnt[k] += r.cnt[k];
+  }
+};
+
+/* ----------------------------------------------------------------------
+   step 3: one thread per candidate pair; the statements of
+   PairPolyhedron::compute for one (i, jj), with the workspace of slot
+   p - first and atomic accumulation (i and j are shared between threads)
+------------------------------------------------------------------------- */
+
+template <class DeviceType, int MF> struct PolyContactFunctor {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typedef PolyReduce value_type;
+  typedef polydem::OverlapWorkspace<double, MF> Workspace;
+
+  typename AT::t_x_array_randomread x;
+  typename AT::t_v_array_randomread v, omega;
+  typename AT::t_f_array f, torque;
+  typename AT::t_float_1d_randomread radius, rmass, pscale;
+  typename AT::t_int_1d_randomread type, pshape;
+  typename AT::t_tagint_1d_randomread tag;
+  polydem_view_t<tdual_quat_array, DeviceType> quat;
+  typename AT::t_neighbors_2d neighbors;
+  typename AT::t_int_2d firsttouch;
+  typename AT::t_float_2d firstshear;
+  Kokkos::View<int *[2], DeviceType> pairs;
+  Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
+  Kokkos::View<double *, DeviceType> youngs, poisson;
+  Kokkos::View<double **, DeviceType> damp, mu;
+  Kokkos::View<char *, DeviceType> workspace;
+  typename AT::t_efloat_1d eatom;
+  typename AT::t_virial_array vatom;
+  int first;    // pair index of slot 0
+  int nlocal, newton_pair, shearupdate;
+  int eflag_global, eflag_atom, vflag_global, vflag_atom;
+  double dt, overlap_warn, core;
+
+  KOKKOS_INLINE_FUNCTION void no_contact(int i, int jj) const
+  {
+    firsttouch(i, jj) = 0;
+    for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = 0.0;
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int p, PolyReduce &red) const
+  {
+    const int i = pairs(p, 0), jj = pairs(p, 1);
+    const int j = neighbors(i, jj) & NEIGHMASK;
+    Workspace &ws = reinterpret_cast<Workspace *>(workspace.data())[p - first];
+
+    const polydem::ShapeView<double> vi = shapes(pshape(i)), vj = shapes(pshape(j));
+    polydem::Pose<double> pi, pj;
+    pi.x = polydem::make_vec3(x(i, 0), x(i, 1), x(i, 2));
+    pi.q = polydem::make_quat(quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3));
+    pi.s = pscale(i);
+    pj.x = polydem::make_vec3(x(j, 0), x(j, 1), x(j, 2));
+    pj.q = polydem::make_quat(quat(j, 0), quat(j, 1), quat(j, 2), quat(j, 3));
+    pj.s = pscale(j);
+    const auto A = polydem::make_posed(vi, pi);
+    const auto B = polydem::make_posed(vj, pj);
+
+    const auto g = polydem::gjk_intersect(A, B);
+    if (g.status == polydem::STATUS_SEPARATED) {
+      no_contact(i, jj);
+      return;
+    }
+    if (g.status != polydem::STATUS_OK) red.cnt[PairPolyhedron::CNT_NOCONV] += 1.0;
+    const auto ov = polydem::polyhedron_overlap(A, B, ws);
+    if (ov.status != polydem::STATUS_OK) {
+      if (ov.status == polydem::STATUS_OVERFLOW)
+        red.cnt[PairPolyhedron::CNT_OVERFLOW] += 1.0;
+      else if (ov.status == polydem::STATUS_DEGENERATE)
+        red.cnt[PairPolyhedron::CNT_DEGENERATE] += 1.0;
+      no_contact(i, jj);
+      return;
+    }
+    firsttouch(i, jj) = 1;
+    red.cnt[PairPolyhedron::CNT_CONTACTS] += 1.0;
+    const double si = pi.s, sj = pj.s;
+    const double Vi = vi.volume * si * si * si, Vj = vj.volume * sj * sj * sj;
+    if (ov.volume > overlap_warn * (Vi < Vj ? Vi : Vj))
+      red.cnt[PairPolyhedron::CNT_BIGOVERLAP] += 1.0;
+
+    // material, Eqs. 13, 19, 20: the plain style's mixing (damp precomputed
+    // per type pair on the host with the same damping_factor)
+    const int itype = type(i), jtype = type(j);
+    const auto cp = polydem::make_contact_params(
+        youngs(itype), poisson(itype), Vi, rmass(i), youngs(jtype), poisson(jtype), Vj, rmass(j),
+        damp(itype, jtype), mu(itype, jtype), core, shearupdate ? dt : 0.0);
+
+    polydem::ContactGeometry<double> geo;
+    geo.volume = ov.volume;
+    geo.area = ov.area;
+    geo.normal = ov.normal;
+    geo.centroid = ov.centroid;
+    geo.S_A = ov.S_A;
+    geo.M_A = ov.M_A;
+    geo.M_B = ov.M_B;
+    // stored history: displacement of the lower-tag particle relative to the
+    // other one, so that it needs no sign change when the pair is listed the
+    // other way round after reneighboring (FixNeighHistoryKokkos of LAMMPS
+    // 29Sep2021 copies it to the partner unchanged; the plain FixNeighHistory
+    // negates it). Multiplying by +-1 is exact: same numbers as the plain style.
+    const double sign = tag(i) < tag(j) ? 1.0 : -1.0;
+    double hist[SIZE_HISTORY];
+    for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = sign * firstshear(i, SIZE_HISTORY * jj + k);
+    const auto cf =
+        polydem::contact_force(geo, cp, pi.x, pj.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
+                               polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
+                               polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)),
+                               polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2)), hist);
+    if (shearupdate)
+      for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = sign * hist[k];
+
+    const double F[3] = {cf.F_A.x, cf.F_A.y, cf.F_A.z};
+    const double tA[3] = {cf.tau_A.x, cf.tau_A.y, cf.tau_A.z};
+    const double tB[3] = {cf.tau_B.x, cf.tau_B.y, cf.tau_B.z};
+    for (int k = 0; k < 3; k++) {
+      Kokkos::atomic_add(&f(i, k), F[k]);
+      Kokkos::atomic_add(&torque(i, k), tA[k]);
+    }
+    if (newton_pair || j < nlocal)
+      for (int k = 0; k < 3; k++) {
+        Kokkos::atomic_add(&f(j, k), -F[k]);
+        Kokkos::atomic_add(&torque(j, k), tB[k]);
+      }
+
+    // Pair::ev_tally_xyz
+    const bool ti = newton_pair || i < nlocal, tj = newton_pair || j < nlocal;
+    const double e = cf.energy;
+    if (eflag_global) {
+      if (newton_pair)
+        red.evdwl += e;
+      else {
+        if (i < nlocal) red.evdwl += 0.5 * e;
+        if (j < nlocal) red.evdwl += 0.5 * e;
+      }
+    }
+    if (eflag_atom) {
+      if (ti) Kokkos::atomic_add(&eatom(i), 0.5 * e);
+      if (tj) Kokkos::atomic_add(&eatom(j), 0.5 * e);
+    }
+    if (vflag_global || vflag_atom) {
+      const double delx = pi.x.x - pj.x.x, dely = pi.x.y - pj.x.y, delz = pi.x.z - pj.x.z;
+      const double vv[6] = {delx * F[0], dely * F[1], delz * F[2],
+                            delx * F[1], delx * F[2], dely * F[2]};
+      if (vflag_global) {
+        if (newton_pair)
+          for (int k = 0; k < 6; k++) red.v[k] += vv[k];
+        else {
+          if (i < nlocal)
+            for (int k = 0; k < 6; k++) red.v[k] += 0.5 * vv[k];
+          if (j < nlocal)
+            for (int k = 0; k < 6; k++) red.v[k] += 0.5 * vv[k];
+        }
+      }
+      if (vflag_atom) {
+        if (ti)
+          for (int k = 0; k < 6; k++) Kokkos::atomic_add(&vatom(i, k), 0.5 * vv[k]);
+        if (tj)
+          for (int k = 0; k < 6; k++) Kokkos::atomic_add(&vatom(j, k), 0.5 * vv[k]);
+      }
+    }
+  }
+};
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType>
+PairPolyhedronKokkos<DeviceType>::PairPolyhedronKokkos(LAMMPS *lmp) :
+    PairPolyhedron(lmp), avecKK(nullptr), fix_historyKK(nullptr), shape_version(-1), max_faces(0),
+    params_dirty(1), npairs(0), nslots(0)
+{
+  kokkosable = 1;
+  atomKK = (AtomKokkos *) atom;
+  execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | MASK_MASK |
+      TAG_MASK | ENERGY_MASK | VIRIAL_MASK | RMASS_MASK | RADIUS_MASK | POLYDEM_ALL_MASK;
+  datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
+  ws.reset();    // the plain style's host workspace is not used
+}
+
+template <class DeviceType> PairPolyhedronKokkos<DeviceType>::~PairPolyhedronKokkos()
+{
+  if (copymode) return;
+  memoryKK->destroy_kokkos(k_eatom, eatom);
+  memoryKK->destroy_kokkos(k_vatom, vatom);
+  eatom = nullptr;
+  vatom = nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> int PairPolyhedronKokkos<DeviceType>::workspace_max_faces(int nfaces)
+{
+  if (nfaces <= 16) return 16;
+  if (nfaces <= 32) return 32;
+  if (nfaces <= 64) return 64;
+  return 128;
+}
+
+template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::workspace_bytes(int mf)
+{
+  switch (workspace_max_faces(mf)) {
+    case 16:
+      return (double) sizeof(polydem::OverlapWorkspace<double, 16>);
+    case 32:
+      return (double) sizeof(polydem::OverlapWorkspace<double, 32>);
+    case 64:
+      return (double) sizeof(polydem::OverlapWorkspace<double, 64>);
+    default:
+      return (double) sizeof(polydem::OverlapWorkspace<double, 128>);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   the history fix is the Kokkos one; the rest is the plain init_style
+   (checks, size + history neighbor request), made a Kokkos half list
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::init_style()
+{
+  avecKK = AtomVecPolyhedronKokkos::of(atom);
+  if (!avecKK) error->all(FLERR, "pair_style polyhedron/kk requires atom_style polyhedron/kk");
+  // FixNeighHistoryKokkos keeps the history of a pair with a ghost atom only
+  // on the owner of i (its pre_exchange has no reverse communication): with
+  // newton on, a pair whose owner changes at reneighboring would lose it
+  if (force->newton_pair)
+    error->all(FLERR,
+               "pair_style polyhedron/kk requires newton pair off: use "
+               "'-pk kokkos newton off' or 'package kokkos newton off' (default on GPUs)");
+
+  if (fix_history == nullptr) {
+    const std::string style = std::string("NEIGH_HISTORY/POLYHEDRON/KK/") +
+        (execution_space == Device ? "DEVICE" : "HOST");
+    (*modify->fix_map)[style] = &FixNeighHistoryPolyhedronKokkos<DeviceType>::create;
+    auto cmd = fmt::format("NEIGH_HISTORY_POLY{} all {} {}", instance_me, style, SIZE_HISTORY);
+    fix_history = (FixNeighHistory *) modify->replace_fix(
+        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(instance_me), cmd, 1);
+    fix_history->pair = this;
+  }
+
+  PairPolyhedron::init_style();
+  fix_historyKK = (FixNeighHistoryKokkos<DeviceType> *) fix_history;
+
+  // a half list whatever 'package kokkos neigh' says: each pair once, with
+  // one history slot; forces go to both atoms with atomics
+  int irequest = neighbor->nrequest - 1;
+  neighbor->requests[irequest]->kokkos_host = std::is_same<DeviceType, LMPHostType>::value &&
+      !std::is_same<DeviceType, LMPDeviceType>::value;
+  neighbor->requests[irequest]->kokkos_device = std::is_same<DeviceType, LMPDeviceType>::value;
+  neighbor->requests[irequest]->full = 0;
+  neighbor->requests[irequest]->half = 1;
+
+  shape_version = -1;
+  params_dirty = 1;
+}
+
+/* ----------------------------------------------------------------------
+   flat device copy of all templates (vertices, planes, face loops, edges)
+   and one ShapeView per template whose pointers address that copy
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes()
+{
+  if (shape_version == avecKK->shape_version()) return;
+  AtomVecPolyhedron *av = avecKK;
+  const int n = av->ntemplates();
+  if (n == 0) error->all(FLERR, "pair_style polyhedron/kk: no shape defined (polyhedron_shape)");
+  int nv = 0, np = 0, nfs = 0, nfv = 0, ne = 0;
+  max_faces = 0;
+  for (int t = 0; t < n; t++) {
+    const auto sv = av->shape(t).view();
+    nv += 3 * sv.nverts;
+    np += 4 * sv.nfaces;
+    nfs += sv.nfaces + 1;
+    nfv += sv.face_start[sv.nfaces];
+    ne += 2 * sv.nedges;
+    max_faces = std::max(max_faces, sv.nfaces);
+  }
+  d_sverts = Kokkos::View<double *, DeviceType>("polyhedron/kk:verts", nv);
+  d_splanes = Kokkos::View<double *, DeviceType>("polyhedron/kk:planes", np);
+  d_sface_start = Kokkos::View<int *, DeviceType>("polyhedron/kk:face_start", nfs);
+  d_sface_verts = Kokkos::View<int *, DeviceType>("polyhedron/kk:face_verts", nfv);
+  d_sedges = Kokkos::View<int *, DeviceType>("polyhedron/kk:edges", ne);
+  d_shapes = Kokkos::View<polydem::ShapeView<double> *, DeviceType>("polyhedron/kk:shapes", n);
+  auto h_verts = Kokkos::create_mirror_view(d_sverts);
+  auto h_planes = Kokkos::create_mirror_view(d_splanes);
+  auto h_fs = Kokkos::create_mirror_view(d_sface_start);
+  auto h_fv = Kokkos::create_mirror_view(d_sface_verts);
+  auto h_edges = Kokkos::create_mirror_view(d_sedges);
+  auto h_shapes = Kokkos::create_mirror_view(d_shapes);
+  nv = np = nfs = nfv = ne = 0;
+  for (int t = 0; t < n; t++) {
+    const auto sv = av->shape(t).view();
+    const int nface_verts = sv.face_start[sv.nfaces];
+    for (int k = 0; k < 3 * sv.nverts; k++) h_verts(nv + k) = sv.verts[k];
+    for (int k = 0; k < 4 * sv.nfaces; k++) h_planes(np + k) = sv.planes[k];
+    for (int k = 0; k <= sv.nfaces; k++) h_fs(nfs + k) = sv.face_start[k];
+    for (int k = 0; k < nface_verts; k++) h_fv(nfv + k) = sv.face_verts[k];
+    for (int k = 0; k < 2 * sv.nedges; k++) h_edges(ne + k) = sv.edges[k];
+    polydem::ShapeView<double> dv = sv;    // counts, radius, volume, inertia
+    dv.verts = d_sverts.data() + nv;
+    dv.planes = d_splanes.data() + np;
+    dv.face_start = d_sface_start.data() + nfs;
+    dv.face_verts = d_sface_verts.data() + nfv;
+    dv.edges = d_sedges.data() + ne;
+    h_shapes(t) = dv;
+    nv += 3 * sv.nverts;
+    np += 4 * sv.nfaces;
+    nfs += sv.nfaces + 1;
+    nfv += nface_verts;
+    ne += 2 * sv.nedges;
+  }
+  Kokkos::deep_copy(d_sverts, h_verts);
+  Kokkos::deep_copy(d_splanes, h_planes);
+  Kokkos::deep_copy(d_sface_start, h_fs);
+  Kokkos::deep_copy(d_sface_verts, h_fv);
+  Kokkos::deep_copy(d_sedges, h_edges);
+  Kokkos::deep_copy(d_shapes, h_shapes);
+  shape_version = avecKK->shape_version();
+}
+
+/* ----------------------------------------------------------------------
+   per-type material after init_one has mixed the unlike pairs
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_params()
+{
+  if (!params_dirty) return;
+  const int n = atom->ntypes;
+  d_youngs = Kokkos::View<double *, DeviceType>("polyhedron/kk:youngs", n + 1);
+  d_poisson = Kokkos::View<double *, DeviceType>("polyhedron/kk:poisson", n + 1);
+  d_damp = Kokkos::View<double **, DeviceType>("polyhedron/kk:damp", n + 1, n + 1);
+  d_mu = Kokkos::View<double **, DeviceType>("polyhedron/kk:mu", n + 1, n + 1);
+  auto h_youngs = Kokkos::create_mirror_view(d_youngs);
+  auto h_poisson = Kokkos::create_mirror_view(d_poisson);
+  auto h_damp = Kokkos::create_mirror_view(d_damp);
+  auto h_mu = Kokkos::create_mirror_view(d_mu);
+  for (int i = 1; i <= n; i++) {
+    h_youngs(i) = youngs[i];
+    h_poisson(i) = poisson[i];
+    for (int j = 1; j <= n; j++) {
+      h_damp(i, j) = restitution[i][j] > 0.0 ? polydem::damping_factor(restitution[i][j]) : 0.0;
+      h_mu(i, j) = friction[i][j];
+    }
+  }
+  Kokkos::deep_copy(d_youngs, h_youngs);
+  Kokkos::deep_copy(d_poisson, h_poisson);
+  Kokkos::deep_copy(d_damp, h_damp);
+  Kokkos::deep_copy(d_mu, h_mu);
+  params_dirty = 0;
+}
+
+/* ----------------------------------------------------------------------
+   contact-pair array (seed §2.2): count -> exclusive scan -> fill
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
+{
+  auto *k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
+  const int inum = list->inum;
+  if ((int) d_count.extent(0) < inum + 1) {
+    d_count = Kokkos::View<int *, DeviceType>("polyhedron/kk:count", inum + 1 + inum / 5);
+    d_offset = Kokkos::View<int *, DeviceType>("polyhedron/kk:offset", d_count.extent(0));
+  }
+
+  PolyCandidateFunctor<DeviceType, false> cnt;
+  cnt.x = atomKK->k_x.view<DeviceType>();
+  cnt.radius = atomKK->k_radius.view<DeviceType>();
+  cnt.ilist = k_list->d_ilist;
+  cnt.numneigh = k_list->d_numneigh;
+  cnt.neighbors = k_list->d_neighbors;
+  cnt.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
+  cnt.firstshear = fix_historyKK->k_firstvalue.template view<DeviceType>();
+  cnt.count = d_count;
+  cnt.offset = d_offset;
+  const int nlocal = atom->nlocal;
+  cnt.count_partners = neighbor->ago == 0;
+  if (cnt.count_partners) {
+    if ((int) d_npartner.extent(0) < nlocal)
+      d_npartner = Kokkos::View<int *, DeviceType>("polyhedron/kk:npartner", atom->nmax);
+    Kokkos::deep_copy(d_npartner, 0);
+  }
+  cnt.npartner = d_npartner;
+  cnt.nlocal = nlocal;
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), cnt);
+  if (cnt.count_partners) ensure_partners(nlocal);
+
+  PolyScanFunctor<DeviceType> scan;
+  scan.count = d_count;
+  scan.offset = d_offset;
+  scan.inum = inum;
+  int total = 0;
+  Kokkos::parallel_scan(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum + 1),
+                        scan, total);
+  npairs = total;
+  if ((int) d_pairs.extent(0) < npairs)
+    d_pairs = Kokkos::View<int *[2], DeviceType>("polyhedron/kk:pairs", npairs + npairs / 5 + 16);
+
+  PolyCandidateFunctor<DeviceType, true> fill;
+  fill.x = cnt.x;
+  fill.radius = cnt.radius;
+  fill.ilist = cnt.ilist;
+  fill.numneigh = cnt.numneigh;
+  fill.neighbors = cnt.neighbors;
+  fill.firsttouch = cnt.firsttouch;
+  fill.firstshear = cnt.firstshear;
+  fill.count = d_count;
+  fill.offset = d_offset;
+  fill.pairs = d_pairs;
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), fill);
+}
+
+/* ----------------------------------------------------------------------
+   FixNeighHistoryKokkos of LAMMPS 29Sep2021 grows its partner arrays in
+   pre_exchange without refreshing the device views it writes through
+   (out-of-bounds writes, lost history), and its rows have a fixed
+   capacity that unpack_exchange assumes equal on all ranks. Keep one
+   capacity on all ranks, above the number of list entries of every local
+   atom, set at each reneighboring (collective: all ranks reneighbor
+   together); grow_arrays() reallocates and refreshes the views.
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::ensure_partners(int nlocal)
+{
+  PolyMaxFunctor<DeviceType> fmax;
+  fmax.npartner = d_npartner;
+  int mine = 0, most = 0;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, nlocal),
+                          fmax, mine);
+  MPI_Allreduce(&mine, &most, 1, MPI_INT, MPI_MAX, world);
+  int &cap = HistoryAccess::capacity(fix_history);
+  if (most > cap) {
+    cap = most + 8;
+    fix_history->grow_arrays(atom->nmax);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   narrow phase over the pair array in batches of nslots pairs, one
+   preallocated OverlapWorkspace<double, MF> per slot
+------------------------------------------------------------------------- */
+
+template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceType>::run_pairs()
+{
+  typedef polydem::OverlapWorkspace<double, MF> Workspace;
+  const double budget = execution_space == Device ? WORKSPACE_BUDGET_DEVICE : WORKSPACE_BUDGET_HOST;
+  const int maxslots = std::max(1, (int) (budget / sizeof(Workspace)));
+  const int want = std::min(npairs, maxslots);
+  if (want <= 0) return;
+  if ((double) d_workspace.extent(0) < (double) want * sizeof(Workspace)) {
+    d_workspace = Kokkos::View<char *, DeviceType>();
+    d_workspace = Kokkos::View<char *, DeviceType>(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "polyhedron/kk:workspace"),
+        (size_t) want * sizeof(Workspace));
+  }
+  nslots = (int) (d_workspace.extent(0) / sizeof(Workspace));
+
+  PolyContactFunctor<DeviceType, MF> fn;
+  fn.x = atomKK->k_x.view<DeviceType>();
+  fn.v = atomKK->k_v.view<DeviceType>();
+  fn.omega = atomKK->k_omega.view<DeviceType>();
+  fn.f = atomKK->k_f.view<DeviceType>();
+  fn.torque = atomKK->k_torque.view<DeviceType>();
+  fn.radius = atomKK->k_radius.view<DeviceType>();
+  fn.rmass = atomKK->k_rmass.view<DeviceType>();
+  fn.pscale = avecKK->k_pscale.view<DeviceType>();
+  fn.type = atomKK->k_type.view<DeviceType>();
+  fn.pshape = avecKK->k_pshape.view<DeviceType>();
+  fn.tag = atomKK->k_tag.view<DeviceType>();
+  fn.quat = avecKK->k_quat.view<DeviceType>();
+  fn.neighbors = static_cast<NeighListKokkos<DeviceType> *>(list)->d_neighbors;
+  fn.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
+  fn.firstshear = fix_historyKK->k_firstvalue.template view<DeviceType>();
+  fn.pairs = d_pairs;
+  fn.shapes = d_shapes;
+  fn.youngs = d_youngs;
+  fn.poisson = d_poisson;
+  fn.damp = d_damp;
+  fn.mu = d_mu;
+  fn.workspace = d_workspace;
+  if (eflag_atom) fn.eatom = k_eatom.template view<DeviceType>();
+  if (vflag_atom) fn.vatom = k_vatom.template view<DeviceType>();
+  fn.nlocal = atom->nlocal;
+  fn.newton_pair = force->newton_pair;
+  fn.shearupdate = update->setupflag ? 0 : 1;
+  fn.eflag_global = eflag_global;
+  fn.eflag_atom = eflag_atom;
+  fn.vflag_global = vflag_global;
+  fn.vflag_atom = vflag_atom;
+  fn.dt = update->dt;
+  fn.overlap_warn = overlap_warn;
+  fn.core = core;
+
+  PolyReduce total;
+  for (int first = 0; first < npairs; first += nslots) {
+    fn.first = first;
+    PolyReduce red;
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(
+                                first, std::min(npairs, first + nslots)),
+                            fn, red);
+    total += red;
+  }
+
+  if (eflag_global) eng_vdwl += total.evdwl;
+  if (vflag_global)
+    for (int k = 0; k < 6; k++) virial[k] += total.v[k];
+  for (int k = 0; k < NCOUNT; k++) local_counts[k] += total.cnt[k];
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag, 0);
+  dt = update->dt;
+
+  if (eflag_atom) {
+    memoryKK->destroy_kokkos(k_eatom, eatom);
+    memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
+  }
+  if (vflag_atom) {
+    memoryKK->destroy_kokkos(k_vatom, vatom);
+    memoryKK->create_kokkos(k_vatom, vatom, maxvatom, "pair:vatom");
+  }
+
+  update_shapes();
+  update_params();
+
+  atomKK->sync(execution_space, datamask_read);
+  if (eflag || vflag)
+    atomKK->modified(execution_space, datamask_modify);
+  else
+    atomKK->modified(execution_space, F_MASK | TORQUE_MASK);
+
+  fix_historyKK->k_firstflag.template sync<DeviceType>();
+  fix_historyKK->k_firstvalue.template sync<DeviceType>();
+
+  build_pairs();
+  switch (workspace_max_faces(max_faces)) {
+    case 16:
+      run_pairs<16>();
+      break;
+    case 32:
+      run_pairs<32>();
+      break;
+    case 64:
+      run_pairs<64>();
+      break;
+    default:
+      run_pairs<128>();
+      break;
+  }
+
+  fix_historyKK->k_firstflag.template modify<DeviceType>();
+  fix_historyKK->k_firstvalue.template modify<DeviceType>();
+
+  if (eflag_atom) {
+    k_eatom.template modify<DeviceType>();
+    k_eatom.template sync<LMPHostType>();
+  }
+  if (vflag_atom) {
+    k_vatom.template modify<DeviceType>();
+    k_vatom.template sync<LMPHostType>();
+  }
+
+  if (neighbor->ago == 0) report_counters(false);
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::memory_usage()
+{
+  double bytes = Pair::memory_usage();
+  bytes += (double) d_workspace.extent(0);
+  bytes += (double) (d_count.extent(0) + d_offset.extent(0) + 2 * d_pairs.extent(0)) * sizeof(int);
+  bytes += (double) (d_sverts.extent(0) + d_splanes.extent(0)) * sizeof(double);
+  bytes += (double) (d_sface_start.extent(0) + d_sface_verts.extent(0) + d_sedges.extent(0)) *
+      sizeof(int);
+  return bytes;
+}
+
+namespace LAMMPS_NS {
+template class PairPolyhedronKokkos<LMPDeviceType>;
+#ifdef LMP_KOKKOS_GPU
+template class PairPolyhedronKokkos<LMPHostType>;
+#endif
+}    // namespace LAMMPS_NS

@@ -1,0 +1,280 @@
+// pair_style polyhedron/kk against the plain pair_style polyhedron (issue 4,
+// acceptance item 5): a dense periodic packing of a few hundred randomly
+// oriented, spinning, moving cubes and dodecahedra on a simple cubic lattice
+// with small random displacements, so that most neighbours overlap a little;
+// friction on, so that the contact history matters. Per-atom forces and
+// torques after "run 0", and positions, velocities, forces and torques after
+// 100 steps, of "-k on -sf kk" (Kokkos Serial here) must agree with the plain
+// styles to 1e-12 relative; so must the potential energy, the pressure (virial)
+// and the number of contacts. Run on 1 rank and under mpirun -np 2 (both
+// instances then use the same 2-rank decomposition).
+
+#include "polydem_lmp.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "force.h"
+#include "kokkos.h"
+#include "neighbor.h"
+#include "pair_polyhedron.h"
+#include "pair_polyhedron_kokkos.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+using polydem_test::Lmp;
+using polydem_test::potentials;
+
+namespace {
+
+// newton off: FixNeighHistoryKokkos keeps no history for ghost partners under
+// newton on, so the /kk pair style requires it (the default on GPUs)
+const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
+
+// sorting every 50 steps: atoms are permuted with their contact history.
+// 8 x 8 x 6 lattice sites (spacing 1): half cubes (edge 0.95: in-radius
+// 0.475, circumradius 0.82), half dodecahedra (edge 0.43: 0.48 / 0.60).
+// Contact time (printed by the pair style) about 0.02, dt = 1e-4.
+std::vector<std::string> setup()
+{
+  return {"units lj",
+          "atom_style polyhedron",
+          "atom_modify map array sort 50 0.0",
+          "comm_modify vel yes",
+          "newton off",
+          "boundary p p p",
+          "lattice sc 1.0",
+          "region box block 0 8 0 8 0 6",
+          "create_box 2 box",
+          "polyhedron_shape cube " + potentials() + "/cube.shape",
+          "polyhedron_shape dode " + potentials() + "/dodecahedron.shape",
+          "create_atoms 1 box",
+          "set type 1 type/fraction 2 0.5 8123",
+          "displace_atoms all random 0.04 0.04 0.04 4242 units box",
+          "polyhedron_set type 1 shape cube scale 0.95 density 1.0 quat/random 17",
+          "polyhedron_set type 2 shape dode scale 0.43 density 1.5 quat/random 18",
+          "variable m0 atom id%4==0",
+          "variable m1 atom id%4==1",
+          "variable m2 atom id%4==2",
+          "group g0 variable m0",
+          "group g1 variable m1",
+          "group g2 variable m2",
+          "polyhedron_set group g0 omega 3.0 -1.0 2.0",
+          "polyhedron_set group g1 omega -2.0 4.0 0.5",
+          "polyhedron_set group g2 omega 0.7 1.5 -3.5",
+          "velocity all create 2.0 5151 loop geom",
+          "pair_style polyhedron overlap/warn 1.0",
+          "pair_coeff * * 1.0e4 0.3 0.7 0.5",
+          "pair_coeff 1 2 0.8 0.3",
+          "neighbor 0.01 bin",
+          "neigh_modify every 1 delay 0 check yes",
+          "fix 1 all nve/polyhedron",
+          "timestep 1.0e-4",
+          "thermo_style custom step pe ke press",
+          "thermo 50"};
+}
+
+// per atom, sorted by ID, gathered to every rank: id, x, v, f, torque
+constexpr int REC = 1 + 3 + 3 + 3 + 3;
+
+std::vector<double> gather(Lmp &l)
+{
+  auto *a = l.lmp->atom;
+  if (l.lmp->kokkos) ((LAMMPS_NS::AtomKokkos *) a)->sync(LAMMPS_NS::Host, ALL_MASK);
+  std::vector<double> mine;
+  for (int i = 0; i < a->nlocal; i++) {
+    mine.push_back((double) a->tag[i]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->x[i][k]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->v[i][k]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->f[i][k]);
+    for (int k = 0; k < 3; k++) mine.push_back(a->torque[i][k]);
+  }
+  int nprocs;
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  int n = (int) mine.size();
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  int total = 0;
+  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
+                 MPI_COMM_WORLD);
+  std::vector<std::vector<double>> recs;
+  for (int i = 0; i < total; i += REC) recs.emplace_back(all.begin() + i, all.begin() + i + REC);
+  std::sort(recs.begin(), recs.end());
+  std::vector<double> out;
+  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
+  return out;
+}
+
+// max over atoms of |a - b| (3-vector at field offset off) divided by the
+// largest |b| of that field over all atoms
+double normwise(const std::vector<double> &a, const std::vector<double> &b, int off)
+{
+  double dmax = 0.0, bmax = 0.0;
+  for (size_t r = 0; r < b.size(); r += REC) {
+    double d2 = 0.0, b2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+      const double d = a[r + off + k] - b[r + off + k];
+      d2 += d * d;
+      b2 += b[r + off + k] * b[r + off + k];
+    }
+    dmax = std::max(dmax, std::sqrt(d2));
+    bmax = std::max(bmax, std::sqrt(b2));
+  }
+  return bmax > 0.0 ? dmax / bmax : dmax;
+}
+
+// max over atoms with |b| > 1e-6 max|b| of |a - b| / |b|
+double peratom(const std::vector<double> &a, const std::vector<double> &b, int off)
+{
+  double bmax = 0.0;
+  for (size_t r = 0; r < b.size(); r += REC) {
+    double b2 = 0.0;
+    for (int k = 0; k < 3; k++) b2 += b[r + off + k] * b[r + off + k];
+    bmax = std::max(bmax, std::sqrt(b2));
+  }
+  double worst = 0.0;
+  for (size_t r = 0; r < b.size(); r += REC) {
+    double d2 = 0.0, b2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+      const double d = a[r + off + k] - b[r + off + k];
+      d2 += d * d;
+      b2 += b[r + off + k] * b[r + off + k];
+    }
+    if (std::sqrt(b2) > 1e-6 * bmax) worst = std::max(worst, std::sqrt(d2 / b2));
+  }
+  return worst;
+}
+
+double contacts(Lmp &l)
+{
+  auto *p = dynamic_cast<LAMMPS_NS::PairPolyhedron *>(l.lmp->force->pair);
+  return p ? p->counters[LAMMPS_NS::PairPolyhedron::CNT_CONTACTS] : -1.0;
+}
+
+int me()
+{
+  int r;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+void compare(Lmp &plain, Lmp &kk, const char *when, bool positions)
+{
+  const auto a = gather(kk), b = gather(plain);
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_GT(b.size(), 0u);
+  for (size_t r = 0; r < b.size(); r += REC) ASSERT_EQ(a[r], b[r]) << "atom IDs differ";
+  const double ef = normwise(a, b, 7), et = normwise(a, b, 10);
+  const double pf = peratom(a, b, 7), pt = peratom(a, b, 10);
+  const double ex = normwise(a, b, 1) / 8.0, ev = normwise(a, b, 4);
+  const double pe_p = plain.thermo("pe"), pe_k = kk.thermo("pe");
+  const double pr_p = plain.thermo("press"), pr_k = kk.thermo("press");
+  if (me() == 0)
+    std::printf("[%s] %zu atoms, contacts plain %.0f kk %.0f; max rel. diff kk vs plain: "
+                "force %.3g (per atom %.3g), torque %.3g (per atom %.3g), x %.3g, v %.3g, "
+                "pe %.3g, press %.3g\n",
+                when, b.size() / REC, contacts(plain), contacts(kk), ef, pf, et, pt, ex, ev,
+                std::fabs(pe_k - pe_p) / std::fabs(pe_p), std::fabs(pr_k - pr_p) / std::fabs(pr_p));
+  EXPECT_LE(ef, 1e-12);
+  EXPECT_LE(et, 1e-12);
+  EXPECT_LE(pf, 1e-10);
+  EXPECT_LE(pt, 1e-10);
+  if (positions) {
+    EXPECT_LE(ex, 1e-12);
+    EXPECT_LE(ev, 1e-12);
+  }
+  EXPECT_GT(contacts(plain), 0.5 * b.size() / REC);
+  EXPECT_EQ(contacts(plain), contacts(kk));
+  EXPECT_NEAR(pe_k, pe_p, 1e-12 * std::fabs(pe_p));
+  EXPECT_NEAR(pr_k, pr_p, 1e-12 * std::fabs(pr_p));
+  // no kernel failures in either run
+  for (Lmp *l : {&plain, &kk}) {
+    auto *p = dynamic_cast<LAMMPS_NS::PairPolyhedron *>(l->lmp->force->pair);
+    ASSERT_NE(p, nullptr);
+    EXPECT_EQ(p->counters[LAMMPS_NS::PairPolyhedron::CNT_OVERFLOW], 0.0);
+    EXPECT_EQ(p->counters[LAMMPS_NS::PairPolyhedron::CNT_DEGENERATE], 0.0);
+  }
+}
+
+}    // namespace
+
+TEST(PairKokkos, DensePackingMatchesPlain)
+{
+  Lmp plain, kk(KK);
+  plain.cmds(setup());
+  kk.cmds(setup());
+  EXPECT_EQ(std::string(kk.lmp->force->pair_style), "polyhedron/kk");
+  plain.cmd("run 0");
+  kk.cmd("run 0");
+  compare(plain, kk, "run 0", true);
+  // the history crosses a run boundary (post_run -> setup_post_neighbor)
+  plain.cmd("run 5");
+  kk.cmd("run 5");
+  compare(plain, kk, "run 5", true);
+  plain.cmd("run 0");
+  kk.cmd("run 0");
+  compare(plain, kk, "run 5 + run 0", true);
+  // and reneighborings inside the run (skin 0.01: every few tens of steps)
+  plain.cmd("run 100");
+  kk.cmd("run 100");
+  compare(plain, kk, "run 100", true);
+  EXPECT_GE(kk.lmp->neighbor->ncalls, 2) << "no reneighboring during the run";
+  if (me() == 0)
+    std::printf("[run 100] neighbor list builds: plain %d kk %d\n", plain.lmp->neighbor->ncalls,
+                kk.lmp->neighbor->ncalls);
+}
+
+// the same style run as /kk/host must give the same numbers
+TEST(PairKokkos, HostVariantMatchesPlain)
+{
+  Lmp plain, kk({"-k", "on", "-pk", "kokkos", "newton", "off"});
+  plain.cmds(setup());
+  auto s = setup();
+  for (auto &c : s) {
+    if (c == "atom_style polyhedron") c = "atom_style polyhedron/kk";
+    if (c == "pair_style polyhedron overlap/warn 1.0")
+      c = "pair_style polyhedron/kk/host overlap/warn 1.0";
+    if (c == "fix 1 all nve/polyhedron") c = "fix 1 all nve/polyhedron/kk";
+  }
+  s.push_back("run_style verlet/kk");
+  kk.cmds(s);
+  plain.cmd("run 20");
+  kk.cmd("run 20");
+  compare(plain, kk, "kk/host run 20", true);
+}
+
+TEST(PairKokkos, RequiresNewtonOff)
+{
+  Lmp kk({"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "on"});
+  auto s = setup();
+  for (auto &c : s)
+    if (c == "newton off") c = "newton on";
+  kk.cmds(s);
+  const auto msg = kk.error_of("run 0");
+  EXPECT_NE(msg.find("requires newton pair off"), std::string::npos) << msg;
+}
+
+// overlap workspaces per pair slot: sized by the largest face count present
+TEST(PairKokkos, WorkspaceFollowsFaceCount)
+{
+  using PK = LAMMPS_NS::PairPolyhedronKokkos<LMPDeviceType>;
+  EXPECT_EQ(PK::workspace_max_faces(6), 16);
+  EXPECT_EQ(PK::workspace_max_faces(12), 16);
+  EXPECT_EQ(PK::workspace_max_faces(17), 32);
+  EXPECT_EQ(PK::workspace_max_faces(40), 64);
+  EXPECT_EQ(PK::workspace_max_faces(128), 128);
+  double last = 0.0;
+  for (int mf : {16, 32, 64, 128}) {
+    const double b = PK::workspace_bytes(mf);
+    if (me() == 0) std::printf("[workspace] MaxFaces %3d: %.0f bytes per pair slot\n", mf, b);
+    EXPECT_GT(b, last);
+    last = b;
+  }
+}
