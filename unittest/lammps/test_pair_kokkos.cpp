@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -276,5 +277,44 @@ TEST(PairKokkos, WorkspaceFollowsFaceCount)
     if (me() == 0) std::printf("[workspace] MaxFaces %3d: %.0f bytes per pair slot\n", mf, b);
     EXPECT_GT(b, last);
     last = b;
+  }
+}
+
+// per-atom energy and virial (eflag_atom, vflag_atom paths): sums and maxima
+TEST(PairKokkos, PerAtomEnergyAndVirialMatchPlain)
+{
+  Lmp plain, kk(KK);
+  const std::vector<std::string> extra = {
+      "compute pa all pe/atom pair",
+      "compute sa all stress/atom NULL pair",
+      "compute r all reduce sum c_pa c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]",
+      "compute m all reduce max c_pa c_sa[1] c_sa[2] c_sa[3] c_sa[4] c_sa[5] c_sa[6]",
+      "thermo_style custom step pe press c_r[*] c_m[*]",
+      "thermo 10"};
+  for (Lmp *l : {&plain, &kk}) {
+    l->cmds(setup());
+    l->cmds(extra);
+  }
+  for (int n : {0, 10}) {
+    plain.cmd("run " + std::to_string(n));
+    kk.cmd("run " + std::to_string(n));
+    for (const char *id : {"r", "m"}) {
+      auto *a = (double *) lammps_extract_compute(plain.lmp, id, LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
+      auto *b = (double *) lammps_extract_compute(kk.lmp, id, LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
+      ASSERT_NE(a, nullptr);
+      ASSERT_NE(b, nullptr);
+      double worst = 0.0;
+      for (int k = 0; k < 7; k++) {
+        EXPECT_NEAR(b[k], a[k], 1e-12 * std::fabs(a[k]) + 1e-300) << id << "[" << k + 1 << "]";
+        worst = std::max(worst, std::fabs(b[k] - a[k]) / std::fabs(a[k]));
+      }
+      if (me() == 0)
+        std::printf("[per-atom] run %d, reduce %s of pe/atom, stress/atom: max rel. diff %.3g\n", n,
+                    std::strcmp(id, "r") == 0 ? "sum" : "max", worst);
+    }
+    // the sum of pe/atom is the pair energy
+    auto *a = (double *) lammps_extract_compute(kk.lmp, "r", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
+    const double natoms = (double) kk.lmp->atom->natoms;
+    EXPECT_NEAR(a[0] / natoms, kk.thermo("pe"), 1e-12 * std::fabs(kk.thermo("pe")));
   }
 }
