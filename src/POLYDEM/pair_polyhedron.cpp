@@ -345,14 +345,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
           rmass[j], polydem::damping_factor(restitution[itype][jtype]), friction[itype][jtype],
           core, shearupdate ? dt : 0.0);
 
-      polydem::ContactGeometry<double> geo;
-      geo.volume = ov.volume;
-      geo.area = ov.area;
-      geo.normal = ov.normal;
-      geo.centroid = ov.centroid;
-      geo.S_A = ov.S_A;
-      geo.M_A = ov.M_A;
-      geo.M_B = ov.M_B;
+      const auto geo = polydem::contact_geometry<double>(ov);
       double hist[3] = {shear[0], shear[1], shear[2]};
       const auto cf = polydem::contact_force(
           geo, p, pi.x, pj.x, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),

@@ -263,14 +263,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
         youngs(itype), poisson(itype), Vi, rmass(i), youngs(jtype), poisson(jtype), Vj, rmass(j),
         damp(itype, jtype), mu(itype, jtype), core, shearupdate ? dt : 0.0);
 
-    polydem::ContactGeometry<double> geo;
-    geo.volume = ov.volume;
-    geo.area = ov.area;
-    geo.normal = ov.normal;
-    geo.centroid = ov.centroid;
-    geo.S_A = ov.S_A;
-    geo.M_A = ov.M_A;
-    geo.M_B = ov.M_B;
+    const auto geo = polydem::contact_geometry<double>(ov);
     // stored history: displacement of the lower-tag particle relative to the
     // other one, so that it needs no sign change when the pair is listed the
     // other way round after reneighboring (FixNeighHistoryKokkos of LAMMPS

@@ -150,6 +150,22 @@ template <typename T> struct ContactGeometry {
   Vec3<T> S_A, M_A, M_B;
 };
 
+// The fields of an overlap result (polydem_overlap.h OverlapResult) that the
+// model uses.
+template <typename T, typename Overlap>
+POLYDEM_FN ContactGeometry<T> contact_geometry(const Overlap &ov)
+{
+  ContactGeometry<T> g;
+  g.volume = ov.volume;
+  g.area = ov.area;
+  g.normal = ov.normal;
+  g.centroid = ov.centroid;
+  g.S_A = ov.S_A;
+  g.M_A = ov.M_A;
+  g.M_B = ov.M_B;
+  return g;
+}
+
 // shear: accumulated tangential displacement (in/out, 3 values). With
 // mu = 0 the tangential part is skipped and shear is zeroed.
 template <typename T>
