@@ -49,6 +49,7 @@ class PairPolyhedron : public Pair {
   double *youngs, *poisson;    // per type
   int *matset;                 // per type: material given
   double **restitution, **friction;
+  double **dampratio;          // damping_factor(restitution), set in init_one
   int **pairset;               // explicit e, mu for an unlike pair
   double overlap_warn;         // warn for V > overlap_warn * smaller particle volume
   double core;                 // quadratic W below V0 = core * smaller particle volume
