@@ -50,17 +50,21 @@ PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
   ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
 
   // placeholder so that the history fix keeps its place in the fix list
+  history_id = 0;
+  while (modify->find_fix("NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id)) >= 0 ||
+         modify->find_fix("NEIGH_HISTORY_POLY" + std::to_string(history_id)) >= 0)
+    history_id++;
   fix_dummy = (FixDummy *) modify->add_fix("NEIGH_HISTORY_POLY_DUMMY" +
-                                           std::to_string(instance_me) + " all DUMMY");
+                                           std::to_string(history_id) + " all DUMMY");
 }
 
 PairPolyhedron::~PairPolyhedron()
 {
   if (copymode) return;
   if (!fix_history)
-    modify->delete_fix("NEIGH_HISTORY_POLY_DUMMY" + std::to_string(instance_me));
+    modify->delete_fix("NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id));
   else
-    modify->delete_fix("NEIGH_HISTORY_POLY" + std::to_string(instance_me));
+    modify->delete_fix("NEIGH_HISTORY_POLY" + std::to_string(history_id));
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -201,12 +205,13 @@ void PairPolyhedron::init_style()
   dt = update->dt;
 
   if (fix_history == nullptr) {
-    auto cmd = fmt::format("NEIGH_HISTORY_POLY{} all NEIGH_HISTORY {}", instance_me, SIZE_HISTORY);
+    auto cmd =
+        fmt::format("NEIGH_HISTORY_POLY{} all NEIGH_HISTORY {}", history_id, SIZE_HISTORY);
     fix_history = (FixNeighHistory *) modify->replace_fix(
-        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(instance_me), cmd, 1);
+        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id), cmd, 1);
     fix_history->pair = this;
   }
-  int ifix = modify->find_fix("NEIGH_HISTORY_POLY" + std::to_string(instance_me));
+  int ifix = modify->find_fix("NEIGH_HISTORY_POLY" + std::to_string(history_id));
   if (ifix < 0) error->all(FLERR, "pair_style polyhedron: history fix not found");
   fix_history = (FixNeighHistory *) modify->fix[ifix];
 

@@ -58,6 +58,10 @@ class PairPolyhedron : public Pair {
   class AtomVecPolyhedron *avec;
   class FixDummy *fix_dummy;
   class FixNeighHistory *fix_history;
+  // suffix of the history fix ID: counts polyhedron pair styles of this
+  // LAMMPS instance (Pair::instance_me counts all instances of the process,
+  // so with several LAMMPS objects a restart would not find its history)
+  int history_id;
   std::unique_ptr<polydem::OverlapWorkspace<double, 128>> ws;
   double local_counts[NCOUNT];
   double reported[NCOUNT];

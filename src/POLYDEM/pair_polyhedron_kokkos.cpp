@@ -404,9 +404,9 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::init_style()
     const std::string style = std::string("NEIGH_HISTORY/POLYHEDRON/KK/") +
         (execution_space == Device ? "DEVICE" : "HOST");
     (*modify->fix_map)[style] = &FixNeighHistoryPolyhedronKokkos<DeviceType>::create;
-    auto cmd = fmt::format("NEIGH_HISTORY_POLY{} all {} {}", instance_me, style, SIZE_HISTORY);
+    auto cmd = fmt::format("NEIGH_HISTORY_POLY{} all {} {}", history_id, style, SIZE_HISTORY);
     fix_history = (FixNeighHistory *) modify->replace_fix(
-        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(instance_me), cmd, 1);
+        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id), cmd, 1);
     fix_history->pair = this;
   }
 
