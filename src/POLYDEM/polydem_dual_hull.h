@@ -82,6 +82,19 @@ namespace hull_detail {
     const T *q = w.pl + 4 * l;
     return q[0] * p.x + q[1] * p.y + q[2] * p.z - q[3];
   }
+  // fan triangle (F_a, P_t, P_t2) of face a = tc[t][e]: plane normal n, foot
+  // F_a = h_a n of the origin, the edge P_t -> P_t2; returns its signed area
+  template <typename T, int MP>
+  POLYDEM_FN T fan_triangle(const DualHullWorkspace<T, MP> &w, int t, int e, Vec3<T> &n,
+                            Vec3<T> &F, Vec3<T> &p1, Vec3<T> &p2)
+  {
+    const T *q = w.pl + 4 * w.tc[t][e];
+    n = make_vec3(q[0], q[1], q[2]);
+    F = q[3] * n;
+    p1 = w.P[t];
+    p2 = w.P[w.tadj[t][e]];
+    return T(0.5) * dot(n, cross(p1 - F, p2 - F));
+  }
 }    // namespace hull_detail
 
 // Build the intersection of planes 4..nplanes-1 (already in w.pl / w.owner)
@@ -281,21 +294,50 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
     if (w.tstate[t] == 1)
       for (int e = 0; e < 3; ++e)
         if (w.tc[t][e] < NB) return STATUS_DEGENERATE;
+  // polish: each vertex is the meeting point of its three planes (seed Eq. 8
+  // in primal form). The interpolated P carries the round-off of every cut
+  // it went through; where the three normals are well conditioned
+  // (|det| >= 1e-2) the direct solution replaces it, which keeps the
+  // vertices of a 1e-9-thin sliver at the round-off of the size.
+  for (int t = 0; t < w.ntslots; ++t) {
+    if (w.tstate[t] != 1) continue;
+    const T *q0 = w.pl + 4 * w.tc[t][0], *q1 = w.pl + 4 * w.tc[t][1], *q2 = w.pl + 4 * w.tc[t][2];
+    const Vec3<T> n0 = make_vec3(q0[0], q0[1], q0[2]), n1 = make_vec3(q1[0], q1[1], q1[2]),
+                  n2 = make_vec3(q2[0], q2[1], q2[2]);
+    const Vec3<T> c12 = cross(n1, n2), c20 = cross(n2, n0), c01 = cross(n0, n1);
+    const T det = dot(n0, c12);
+    if (!(fabs(det) >= T(1e-2))) continue;
+    // solve around the current P: P + d with n_i . d = h_i - n_i . P (small residuals)
+    const Vec3<T> &P = w.P[t];
+    const T r0 = q0[3] - dot(n0, P), r1 = q1[3] - dot(n1, P), r2 = q2[3] - dot(n2, P);
+    w.P[t] = P + (T(1) / det) * (r0 * c12 + r1 * c20 + r2 * c01);
+  }
   return STATUS_OK;
 }
 
 // Integrals over the polyhedron built by dual_hull_build. Each dual edge
 // (a -> b) of triangle t, with neighbour t2 across it, is one edge P_t -> P_t2
-// of face a; faces are fanned from the foot F_a = h_a n_a of x_o on plane a,
-// so volumes are pyramids from x_o (seed Eq. 9 with o = x_o). Planes owned by
-// both particles count half for each. ref[k] = reference point of particle k
-// for the moments M (coordinates centred on x_o).
+// of face a; faces are fanned from the foot F_a = h_a n_a of x_o on plane a.
+// Planes owned by both particles count half for each. ref[k] = reference
+// point of particle k for the moments M (coordinates centred on x_o).
+//
+// Volume and first moment use the divergence theorem with fields along one
+// direction u (the contact normal S_A/|S_A| from the first pass):
+//   V = sum_f (n_f.u) int_f (p.u) dA,    int p.e dV = sum_f (n_f.u) int_f (p.e)(p.u) dA
+// (e perpendicular to u; for e = u the integrand is (p.u)^2/2). This equals
+// seed Eq. 9 in exact arithmetic, but the thin side faces of a sliver overlap
+// (depth << size), whose areas carry the round-off of the depth, enter only
+// with the small factor p.u; on each face p.u is taken from the plane's
+// offset h and the in-plane part of u, so the faces parallel to the contact
+// plane contribute h * area without the round-off of their vertices' heights.
+// V and the centroid stay accurate to round-off of the size even for depths
+// of 1e-9 of it. Triangle integrals of products
+// of linear functions are exact: int_T f g dA = A/12 (sum f_i g_i + sum f_i sum g_i).
 template <typename T, int MP> POLYDEM_FN void
 dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], HullIntegrals<T> &out)
 {
   const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
-  T vol = T(0);
-  Vec3<T> vm = zero;
+  T vol = T(0);    // pyramids from x_o: only its sign (the orientation) is used
   Vec3<T> S[2] = {zero, zero}, M[2] = {zero, zero}, am[2] = {zero, zero};
   T ar[2] = {T(0), T(0)};
   int nv = 0;
@@ -305,14 +347,10 @@ dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], Hul
     for (int e = 0; e < 3; ++e) {
       const int a = w.tc[t][e];
       const T *q = w.pl + 4 * a;
-      const Vec3<T> n = make_vec3(q[0], q[1], q[2]);
-      const Vec3<T> F = q[3] * n;
-      const Vec3<T> p1 = w.P[t], p2 = w.P[w.tadj[t][e]];
-      const T sa = T(0.5) * dot(n, cross(p1 - F, p2 - F));    // signed area
+      Vec3<T> n, F, p1, p2;
+      const T sa = hull_detail::fan_triangle(w, t, e, n, F, p1, p2);
       const Vec3<T> ct = (T(1) / T(3)) * (F + p1 + p2);
-      const T dv = q[3] * sa / T(3);
-      vol += dv;
-      vm += (T(0.75) * dv) * ct;
+      vol += q[3] * sa;
       const unsigned char own = w.owner[a];
       const T wgt = own == OWNER_BOTH ? T(0.5) : T(1);
       for (int k = 0; k < 2; ++k)
@@ -327,8 +365,39 @@ dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], Hul
   }
   // global orientation of the dual triangles: volume must be positive
   const T sgn = vol < T(0) ? T(-1) : T(1);
-  out.volume = sgn * vol;
-  out.vmoment = sgn * vm;
+  // frame (e1, e2, u), u along the contact normal
+  Vec3<T> u = S[0] - S[1];
+  const T un = norm(u);
+  u = un > T(0) ? (T(1) / un) * u : make_vec3(T(0), T(0), T(1));
+  const Vec3<T> e1 = any_perpendicular(u);
+  const Vec3<T> e2 = cross(u, e1);
+  T V = T(0), m1 = T(0), m2 = T(0), mu = T(0);
+  for (int t = 0; t < w.ntslots; ++t) {
+    if (w.tstate[t] != 1) continue;
+    for (int e = 0; e < 3; ++e) {
+      const T *q = w.pl + 4 * w.tc[t][e];
+      Vec3<T> n, F, p1, p2;
+      const T sa = hull_detail::fan_triangle(w, t, e, n, F, p1, p2);
+      // p.u on plane a as (u.n) h + p.u_perp: exact for the face parallel
+      // to the contact plane whatever the round-off of its vertices
+      const T un_a = dot(n, u);
+      const Vec3<T> up = u - un_a * n;
+      const T wu = sa * un_a, zh = un_a * q[3];
+      const T z0 = zh, z1 = zh + dot(p1, up), z2 = zh + dot(p2, up), zs = z0 + z1 + z2;
+      const T x0 = dot(F, e1), x1 = dot(p1, e1), x2 = dot(p2, e1);
+      const T y0 = dot(F, e2), y1 = dot(p1, e2), y2 = dot(p2, e2);
+      V += wu * zs;
+      m1 += wu * (x0 * z0 + x1 * z1 + x2 * z2 + (x0 + x1 + x2) * zs);
+      m2 += wu * (y0 * z0 + y1 * z1 + y2 * z2 + (y0 + y1 + y2) * zs);
+      mu += wu * (z0 * z0 + z1 * z1 + z2 * z2 + zs * zs);
+    }
+  }
+  V *= T(1) / T(3);
+  m1 *= T(1) / T(12);
+  m2 *= T(1) / T(12);
+  mu *= T(1) / T(24);
+  out.volume = sgn * V;
+  out.vmoment = sgn * (m1 * e1 + m2 * e2 + mu * u);
   for (int k = 0; k < 2; ++k) {
     out.S[k] = sgn * S[k];
     out.M[k] = sgn * M[k];

@@ -83,6 +83,17 @@ template <typename T> POLYDEM_FN T norm(const Vec3<T> &a)
   return sqrt(dot(a, a));
 }
 
+// a unit vector perpendicular to the unit vector u
+template <typename T> POLYDEM_FN Vec3<T> any_perpendicular(const Vec3<T> &u)
+{
+  const T ax = fabs(u.x), ay = fabs(u.y), az = fabs(u.z);
+  // cross with the axis least aligned with u
+  const Vec3<T> c = (ax <= ay && ax <= az) ? make_vec3(T(0), u.z, -u.y)
+                    : (ay <= az)           ? make_vec3(-u.z, T(0), u.x)
+                                           : make_vec3(u.y, -u.x, T(0));
+  return (T(1) / norm(c)) * c;
+}
+
 template <typename T> struct Quat {
   T w, x, y, z;
 };

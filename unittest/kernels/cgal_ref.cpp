@@ -172,6 +172,35 @@ RefResult ref_intersection(const Pts &a, const Pts &b)
   return r;
 }
 
+RefResult ref_halfspaces(const std::vector<std::array<double, 4>> &planes)
+{
+  std::vector<EK::Plane_3> pl;    // a x + b y + c z + d = 0, inside: negative side
+  for (auto &q : planes) pl.emplace_back(q[0], q[1], q[2], -EK::FT(q[3]));
+  const size_t n = pl.size();
+  std::vector<P3> cand;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j)
+      for (size_t k = j + 1; k < n; ++k) {
+        // cheap double rejection of nearly dependent triples is not safe; exact
+        auto r = CGAL::intersection(pl[i], pl[j], pl[k]);
+        if (!r) continue;
+        const P3 *p = boost::get<P3>(&*r);
+        if (!p) continue;
+        bool in = true;
+        for (size_t l = 0; l < n && in; ++l)
+          if (l != i && l != j && l != k && pl[l].oriented_side(*p) == CGAL::ON_POSITIVE_SIDE)
+            in = false;
+        if (in) cand.push_back(*p);
+      }
+  RefResult r;
+  r.intersects = !cand.empty();
+  if (!full_dimensional(cand)) return r;
+  Mesh m;
+  CGAL::convex_hull_3(cand.begin(), cand.end(), m);
+  integrate(m, r.volume, r.centroid);
+  return r;
+}
+
 RefClip ref_clip(const Pts &p, const std::array<double, 3> &t0, const std::array<double, 3> &t1,
                  const std::array<double, 3> &t2)
 {

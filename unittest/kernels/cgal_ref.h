@@ -22,6 +22,15 @@ struct RefResult {
 // all edge-triangle intersections; volume and centroid evaluated exactly.
 RefResult ref_intersection(const Pts &a, const Pts &b);
 
+// Intersection of the half-spaces n . p <= h, planes[i] = (nx, ny, nz, h),
+// each double taken as an exact rational: every triple of planes meeting in
+// one point gives a candidate vertex (exact), kept if it satisfies all
+// half-spaces exactly; exact hull, volume and centroid. This is the exact
+// answer for the very half-spaces the kernel receives, free of the round-off
+// that turning vertices into planes adds (which alone moves the centroid of a
+// 1e-9-thin sliver by ~1e-8 of the size).
+RefResult ref_halfspaces(const std::vector<std::array<double, 4>> &planes);
+
 // Polyhedron conv(p) against triangle (t0,t1,t2) with normal n = (t1-t0)x(t2-t0):
 // section of conv(p) with the triangle (area, centroid), and the part of
 // conv(p) behind the plane inside the triangle's prism (volume, centroid).
