@@ -5,10 +5,12 @@
 // Results: bench/RESULTS.md, section "Geometry kernels".
 #include "polydem_gjk.h"
 #include "polydem_overlap.h"
+#include "polydem_shape_template.h"
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -16,64 +18,24 @@ using namespace polydem;
 
 namespace {
 
-// A convex shape from its vertices: face planes by brute force (fine for the
-// few dozen vertices here), centred on the vertex mean (centroid for these
-// symmetric shapes).
+// A convex shape from its vertices, built as the pair style builds it
+// (PolyShapeTemplate: hull, merged faces, principal frame, dual
+// triangulation). `seeded = false` hides the dual triangulation, so the
+// overlap kernel starts from a bounding tetrahedron (the pre-seed path).
 struct Shape {
-  std::vector<double> verts, planes;
+  std::shared_ptr<PolyShapeTemplate> tmpl;
   ShapeView<double> view;
-  explicit Shape(std::vector<Vec3<double>> p)
+  Shape(const std::vector<Vec3<double>> &p, bool seeded)
   {
-    Vec3<double> c = make_vec3(0.0, 0.0, 0.0);
-    for (auto &v : p) c += v;
-    c = (1.0 / p.size()) * c;
-    double rad = 0;
-    for (auto &v : p) {
-      v -= c;
-      rad = std::max(rad, norm(v));
-    }
-    const int n = (int) p.size();
-    for (int i = 0; i < n; ++i)
-      for (int j = i + 1; j < n; ++j)
-        for (int k = j + 1; k < n; ++k) {
-          Vec3<double> nr = cross(p[j] - p[i], p[k] - p[i]);
-          if (norm(nr) < 1e-9 * rad * rad) continue;
-          nr = (1.0 / norm(nr)) * nr;
-          double d = dot(nr, p[i]);
-          int pos = 0, neg = 0;
-          for (auto &v : p) {
-            double s = dot(nr, v) - d;
-            pos += s > 1e-9 * rad;
-            neg += s < -1e-9 * rad;
-          }
-          if (pos && neg) continue;
-          if (pos) {
-            nr = -nr;
-            d = -d;
-          }
-          bool dup = false;
-          for (size_t f = 0; f < planes.size(); f += 4)
-            dup = dup || (std::fabs(planes[f] - nr.x) + std::fabs(planes[f + 1] - nr.y) +
-                              std::fabs(planes[f + 2] - nr.z) <
-                          1e-9);
-          if (dup) continue;
-          planes.insert(planes.end(), {nr.x, nr.y, nr.z, d});
-        }
-    for (auto &v : p) verts.insert(verts.end(), {v.x, v.y, v.z});
-    view.nverts = n;
-    view.nfaces = (int) planes.size() / 4;
-    view.nedges = 0;
-    view.verts = verts.data();
-    view.planes = planes.data();
-    view.face_start = nullptr;
-    view.face_verts = nullptr;
-    view.edges = nullptr;
-    view.radius = rad;
-    view.volume = 0;
+    std::vector<PolyShapeTemplate::Point> pts;
+    for (auto &v : p) pts.push_back({v.x, v.y, v.z});
+    tmpl = std::make_shared<PolyShapeTemplate>(PolyShapeTemplate::from_points(pts));
+    view = tmpl->view();
+    if (!seeded) view.dual = nullptr;
   }
 };
 
-Shape dodecahedron()
+Shape dodecahedron(bool seeded)
 {
   const double phi = (1 + std::sqrt(5.0)) / 2, s = 1e-3;    // circumradius sqrt(3) mm
   std::vector<Vec3<double>> p;
@@ -85,10 +47,10 @@ Shape dodecahedron()
     p.push_back(make_vec3(a, b, 0.0));
     p.push_back(make_vec3(b, 0.0, a));
   }
-  return Shape(p);
+  return Shape(p, seeded);
 }
 
-Shape cylinder()    // 42 points: 2 x 20 on the rims + the 2 cap centres
+Shape cylinder(bool seeded)    // 42 points: 2 x 20 on the rims + the 2 cap centres
 {
   const double D = 8e-3, L = 5.3e-3;
   std::vector<Vec3<double>> p;
@@ -99,7 +61,7 @@ Shape cylinder()    // 42 points: 2 x 20 on the rims + the 2 cap centres
   }
   p.push_back(make_vec3(0.0, 0.0, -0.5 * L));
   p.push_back(make_vec3(0.0, 0.0, 0.5 * L));
-  return Shape(p);
+  return Shape(p, seeded);
 }
 
 struct PairSet {
@@ -159,12 +121,23 @@ PairSet *make_pairs(Shape s, int n)
 
 PairSet &dodeca_pairs()
 {
-  static PairSet *p = make_pairs(dodecahedron(), 512);
+  static PairSet *p = make_pairs(dodecahedron(true), 512);
   return *p;
 }
 PairSet &cyl_pairs()
 {
-  static PairSet *p = make_pairs(cylinder(), 512);
+  static PairSet *p = make_pairs(cylinder(true), 512);
+  return *p;
+}
+// the same pairs (same random stream) without the seed
+PairSet &dodeca_pairs_tetra()
+{
+  static PairSet *p = make_pairs(dodecahedron(false), 512);
+  return *p;
+}
+PairSet &cyl_pairs_tetra()
+{
+  static PairSet *p = make_pairs(cylinder(false), 512);
   return *p;
 }
 
@@ -238,9 +211,11 @@ BENCHMARK_CAPTURE(gjk_only, dodecahedron, dodeca_pairs());
 BENCHMARK_CAPTURE(overlap_ws12, dodecahedron, dodeca_pairs());
 BENCHMARK_CAPTURE(overlap_wsmax, dodecahedron, dodeca_pairs());
 BENCHMARK_CAPTURE(gjk_overlap_ws12, dodecahedron, dodeca_pairs());
+BENCHMARK_CAPTURE(overlap_ws12, dodecahedron_tetra_start, dodeca_pairs_tetra());
 BENCHMARK_CAPTURE(gjk_only, cylinder42, cyl_pairs());
 BENCHMARK_CAPTURE(overlap_ws22, cylinder42, cyl_pairs());
 BENCHMARK_CAPTURE(overlap_wsmax, cylinder42, cyl_pairs());
 BENCHMARK_CAPTURE(gjk_overlap_ws22, cylinder42, cyl_pairs());
+BENCHMARK_CAPTURE(overlap_ws22, cylinder42_tetra_start, cyl_pairs_tetra());
 
 BENCHMARK_MAIN();

@@ -437,7 +437,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
   AtomVecPolyhedron *av = avecKK;
   const int n = av->ntemplates();
   if (n == 0) error->all(FLERR, "pair_style polyhedron/kk: no shape defined (polyhedron_shape)");
-  int nv = 0, np = 0, nfs = 0, nfv = 0, ne = 0;
+  int nv = 0, np = 0, nfs = 0, nfv = 0, ne = 0, nd = 0;
   max_faces = 0;
   for (int t = 0; t < n; t++) {
     const auto sv = av->shape(t).view();
@@ -446,6 +446,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
     nfs += sv.nfaces + 1;
     nfv += sv.face_start[sv.nfaces];
     ne += 2 * sv.nedges;
+    nd += polydem::dual_seed_ints(sv);
     max_faces = std::max(max_faces, sv.nfaces);
   }
   d_sverts = Kokkos::View<double *, DeviceType>("polyhedron/kk:verts", nv);
@@ -453,14 +454,16 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
   d_sface_start = Kokkos::View<int *, DeviceType>("polyhedron/kk:face_start", nfs);
   d_sface_verts = Kokkos::View<int *, DeviceType>("polyhedron/kk:face_verts", nfv);
   d_sedges = Kokkos::View<int *, DeviceType>("polyhedron/kk:edges", ne);
+  d_sdual = Kokkos::View<int *, DeviceType>("polyhedron/kk:dual", nd);
   d_shapes = Kokkos::View<polydem::ShapeView<double> *, DeviceType>("polyhedron/kk:shapes", n);
   auto h_verts = Kokkos::create_mirror_view(d_sverts);
   auto h_planes = Kokkos::create_mirror_view(d_splanes);
   auto h_fs = Kokkos::create_mirror_view(d_sface_start);
   auto h_fv = Kokkos::create_mirror_view(d_sface_verts);
   auto h_edges = Kokkos::create_mirror_view(d_sedges);
+  auto h_dual = Kokkos::create_mirror_view(d_sdual);
   auto h_shapes = Kokkos::create_mirror_view(d_shapes);
-  nv = np = nfs = nfv = ne = 0;
+  nv = np = nfs = nfv = ne = nd = 0;
   for (int t = 0; t < n; t++) {
     const auto sv = av->shape(t).view();
     const int nface_verts = sv.face_start[sv.nfaces];
@@ -469,24 +472,29 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
     for (int k = 0; k <= sv.nfaces; k++) h_fs(nfs + k) = sv.face_start[k];
     for (int k = 0; k < nface_verts; k++) h_fv(nfv + k) = sv.face_verts[k];
     for (int k = 0; k < 2 * sv.nedges; k++) h_edges(ne + k) = sv.edges[k];
+    const int ndual = polydem::dual_seed_ints(sv);
+    for (int k = 0; k < ndual; k++) h_dual(nd + k) = sv.dual[k];
     polydem::ShapeView<double> dv = sv;    // counts, radius, volume, inertia
     dv.verts = d_sverts.data() + nv;
     dv.planes = d_splanes.data() + np;
     dv.face_start = d_sface_start.data() + nfs;
     dv.face_verts = d_sface_verts.data() + nfv;
     dv.edges = d_sedges.data() + ne;
+    dv.dual = ndual > 0 ? d_sdual.data() + nd : nullptr;
     h_shapes(t) = dv;
     nv += 3 * sv.nverts;
     np += 4 * sv.nfaces;
     nfs += sv.nfaces + 1;
     nfv += nface_verts;
     ne += 2 * sv.nedges;
+    nd += ndual;
   }
   Kokkos::deep_copy(d_sverts, h_verts);
   Kokkos::deep_copy(d_splanes, h_planes);
   Kokkos::deep_copy(d_sface_start, h_fs);
   Kokkos::deep_copy(d_sface_verts, h_fv);
   Kokkos::deep_copy(d_sedges, h_edges);
+  Kokkos::deep_copy(d_sdual, h_dual);
   Kokkos::deep_copy(d_shapes, h_shapes);
   shape_version = avecKK->shape_version();
 }
@@ -746,7 +754,8 @@ template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::memory_usag
   bytes += (double) d_workspace.extent(0);
   bytes += (double) (d_count.extent(0) + d_offset.extent(0) + 2 * d_pairs.extent(0)) * sizeof(int);
   bytes += (double) (d_sverts.extent(0) + d_splanes.extent(0)) * sizeof(double);
-  bytes += (double) (d_sface_start.extent(0) + d_sface_verts.extent(0) + d_sedges.extent(0)) *
+  bytes += (double) (d_sface_start.extent(0) + d_sface_verts.extent(0) + d_sedges.extent(0) +
+                     d_sdual.extent(0)) *
       sizeof(int);
   return bytes;
 }

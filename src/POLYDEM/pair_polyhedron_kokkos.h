@@ -58,7 +58,7 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   int shape_version;
   int max_faces;    // largest face count of the templates
   Kokkos::View<double *, DeviceType> d_sverts, d_splanes;
-  Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges;
+  Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges, d_sdual;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
 
   // per type / type pair: E, nu; restitution damping factor, friction

@@ -97,6 +97,9 @@ namespace hull_detail {
   }
 }    // namespace hull_detail
 
+template <typename T, int MP>
+POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first);
+
 // Build the intersection of planes 4..nplanes-1 (already in w.pl / w.owner)
 // inside a bounding tetrahedron of in-radius H [length] about x_o.
 // tol [length]: planes cutting off less than tol are redundant.
@@ -147,13 +150,27 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
           if (j != i && w.tc[j][f] == v && w.tc[j][(f + 1) % 3] == u) w.tadj[i][e] = (short) j;
     }
   w.ntslots = NB;
+  return dual_hull_expand(w, tol, NB);
+}
+
+// Insert planes first..nplanes-1 into the hull held in w (triangles
+// 0..ntslots-1 alive, with tc, tadj, P; planes below first already in it).
+// Used after the bounding tetrahedron (dual_hull_build) or after a seed
+// polyhedron copied from a template's dual triangulation (polydem_overlap.h).
+template <typename T, int MP>
+POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first)
+{
+  using hull_detail::viol;
+  constexpr int NB = DUAL_HULL_BOUND_PLANES;
+  const int np = w.nplanes;
+  if (np > MP) return STATUS_OVERFLOW;
   w.nfree = 0;
   for (int p = 0; p < MP; ++p) w.new_by_start[p] = w.new_by_end[p] = -1;
   // initial conflicts (seed Algorithm IV)
-  for (int l = NB; l < np; ++l) {
+  for (int l = first; l < np; ++l) {
     w.conflict[l] = -1;
     w.cviol[l] = tol;
-    for (int t = 0; t < NB; ++t) {
+    for (int t = 0; t < w.ntslots; ++t) {
       const T v = viol(w, l, w.P[t]);
       if (v > w.cviol[l]) {
         w.cviol[l] = v;
@@ -165,7 +182,7 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
   for (int iter = 0; iter < np; ++iter) {
     int apex = -1;
     T best = T(0);
-    for (int l = NB; l < np; ++l)
+    for (int l = first; l < np; ++l)
       if (w.conflict[l] >= 0 && (apex < 0 || w.cviol[l] > best)) {
         apex = l;
         best = w.cviol[l];
@@ -219,7 +236,7 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
     }
     if (nh == 0) return STATUS_SEPARATED;    // every vertex cut off: empty intersection
     // planes whose conflict triangle is about to vanish must be reassigned
-    for (int l = NB; l < np; ++l)
+    for (int l = first; l < np; ++l)
       if (w.conflict[l] >= 0 && w.tstate[w.conflict[l]] == 2) w.conflict[l] = -3;
     w.conflict[apex] = -2;
     // free visible triangles (seed: removeAllVisibleFaces)
@@ -275,7 +292,7 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
     }
     if (!ok) return STATUS_DEGENERATE;
     // reassign orphaned planes to the new triangles (seed Algorithm IV)
-    for (int l = NB; l < np; ++l) {
+    for (int l = first; l < np; ++l) {
       if (w.conflict[l] != -3) continue;
       w.conflict[l] = -1;
       w.cviol[l] = tol;
@@ -333,11 +350,17 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
 // V and the centroid stay accurate to round-off of the size even for depths
 // of 1e-9 of it. Triangle integrals of products
 // of linear functions are exact: int_T f g dA = A/12 (sum f_i g_i + sum f_i sum g_i).
+// An overlap thicker than thin_below [length] (thickness 2V / surface area
+// from the first pass) takes V and the moment from the pyramids of the first
+// pass (seed Eq. 9), accurate to round-off there, and skips the second pass.
+// The default (infinite) always takes the second pass.
 template <typename T, int MP> POLYDEM_FN void
-dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], HullIntegrals<T> &out)
+dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], HullIntegrals<T> &out,
+                    T thin_below = T(1e30))
 {
   const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
-  T vol = T(0);    // pyramids from x_o: only its sign (the orientation) is used
+  T vol = T(0);    // 3 x (pyramids from x_o)
+  Vec3<T> vm = zero;
   Vec3<T> S[2] = {zero, zero}, M[2] = {zero, zero}, am[2] = {zero, zero};
   T ar[2] = {T(0), T(0)};
   int nv = 0;
@@ -351,6 +374,7 @@ dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], Hul
       const T sa = hull_detail::fan_triangle(w, t, e, n, F, p1, p2);
       const Vec3<T> ct = (T(1) / T(3)) * (F + p1 + p2);
       vol += q[3] * sa;
+      vm += (T(0.25) * q[3] * sa) * ct;
       const unsigned char own = w.owner[a];
       const T wgt = own == OWNER_BOTH ? T(0.5) : T(1);
       for (int k = 0; k < 2; ++k)
@@ -365,6 +389,19 @@ dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], Hul
   }
   // global orientation of the dual triangles: volume must be positive
   const T sgn = vol < T(0) ? T(-1) : T(1);
+  for (int k = 0; k < 2; ++k) {
+    out.S[k] = sgn * S[k];
+    out.M[k] = sgn * M[k];
+    out.area[k] = sgn * ar[k];
+    out.amoment[k] = sgn * am[k];
+  }
+  out.nverts = nv;
+  const T atot = sgn * (ar[0] + ar[1]);
+  if (T(2) * sgn * vol / T(3) > thin_below * atot) {
+    out.volume = sgn * vol / T(3);
+    out.vmoment = sgn * vm;
+    return;
+  }
   // frame (e1, e2, u), u along the contact normal
   Vec3<T> u = S[0] - S[1];
   const T un = norm(u);
@@ -398,13 +435,6 @@ dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], Hul
   mu *= T(1) / T(24);
   out.volume = sgn * V;
   out.vmoment = sgn * (m1 * e1 + m2 * e2 + mu * u);
-  for (int k = 0; k < 2; ++k) {
-    out.S[k] = sgn * S[k];
-    out.M[k] = sgn * M[k];
-    out.area[k] = sgn * ar[k];
-    out.amoment[k] = sgn * am[k];
-  }
-  out.nverts = nv;
 }
 
 }    // namespace polydem

@@ -14,6 +14,7 @@
 namespace polydem {
 
 using std::fabs;
+using std::fma;
 using std::sqrt;
 using std::cos;
 using std::sin;
@@ -81,6 +82,25 @@ template <typename T> POLYDEM_FN T norm2(const Vec3<T> &a)
 template <typename T> POLYDEM_FN T norm(const Vec3<T> &a)
 {
   return sqrt(dot(a, a));
+}
+
+// h - a . b with the products and sums of a . b carried error-free (fma
+// TwoProduct + TwoSum): when the result is small against the terms (a plane
+// moved to a point just beside it), it is accurate to round-off of the
+// result instead of round-off of the terms.
+template <typename T> POLYDEM_FN T offset_minus_dot(T h, const Vec3<T> &a, const Vec3<T> &b)
+{
+  T hi = h, lo = T(0);
+  const T ab[3][2] = {{a.x, b.x}, {a.y, b.y}, {a.z, b.z}};
+  for (int k = 0; k < 3; ++k) {
+    const T p = -ab[k][0] * ab[k][1];
+    const T pe = fma(-ab[k][0], ab[k][1], -p);    // exact error of the product
+    const T s = hi + p;
+    const T bb = s - hi;
+    lo += ((hi - (s - bb)) + (p - bb)) + pe;      // exact error of the sum
+    hi = s;
+  }
+  return hi + lo;
 }
 
 // a unit vector perpendicular to the unit vector u

@@ -50,7 +50,9 @@ template <typename T> struct OverlapResult {
   Vec3<T> M_B;         // dV/dtheta_B about x_B [length^3]
   T area;              // |S_A|, contact area [length^2]
   Vec3<T> normal;      // S_A / |S_A| (from A towards B); zero if area = 0
-  T depth;             // in-radius of the overlap (Chebyshev radius) [length]
+  T depth;             // in-radius of the overlap (Chebyshev radius) when the hull
+                       // starts from a tetrahedron; V / surface area (= in-radius of
+                       // a thin slab) when it starts from A's dual triangulation [length]
   int nverts;          // vertices of the overlap polyhedron
 };
 
@@ -169,26 +171,33 @@ polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b, OverlapWorksp
     overlap_result_zero(res, STATUS_SEPARATED);
     return res;
   }
-  // polarisation point: Chebyshev centre of both half-space systems
-  Vec3<T> xc;
-  T r;
-  chebyshev_centre(pl, ka + kb, xc, r);
-  if (!(r == r)) {
-    overlap_result_zero(res, STATUS_DEGENERATE);
-    return res;
+  // Start of the hull: A itself when its template carries a dual
+  // triangulation (then only B's planes are inserted, and no interior point
+  // is needed to build), else a bounding tetrahedron about the Chebyshev
+  // centre of both half-space systems (polarisation point, seed Eq. 4).
+  const int *seed = a.view->dual;
+  const bool seeded = seed != nullptr && seed[0] <= w.MAXT;
+  Vec3<T> xc = make_vec3(T(0), T(0), T(0));
+  T r = T(0);
+  if (!seeded) {
+    chebyshev_centre(pl, ka + kb, xc, r);
+    if (!(r == r)) {
+      overlap_result_zero(res, STATUS_DEGENERATE);
+      return res;
+    }
+    if (r <= ttouch) {    // touching or apart: V = 0
+      overlap_result_zero(res, STATUS_SEPARATED);
+      res.depth = r > T(0) ? r : T(0);
+      return res;
+    }
   }
-  if (r <= ttouch) {    // touching or apart: V = 0
-    overlap_result_zero(res, STATUS_SEPARATED);
-    res.depth = r > T(0) ? r : T(0);
-    return res;
-  }
-  const Vec3<T> x0 = xs + xc;
-  // shift to x_o (seed Eq. 4: every h > 0) and set owners; B planes that
+  Vec3<T> x0 = xs + xc;
+  // shift to x_o (seeded: xc = 0, no shift) and set owners; B planes that
   // coincide with an A plane are merged into it (owner both)
   int np = NB;
   for (int i = 0; i < ka + kb; ++i) {
     T *q = pl + 4 * i;
-    const T h = q[3] - (q[0] * xc.x + q[1] * xc.y + q[2] * xc.z);
+    const T h = offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), xc);
     unsigned char own = i < ka ? OWNER_A : OWNER_B;
     if (i >= ka) {
       bool merged = false;
@@ -211,9 +220,30 @@ polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b, OverlapWorksp
     ++np;
   }
   w.nplanes = np;
-  // bounding tetrahedron around A (the overlap lies inside A)
-  const T H = T(1.5) * (norm(a.x - x0) + posed_radius(a)) + L;
-  const int st = dual_hull_build(w, H, tol);
+  int st;
+  if (seeded) {
+    // A's planes are NB..NB+fa-1 in face order, its vertices the seed's
+    const int nt = seed[0];
+    const Vec3<T> xa = a.x - x0;
+    for (int t = 0; t < nt; ++t) {
+      const int *q = seed + 1 + DUAL_SEED_STRIDE_K * t;
+      for (int e = 0; e < 3; ++e) {
+        w.tc[t][e] = (short) (NB + q[e]);
+        w.tadj[t][e] = (short) q[3 + e];
+      }
+      const T *v = a.view->verts + 3 * q[6];
+      w.P[t] = xa + a.s * matvec(a.R, make_vec3(v[0], v[1], v[2]));
+      w.tstate[t] = 1;
+      w.tstamp[t] = -1;
+    }
+    w.ntslots = nt;
+    for (int l = NB; l < NB + fa; ++l) w.conflict[l] = -2;
+    st = dual_hull_expand(w, tol, NB + fa);
+  } else {
+    // bounding tetrahedron around A (the overlap lies inside A)
+    const T H = T(1.5) * (norm(a.x - x0) + posed_radius(a)) + L;
+    st = dual_hull_build(w, H, tol);
+  }
   if (st == STATUS_SEPARATED) {
     overlap_result_zero(res, STATUS_SEPARATED);
     return res;
@@ -222,11 +252,35 @@ polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b, OverlapWorksp
     overlap_result_zero(res, st);
     return res;
   }
+  if (seeded) {
+    // integrate about a point inside the overlap (the mean of its vertices):
+    // pyramids from a far point would cancel
+    Vec3<T> c = make_vec3(T(0), T(0), T(0));
+    int nc = 0;
+    for (int t = 0; t < w.ntslots; ++t)
+      if (w.tstate[t] == 1) {
+        c += w.P[t];
+        ++nc;
+      }
+    c = (T(1) / T(nc > 0 ? nc : 1)) * c;
+    for (int t = 0; t < w.ntslots; ++t) w.P[t] -= c;
+    for (int l = NB; l < np; ++l) {
+      T *q = w.pl + 4 * l;
+      q[3] = offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), c);
+    }
+    x0 += c;
+  }
   Vec3<T> ref[2] = {a.x - x0, b.x - x0};
   HullIntegrals<T> hi;
-  dual_hull_integrate(w, ref, hi);
-  if (!(hi.volume > T(0))) {
+  dual_hull_integrate(w, ref, hi, T(1e-3) * Lmin);
+  // half-thickness V / (surface area), which is the in-radius of a thin slab
+  // (and r/3 of a ball): the in-radius r decides touching on the Chebyshev
+  // path, this on the seeded path, with the same threshold
+  const T atot = hi.area[0] + hi.area[1];
+  const T thick = atot > T(0) ? hi.volume / atot : T(0);
+  if (!(hi.volume > T(0)) || (seeded && thick <= ttouch)) {
     overlap_result_zero(res, STATUS_SEPARATED);
+    res.depth = thick > T(0) ? thick : T(0);
     return res;
   }
   res.volume = hi.volume;
@@ -237,7 +291,7 @@ polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b, OverlapWorksp
   res.M_B = hi.M[1];
   res.area = norm(res.S_A);
   res.normal = res.area > T(0) ? (T(1) / res.area) * res.S_A : make_vec3(T(0), T(0), T(0));
-  res.depth = r;
+  res.depth = seeded ? thick : r;
   res.nverts = hi.nverts;
   return res;
 }

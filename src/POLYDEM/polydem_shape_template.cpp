@@ -11,6 +11,8 @@
 
 #include "polydem_shape_template.h"
 
+#include "polydem_dual_seed.h"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 #include <CGAL/Surface_mesh.h>
@@ -771,6 +773,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
 
 void PolyShapeTemplate::make_float_copy()
 {
+  dual_ = build_dual_seed(nverts(), nfaces(), planes_.data(), face_start_.data(),
+                          face_verts_.data());
   verts_f_.assign(verts_.begin(), verts_.end());
   planes_f_.assign(planes_.begin(), planes_.end());
 }
@@ -784,7 +788,7 @@ std::vector<int> PolyShapeTemplate::face(int i) const
 template <typename T>
 static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, const int *fs,
                               const int *fv, const int *ed, double r, double vol,
-                              const std::array<double, 3> &mom)
+                              const std::array<double, 3> &mom, const int *dual)
 {
   ShapeView<T> s;
   s.nverts = nv;
@@ -798,6 +802,7 @@ static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, c
   s.radius = (T)r;
   s.volume = (T)vol;
   for (int i = 0; i < 3; ++i) s.inertia[i] = (T)mom[i];
+  s.dual = dual;
   return s;
 }
 
@@ -805,14 +810,14 @@ ShapeView<double> PolyShapeTemplate::view() const
 {
   return make_view<double>(nverts(), nfaces(), nedges(), verts_.data(), planes_.data(),
                            face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
-                           moments_);
+                           moments_, dual_.empty() ? nullptr : dual_.data());
 }
 
 ShapeView<float> PolyShapeTemplate::view_float() const
 {
   return make_view<float>(nverts(), nfaces(), nedges(), verts_f_.data(), planes_f_.data(),
                           face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
-                          moments_);
+                          moments_, dual_.empty() ? nullptr : dual_.data());
 }
 
 // rotation matrix -> unit quaternion (Shepperd's method: largest pivot)

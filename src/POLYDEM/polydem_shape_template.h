@@ -111,6 +111,7 @@ class PolyShapeTemplate {
 
   std::vector<double> verts_, planes_;
   std::vector<int> face_start_, face_verts_, edges_;
+  std::vector<int> dual_;    // dual triangulation (polydem_dual_seed.h)
   std::vector<float> verts_f_, planes_f_;
 
   double volume_ = 0.0, radius_ = 0.0;

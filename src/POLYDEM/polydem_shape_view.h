@@ -19,6 +19,8 @@ namespace polydem {
 // Compile-time caps for templates (fixed workspaces are sized from these).
 constexpr int MAX_TEMPLATE_VERTS = 128;
 constexpr int MAX_TEMPLATE_FACES = 128;
+// ints per triangle of ShapeView::dual (polydem_dual_seed.h)
+constexpr int DUAL_SEED_STRIDE_K = 7;
 
 template <typename T> struct ShapeView {
   int nverts;             // number of hull vertices
@@ -32,7 +34,16 @@ template <typename T> struct ShapeView {
   T radius;               // bounding radius about the origin (unit scale)
   T volume;               // volume at unit scale
   T inertia[3];           // principal moments per unit density, unit scale (I ~ s^5)
+  // dual triangulation (polydem_dual_seed.h), or null: the overlap kernel
+  // then starts from a bounding tetrahedron instead of from this shape
+  const int *dual = nullptr;
 };
+
+// ints in a view's dual triangulation array (0 if it has none)
+template <typename T> POLYDEM_FN int dual_seed_ints(const ShapeView<T> &v)
+{
+  return v.dual ? 1 + DUAL_SEED_STRIDE_K * v.dual[0] : 0;
+}
 
 // Pose of one particle: position, orientation, scale.
 template <typename T> struct Pose {

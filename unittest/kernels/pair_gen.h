@@ -36,6 +36,7 @@ struct ShapePool {
     std::uniform_int_distribution<int> nv(4, 64);
     std::uniform_real_distribution<double> asp(1.0, 10.0);
     for (int i = 0; i < nrandom; ++i) add(make_shape(random_points(rng, nv(rng), asp(rng))));
+    for (const char *f : SHIPPED_SHAPES) add(make_shape(shipped_points(f)));
   }
   void add(ShapeData s)
   {

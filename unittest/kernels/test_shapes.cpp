@@ -1,7 +1,10 @@
 // POLYDEM kernel tests: shape builder (CGAL convex hull, merged coplanar faces).
 #include "test_shapes.h"
 
+#include "polydem_dual_seed.h"
+
 #include "polydem_math.h"
+#include "polydem_shape_template.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -134,6 +137,8 @@ ShapeData make_shape(const std::vector<std::array<double, 3>> &in)
         s.edges.push_back(v);
       }
     }
+  s.dual = polydem::build_dual_seed(s.nverts(), nf, s.planes.data(), s.face_start.data(),
+                                    s.face_verts.data());
   return s;
 }
 
@@ -148,6 +153,21 @@ std::vector<std::array<double, 3>> random_points(std::mt19937_64 &rng, int n, do
     double r = std::sqrt(x * x + y * y + z * z);
     double rad = 0.5 + 0.5 * u(rng);
     p.push_back({x / r * rad, y / r * rad * sy, z / r * rad * sz});
+  }
+  return p;
+}
+
+const char *const SHIPPED_SHAPES[6] = {"tetrahedron.shape", "octahedron.shape",
+                                       "icosahedron.shape", "mineral18.shape",
+                                       "catalyst_cylinder.shape", "cuboid_2p5cm.shape"};
+
+std::vector<std::array<double, 3>> shipped_points(const std::string &file)
+{
+  const auto t = polydem::PolyShapeTemplate::from_file(std::string(POLYDEM_POTENTIALS_DIR) + "/" + file);
+  std::vector<std::array<double, 3>> p;
+  for (int i = 0; i < t.nverts(); ++i) {
+    const auto v = t.vertex(i);
+    p.push_back({v[0] / t.radius(), v[1] / t.radius(), v[2] / t.radius()});
   }
   return p;
 }

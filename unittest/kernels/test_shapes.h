@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace polydem_test {
@@ -16,6 +17,7 @@ namespace polydem_test {
 struct ShapeData {
   std::vector<double> verts, planes;    // 3*nv, 4*nf
   std::vector<int> face_start, face_verts, edges;
+  std::vector<int> dual;    // polydem_dual_seed.h
   double radius = 0, volume = 0;
   int nverts() const { return (int) verts.size() / 3; }
   int nfaces() const { return (int) planes.size() / 4; }
@@ -46,8 +48,14 @@ template <typename T> TypedShape<T> *typed(const ShapeData &s)
   v.radius = (T) s.radius;
   v.volume = (T) s.volume;
   v.inertia[0] = v.inertia[1] = v.inertia[2] = T(0);
+  v.dual = s.dual.empty() ? nullptr : s.dual.data();
   return t;
 }
+
+// vertices of a shipped template (potentials/<file>), in its principal
+// frame, scaled to bounding radius 1
+std::vector<std::array<double, 3>> shipped_points(const std::string &file);
+extern const char *const SHIPPED_SHAPES[6];
 
 // families
 std::vector<std::array<double, 3>> random_points(std::mt19937_64 &rng, int n, double aspect);

@@ -294,6 +294,24 @@ TEST(ShapeTemplate, EveryShippedFileIsConsistent)
                 s.moments()[2], s.radius());
     const double r = s.radius(), tol = 1e-12 * r;
     EXPECT_EQ(s.nverts() - s.nedges() + s.nfaces(), 2);
+    // dual triangulation (overlap kernel's seed): 2F-4 triangles, each at
+    // a vertex lying on its three planes, neighbours mutual across reversed edges
+    const int *dual = s.view().dual;
+    ASSERT_NE(dual, nullptr);
+    EXPECT_EQ(dual[0], 2 * s.nfaces() - 4);
+    for (int t = 0; t < dual[0]; ++t) {
+      const int *q = dual + 1 + polydem::DUAL_SEED_STRIDE_K * t;
+      const auto v = s.vertex(q[6]);
+      for (int e = 0; e < 3; ++e) {
+        const auto pl = s.plane(q[e]);
+        EXPECT_NEAR(pl[0] * v[0] + pl[1] * v[1] + pl[2] * v[2], pl[3], tol);
+        const int *o = dual + 1 + polydem::DUAL_SEED_STRIDE_K * q[3 + e];
+        int back = 0;
+        for (int g = 0; g < 3; ++g)
+          back += o[g] == q[(e + 1) % 3] && o[(g + 1) % 3] == q[e] && o[3 + g] == t;
+        EXPECT_EQ(back, 1) << "triangle " << t << " edge " << e;
+      }
+    }
     std::vector<int> edge_use(s.nedges(), 0);
     for (int i = 0; i < s.nfaces(); ++i) {
       auto pl = s.plane(i);
