@@ -20,6 +20,7 @@
 #include "update.h"
 
 #include "polydem_contact_model.h"
+#include "polydem_contact_record.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
 
@@ -195,6 +196,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   typename AT::t_float_1d_randomread radius, rmass, pscale;
   typename AT::t_int_1d_randomread type, pshape;
   typename AT::t_tagint_1d_randomread tag;
+  typename AT::t_int_1d_randomread mask;
   polydem_view_t<tdual_quat_array, DeviceType> quat;
   typename AT::t_neighbors_2d neighbors;
   typename AT::t_int_2d firsttouch;
@@ -206,6 +208,9 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   Kokkos::View<char *, DeviceType> workspace;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
+  // per-contact records by pair index (CR_ID1 = 0: none), if store_contacts
+  Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> records;
+  int store_contacts;
   int first;    // pair index of slot 0
   int nlocal, newton_pair, shearupdate;
   int eflag_global, eflag_atom, vflag_global, vflag_atom;
@@ -287,6 +292,12 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
       Kokkos::atomic_add(&f(i, k), F[k]);
       Kokkos::atomic_add(&torque(i, k), tA[k]);
     }
+    if (store_contacts) {
+      const double xi[3] = {pi.x.x, pi.x.y, pi.x.z}, xj[3] = {pj.x.x, pj.x.y, pj.x.z};
+      if (polydem::contact_owned(newton_pair, j < nlocal, tag(i), tag(j), xi, xj))
+        polydem::fill_contact_record(&records(p, 0), tag(i), tag(j), mask(i), mask(j),
+                                     Vi < Vj ? Vi : Vj, geo, cf);
+    }
     if (newton_pair || j < nlocal)
       for (int k = 0; k < 3; k++) {
         Kokkos::atomic_add(&f(j, k), -F[k]);
@@ -339,7 +350,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
 template <class DeviceType>
 PairPolyhedronKokkos<DeviceType>::PairPolyhedronKokkos(LAMMPS *lmp) :
     PairPolyhedron(lmp), avecKK(nullptr), fix_historyKK(nullptr), shape_version(-1), max_faces(0),
-    params_dirty(1), npairs(0), nslots(0)
+    params_dirty(1), npairs(0), nslots(0), store_contacts(0)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -639,6 +650,7 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.type = atomKK->k_type.view<DeviceType>();
   fn.pshape = avecKK->k_pshape.view<DeviceType>();
   fn.tag = atomKK->k_tag.view<DeviceType>();
+  fn.mask = atomKK->k_mask.view<DeviceType>();
   fn.quat = avecKK->k_quat.view<DeviceType>();
   fn.neighbors = static_cast<NeighListKokkos<DeviceType> *>(list)->d_neighbors;
   fn.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
@@ -662,6 +674,14 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.dt = update->dt;
   fn.overlap_warn = overlap_warn;
   fn.core = core;
+  fn.store_contacts = store_contacts;
+  if (store_contacts) {
+    if ((int) d_records.extent(0) < npairs)
+      d_records = Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType>(
+          "polyhedron/kk:records", npairs + npairs / 5 + 16);
+    Kokkos::deep_copy(d_records, 0.0);
+    fn.records = d_records;
+  }
 
   PolyReduce total;
   for (int first = 0; first < npairs; first += nslots) {
@@ -677,6 +697,21 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += total.v[k];
   for (int k = 0; k < NCOUNT; k++) local_counts[k] += total.cnt[k];
+}
+
+/* ----------------------------------------------------------------------
+   the records of contacts (CR_ID1 > 0) to the host, in pair-array order
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::gather_records()
+{
+  contact_step = update->ntimestep;
+  if (npairs <= 0) return;
+  auto h = Kokkos::create_mirror_view(d_records);
+  Kokkos::deep_copy(h, d_records);
+  for (int p = 0; p < npairs; p++)
+    if (h(p, polydem::CR_ID1) > 0.0)
+      for (int k = 0; k < polydem::CR_NFIELD; k++) contact_data.push_back(h(p, k));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -708,6 +743,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
   fix_historyKK->k_firstvalue.template sync<DeviceType>();
 
   build_pairs();
+  store_contacts = store_contacts_now() ? 1 : 0;
   switch (workspace_max_faces(max_faces)) {
     case 16:
       run_pairs<16>();
@@ -722,6 +758,8 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
       run_pairs<128>();
       break;
   }
+
+  if (store_contacts) gather_records();
 
   fix_historyKK->k_firstflag.template modify<DeviceType>();
   fix_historyKK->k_firstvalue.template modify<DeviceType>();
@@ -744,6 +782,7 @@ template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::memory_usag
 {
   double bytes = Pair::memory_usage();
   bytes += (double) d_workspace.extent(0);
+  bytes += (double) d_records.extent(0) * polydem::CR_NFIELD * sizeof(double);
   bytes += (double) (d_count.extent(0) + d_offset.extent(0) + 2 * d_pairs.extent(0)) * sizeof(int);
   bytes += (double) (d_sverts.extent(0) + d_splanes.extent(0)) * sizeof(double);
   bytes += (double) (d_sface_start.extent(0) + d_sface_verts.extent(0) + d_sedges.extent(0)) *

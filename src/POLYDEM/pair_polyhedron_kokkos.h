@@ -24,6 +24,7 @@ PairStyle(polyhedron/kk/host,PairPolyhedronKokkos<LMPHostType>);
 
 #include "kokkos_type.h"
 #include "pair_polyhedron.h"
+#include "polydem_contact_record.h"
 #include "polydem_shape_view.h"
 
 namespace LAMMPS_NS {
@@ -77,6 +78,10 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   Kokkos::View<char *, DeviceType> d_workspace;
   int nslots;
 
+  // per-contact records by pair index, on steps a contact compute is due
+  Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> d_records;
+  int store_contacts;
+
   DAT::tdual_efloat_1d k_eatom;
   DAT::tdual_virial_array k_vatom;
 
@@ -85,6 +90,7 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   void build_pairs();
   void ensure_partners(int nlocal);
   template <int MF> void run_pairs();
+  void gather_records();
 };
 
 }    // namespace LAMMPS_NS
