@@ -5,6 +5,7 @@
 // packing (each contact exactly once over all ranks, newton on and off),
 // plain vs /kk to 1e-12. Also run under mpirun -np 2.
 
+#include "polydem_allgather.h"
 #include "polydem_lmp.h"
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 #include <string>
 #include <vector>
 
+using polydem_test::allgather;
 using polydem_test::Lmp;
 using polydem_test::potentials;
 
@@ -32,21 +34,6 @@ std::string num(double x)
   char buf[32];
   std::snprintf(buf, sizeof(buf), "%.17g", x);
   return buf;
-}
-
-// every rank's values, in rank order, on every rank
-std::vector<double> allgather(const std::vector<double> &mine)
-{
-  int nprocs, n = (int) mine.size();
-  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                 MPI_COMM_WORLD);
-  return all;
 }
 
 // rows of the local compute on this rank

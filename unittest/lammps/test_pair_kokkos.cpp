@@ -9,6 +9,7 @@
 // and the number of contacts. Run on 1 rank and under mpirun -np 2 (both
 // instances then use the same 2-rank decomposition).
 
+#include "polydem_allgather.h"
 #include "polydem_lmp.h"
 
 #include "atom_kokkos.h"
@@ -95,16 +96,8 @@ std::vector<double> gather(Lmp &l)
     for (int k = 0; k < 3; k++) mine.push_back(a->f[i][k]);
     for (int k = 0; k < 3; k++) mine.push_back(a->torque[i][k]);
   }
-  int nprocs;
-  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
-  int n = (int) mine.size();
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                 MPI_COMM_WORLD);
+  const std::vector<double> all = polydem_test::allgather(mine);
+  const int total = (int) all.size();
   std::vector<std::vector<double>> recs;
   for (int i = 0; i < total; i += REC) recs.emplace_back(all.begin() + i, all.begin() + i + REC);
   std::sort(recs.begin(), recs.end());
