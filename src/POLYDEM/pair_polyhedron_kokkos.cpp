@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -127,6 +128,33 @@ class FixNeighHistoryPolyhedronKokkos : public FixNeighHistoryKokkos<DeviceType>
     FixNeighHistoryKokkos<DeviceType>::copy_arrays(i, j, delflag);
     for (int m = 0; m < this->dnum * this->npartner[i]; m++)
       this->valuepartner[j][m] = this->valuepartner[i][m];
+  }
+  // Restart: FixNeighHistory::unpack_restart puts the partners into its
+  // host page allocator, which the Kokkos fix does not use (its rows are
+  // DualView rows), so a /kk run lost its contact history on read_restart.
+  // Reorder the restart record (n, then tag + dnum values per partner) into
+  // the exchange layout (n, n tags, n * dnum values) and unpack it as the
+  // Kokkos fix unpacks exchanged atoms (host rows, marked modified).
+  void unpack_restart(int nlocal, int nth) override
+  {
+    double **extra = this->atom->extra;
+    const int dnum = this->dnum;
+    int m = 0;
+    for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+    m++;
+    const int n = static_cast<int>(extra[nlocal][m++]);
+    if (n > this->maxpartner) {
+      this->maxpartner = n + 8;    // made equal on all ranks by ensure_partners
+      this->grow_arrays(this->atom->nmax);
+    }
+    std::vector<double> buf(1 + (size_t) n * (1 + dnum));
+    buf[0] = n;
+    for (int k = 0; k < n; k++) {
+      const double *rec = &extra[nlocal][m + k * (1 + dnum)];
+      buf[1 + k] = rec[0];
+      for (int d = 0; d < dnum; d++) buf[1 + n + dnum * k + d] = rec[1 + d];
+    }
+    this->unpack_exchange(nlocal, buf.data());
   }
   static Fix *create(LAMMPS *lmp, int narg, char **arg)
   {
@@ -607,13 +635,16 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::ensure_partne
 {
   PolyMaxFunctor<DeviceType> fmax;
   fmax.npartner = d_npartner;
-  int mine = 0, most = 0;
+  int mine = 0, most = 0, allcap = 0;
   Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, nlocal),
                           fmax, mine);
   MPI_Allreduce(&mine, &most, 1, MPI_INT, MPI_MAX, world);
   int &cap = HistoryAccess::capacity(fix_history);
-  if (most > cap) {
-    cap = most + 8;
+  // a rank may have grown alone (unpack_restart): take the largest capacity
+  MPI_Allreduce(&cap, &allcap, 1, MPI_INT, MPI_MAX, world);
+  const int want = most > allcap ? most + 8 : allcap;
+  if (want != cap) {
+    cap = want;
     fix_history->grow_arrays(atom->nmax);
   }
 }

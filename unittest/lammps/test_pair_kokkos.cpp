@@ -10,6 +10,7 @@
 // instances then use the same 2-rank decomposition).
 
 #include "polydem_allgather.h"
+#include "pair_restart_case.h"
 #include "polydem_lmp.h"
 
 #include "atom_kokkos.h"
@@ -309,5 +310,26 @@ TEST(PairKokkos, PerAtomEnergyAndVirialMatchPlain)
     auto *a = (double *) lammps_extract_compute(kk.lmp, "r", LMP_STYLE_GLOBAL, LMP_TYPE_VECTOR);
     const double natoms = (double) kk.lmp->atom->natoms;
     EXPECT_NEAR(a[0] / natoms, kk.thermo("pe"), 1e-12 * std::fabs(kk.thermo("pe")));
+  }
+}
+
+// Restart of a /kk run with loaded contacts (tangential history on the
+// device): write_restart from a -sf kk run, read_restart with -sf kk,
+// continue == uninterrupted /kk run, bit for bit; and the /kk run equals the
+// plain one to 1e-12.
+TEST(PairKokkos, RestartKeepsContactHistory)
+{
+  auto sync = [](Lmp &l) {
+    ((LAMMPS_NS::AtomKokkos *) l.lmp->atom)->sync(LAMMPS_NS::Host, ALL_MASK);
+  };
+  const auto kk = polydem_test::pair_restart_case(
+      KK, ::testing::TempDir() + "polydem_pair_kk_restart.bin", sync);
+  for (int k = 0; k < 6; k++) EXPECT_EQ(kk.got[k], kk.ref[k]) << "component " << k;
+  const auto plain = polydem_test::pair_restart_case(
+      {}, ::testing::TempDir() + "polydem_pair_kk_restart_plain.bin", [](Lmp &) {});
+  for (int k = 0; k < 3; k++) {
+    EXPECT_NEAR(kk.ref[k], plain.ref[k], 1e-12 * 0.3) << "position " << k;
+    EXPECT_NEAR(kk.ref[3 + k], plain.ref[3 + k], 1e-12 * (std::fabs(plain.ref[3 + k]) + 1e-30))
+        << "angular momentum " << k;
   }
 }

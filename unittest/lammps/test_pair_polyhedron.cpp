@@ -2,6 +2,7 @@
 // energy conservation of elastic collisions and its dt^2 convergence,
 // momentum conservation, bad pair_coeff input.
 
+#include "pair_restart_case.h"
 #include "polydem_lmp.h"
 
 #include "force.h"
@@ -362,43 +363,9 @@ TEST(PairPolyhedron, FrictionInclineSticksOrSlides)
 // in the restart file).
 TEST(PairPolyhedron, RestartKeepsContactHistory)
 {
-  const std::string rfile = ::testing::TempDir() + "polydem_pair_restart.bin";
-  const double th = 20.0 * M_PI / 180.0;
-  const std::string tilt =
-      "fix g top gravity 9.81 vector " + num(std::sin(th)) + " 0 " + num(-std::cos(th));
-  double ref[6], got[6];
-  {
-    Lmp l;
-    std::vector<std::string> c = {
-        "units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-        "comm_modify vel yes", "region box block -0.3 0.3 -0.05 0.05 -0.05 0.08",
-        "create_box 2 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape"};
-    for (int k = 0; k < 5; k++) c.push_back("create_atoms 1 single " + num(-0.2 + 0.025 * k) + " 0 0");
-    for (const std::string &x : std::vector<std::string>{
-             "create_atoms 2 single -0.15 0.003 0.02501", "polyhedron_set group all density 1500",
-             "polyhedron_set type 2 quat 0 0 1 10", "group top type 2",
-             "pair_style polyhedron core 2e-4", "pair_coeff * * 1.0e6 0.1 0.3 0.5",
-             "neighbor 0.001 bin", "neigh_modify exclude type 1 1",
-             "fix 1 top nve/polyhedron", "fix g top gravity 9.81 vector 0 0 -1",
-             "timestep 1e-5", "run 3000", "unfix g", tilt, "run 1000",
-             "write_restart " + rfile, "run 1000"})
-      c.push_back(x);
-    l.cmds(c);
-    auto *a = l.lmp->atom;
-    const int i = a->map(6);
-    for (int k = 0; k < 3; k++) ref[k] = a->x[i][k], ref[3 + k] = a->angmom[i][k];
-  }
-  {
-    Lmp l;
-    l.cmds({"read_restart " + rfile, "comm_modify vel yes", "group top type 2",
-            "neighbor 0.001 bin", "neigh_modify exclude type 1 1", "fix 1 top nve/polyhedron",
-            tilt, "timestep 1e-5", "run 1000"});
-    auto *a = l.lmp->atom;
-    const int i = a->map(6);
-    for (int k = 0; k < 3; k++) got[k] = a->x[i][k], got[3 + k] = a->angmom[i][k];
-  }
-  for (int k = 0; k < 6; k++) EXPECT_EQ(got[k], ref[k]) << "component " << k;
-  std::remove(rfile.c_str());
+  const auto r = polydem_test::pair_restart_case(
+      {}, ::testing::TempDir() + "polydem_pair_restart.bin", [](Lmp &) {});
+  for (int k = 0; k < 6; k++) EXPECT_EQ(r.got[k], r.ref[k]) << "component " << k;
 }
 
 TEST(PairPolyhedron, BadCoefficients)
