@@ -45,6 +45,8 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   // device memory for the overlap workspaces of one batch [bytes]
   static constexpr double WORKSPACE_BUDGET_DEVICE = 512.0 * 1024 * 1024;
   static constexpr double WORKSPACE_BUDGET_HOST = 64.0 * 1024 * 1024;
+  // on CPU back ends: workspaces per thread in one batch
+  static constexpr int SLOTS_PER_CPU_THREAD = 16;
 
   // the MaxFaces instantiations of OverlapWorkspace the style dispatches on
   static int workspace_max_faces(int nfaces);
