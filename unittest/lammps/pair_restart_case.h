@@ -1,11 +1,15 @@
 // Test scenario shared by the plain and /kk restart tests of pair polyhedron:
 // a cube held on a 20 degree incline by its tangential spring (loaded
 // contact history), either run straight through or written to a restart file
-// half-way and continued from it in a new LAMMPS instance.
+// half-way and continued from it in a new LAMMPS instance. The cube sits at
+// x = 0 on a row of 5 frozen cubes centred there, so that on 2 ranks its
+// contacts have partners on both sides of the subdomain boundary.
 #ifndef POLYDEM_TEST_PAIR_RESTART_CASE_H
 #define POLYDEM_TEST_PAIR_RESTART_CASE_H
 
 #include "polydem_lmp.h"
+
+#include <mpi.h>
 
 #include <cmath>
 #include <cstdio>
@@ -22,10 +26,12 @@ struct RestartResult {
 };
 
 // extra: LAMMPS command-line arguments (e.g. -k on -sf kk ...); host: makes
-// the host arrays current (AtomKokkos::sync for /kk runs)
+// the host arrays current (AtomKokkos::sync for /kk runs); newton: pair
+// setting of the first run (the restart file keeps it)
 inline RestartResult pair_restart_case(const std::vector<std::string> &extra,
                                        const std::string &rfile,
-                                       const std::function<void(Lmp &)> &host)
+                                       const std::function<void(Lmp &)> &host,
+                                       const std::string &newton = "on")
 {
   auto num = [](double x) {
     char buf[32];
@@ -40,18 +46,21 @@ inline RestartResult pair_restart_case(const std::vector<std::string> &extra,
     host(l);
     auto *a = l.lmp->atom;
     const int i = a->map(6);
-    for (int k = 0; k < 3; k++) out[k] = a->x[i][k], out[3 + k] = a->angmom[i][k];
+    double mine[6] = {0, 0, 0, 0, 0, 0};    // from the rank that owns atom 6
+    if (i >= 0 && i < a->nlocal)
+      for (int k = 0; k < 3; k++) mine[k] = a->x[i][k], mine[3 + k] = a->angmom[i][k];
+    MPI_Allreduce(mine, out, 6, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
   };
   {
     Lmp l(extra);
     std::vector<std::string> c = {
-        "units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-        "comm_modify vel yes", "region box block -0.3 0.3 -0.05 0.05 -0.05 0.08",
+        "units si", "newton " + newton, "atom_style polyhedron", "atom_modify map array",
+        "boundary f f f", "comm_modify vel yes", "region box block -0.3 0.3 -0.05 0.05 -0.05 0.08",
         "create_box 2 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape"};
     for (int k = 0; k < 5; k++)
-      c.push_back("create_atoms 1 single " + num(-0.2 + 0.025 * k) + " 0 0");
+      c.push_back("create_atoms 1 single " + num(-0.05 + 0.025 * k) + " 0 0");
     for (const std::string &x : std::vector<std::string>{
-             "create_atoms 2 single -0.15 0.003 0.02501", "polyhedron_set group all density 1500",
+             "create_atoms 2 single 0.001 0.003 0.02501", "polyhedron_set group all density 1500",
              "polyhedron_set type 2 quat 0 0 1 10", "group top type 2",
              "pair_style polyhedron core 2e-4", "pair_coeff * * 1.0e6 0.1 0.3 0.5",
              "neighbor 0.001 bin", "neigh_modify exclude type 1 1", "fix 1 top nve/polyhedron",
@@ -68,7 +77,10 @@ inline RestartResult pair_restart_case(const std::vector<std::string> &extra,
             tilt, "timestep 1e-5", "run 1000"});
     state(l, r.got);
   }
-  std::remove(rfile.c_str());
+  int me;
+  MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  MPI_Barrier(MPI_COMM_WORLD);
+  if (me == 0) std::remove(rfile.c_str());
   return r;
 }
 
