@@ -1,6 +1,6 @@
 #!/bin/bash
 # Runs the full-size checks of issue 4 (acceptance 4 and 5) from this folder
-# and prints the figures; see README.md. About 10 minutes on one core.
+# and prints the figures; see README.md. Takes several minutes.
 #   bash run_checks.sh [path/to/lmp]
 set -euo pipefail
 lmp=${1:-../../build/lmp}
