@@ -19,7 +19,9 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "compute.h"
 #include "polydem_contact_model.h"
+#include "polydem_contact_record.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
 
@@ -37,7 +39,7 @@ PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
     Pair(lmp), youngs(nullptr), poisson(nullptr), matset(nullptr), restitution(nullptr),
     friction(nullptr), dampratio(nullptr), pairset(nullptr), overlap_warn(0.05), core(1.0e-4),
     dt(0.0), avec(nullptr),
-    fix_dummy(nullptr), fix_history(nullptr)
+    fix_dummy(nullptr), fix_history(nullptr), contact_step(-1)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -288,6 +290,10 @@ void PairPolyhedron::compute(int eflag, int vflag)
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
 
+  const bool store = store_contacts_now();
+  tagint *tag = atom->tag;
+  int *mask = atom->mask;
+
   const int inum = list->inum;
   int *ilist = list->ilist, *numneigh = list->numneigh, **firstneigh = list->firstneigh;
   int **firsttouch = fix_history->firstflag;
@@ -384,9 +390,53 @@ void PairPolyhedron::compute(int eflag, int vflag)
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair, cf.energy, 0.0, cf.F_A.x, cf.F_A.y, cf.F_A.z,
                      delx, dely, delz);
+      if (store && polydem::contact_owned(newton_pair, j < nlocal, tag[i], tag[j], x[i], x[j])) {
+        contact_data.resize(contact_data.size() + polydem::CR_NFIELD);
+        polydem::fill_contact_record(&contact_data[contact_data.size() - polydem::CR_NFIELD],
+                                     tag[i], tag[j], mask[i], mask[j], MIN(Vi, Vj), geo, cf);
+      }
     }
   }
+  if (store) contact_step = update->ntimestep;
   if (neighbor->ago == 0) report_counters(false);
+}
+
+/* ----------------------------------------------------------------------
+   store per-contact records this step if a contact compute is due now
+   (same mechanism as compute pe: Compute::timeflag and matchstep)
+------------------------------------------------------------------------- */
+
+bool PairPolyhedron::store_contacts_now()
+{
+  bool due = false;
+  for (int k = 0; k < modify->ncompute; k++) {
+    Compute *c = modify->compute[k];
+    if ((strcmp(c->style, "contact/polyhedron/local") == 0 ||
+         strcmp(c->style, "contact/polyhedron") == 0) &&
+        c->matchstep(update->ntimestep))
+      due = true;
+  }
+  if (due) contact_data.clear();
+  return due;
+}
+
+PairPolyhedron *PairPolyhedron::require(LAMMPS *lmp, const char *who)
+{
+  auto *p = dynamic_cast<PairPolyhedron *>(lmp->force->pair);
+  if (!p)
+    lmp->error->all(FLERR, "compute {} requires pair_style polyhedron or polyhedron/kk", who);
+  return p;
+}
+
+const double *PairPolyhedron::contact_records(int &n, const char *who)
+{
+  if (contact_step != update->ntimestep)
+    error->all(FLERR,
+               "compute {}: pair polyhedron stored no contacts on step {} (the compute can be "
+               "used only on steps known in advance: thermo, dump, fix ave/*, run 0)",
+               who, update->ntimestep);
+  n = (int) (contact_data.size() / polydem::CR_NFIELD);
+  return contact_data.data();
 }
 
 /* ----------------------------------------------------------------------

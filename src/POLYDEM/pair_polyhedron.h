@@ -18,6 +18,7 @@ PairStyle(polyhedron,PairPolyhedron);
 #include "pair.h"
 
 #include <memory>
+#include <vector>
 
 namespace polydem {
 template <typename T, int MF> struct OverlapWorkspace;
@@ -45,6 +46,14 @@ class PairPolyhedron : public Pair {
   enum { CNT_OVERFLOW, CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, NCOUNT };
   double counters[NCOUNT];
 
+  // Per-contact records (polydem_contact_record.h) of the force evaluation of
+  // the current step, each contact once over all ranks, for the contact
+  // computes. Stored only on the steps such a compute is due (Compute
+  // timeflag/matchstep, as for compute pe); errors naming 'who' otherwise.
+  const double *contact_records(int &n, const char *who);
+  // the pair polyhedron (plain or /kk) of this LAMMPS, else an error naming 'who'
+  static PairPolyhedron *require(class LAMMPS *lmp, const char *who);
+
  protected:
   double *youngs, *poisson;    // per type
   int *matset;                 // per type: material given
@@ -66,6 +75,10 @@ class PairPolyhedron : public Pair {
   double local_counts[NCOUNT];
   double reported[NCOUNT];
 
+  std::vector<double> contact_data;    // CR_NFIELD doubles per stored contact
+  bigint contact_step;                 // step of contact_data, -1: none
+
+  bool store_contacts_now();
   void allocate();
   void report_counters(bool final);
   void check_timestep();

@@ -20,11 +20,13 @@
 #include "update.h"
 
 #include "polydem_contact_model.h"
+#include "polydem_contact_record.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace LAMMPS_NS;
 
@@ -127,6 +129,33 @@ class FixNeighHistoryPolyhedronKokkos : public FixNeighHistoryKokkos<DeviceType>
     for (int m = 0; m < this->dnum * this->npartner[i]; m++)
       this->valuepartner[j][m] = this->valuepartner[i][m];
   }
+  // Restart: FixNeighHistory::unpack_restart puts the partners into its
+  // host page allocator, which the Kokkos fix does not use (its rows are
+  // DualView rows), so a /kk run lost its contact history on read_restart.
+  // Reorder the restart record (n, then tag + dnum values per partner) into
+  // the exchange layout (n, n tags, n * dnum values) and unpack it as the
+  // Kokkos fix unpacks exchanged atoms (host rows, marked modified).
+  void unpack_restart(int nlocal, int nth) override
+  {
+    double **extra = this->atom->extra;
+    const int dnum = this->dnum;
+    int m = 0;
+    for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+    m++;
+    const int n = static_cast<int>(extra[nlocal][m++]);
+    if (n > this->maxpartner) {
+      this->maxpartner = n + 8;    // made equal on all ranks by ensure_partners
+      this->grow_arrays(this->atom->nmax);
+    }
+    std::vector<double> buf(1 + (size_t) n * (1 + dnum));
+    buf[0] = n;
+    for (int k = 0; k < n; k++) {
+      const double *rec = &extra[nlocal][m + k * (1 + dnum)];
+      buf[1 + k] = rec[0];
+      for (int d = 0; d < dnum; d++) buf[1 + n + dnum * k + d] = rec[1 + d];
+    }
+    this->unpack_exchange(nlocal, buf.data());
+  }
   static Fix *create(LAMMPS *lmp, int narg, char **arg)
   {
     return new FixNeighHistoryPolyhedronKokkos<DeviceType>(lmp, narg, arg);
@@ -195,6 +224,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   typename AT::t_float_1d_randomread radius, rmass, pscale;
   typename AT::t_int_1d_randomread type, pshape;
   typename AT::t_tagint_1d_randomread tag;
+  typename AT::t_int_1d_randomread mask;
   polydem_view_t<tdual_quat_array, DeviceType> quat;
   typename AT::t_neighbors_2d neighbors;
   typename AT::t_int_2d firsttouch;
@@ -206,6 +236,9 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   Kokkos::View<char *, DeviceType> workspace;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
+  // per-contact records by pair index (CR_ID1 = 0: none), if store_contacts
+  Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> records;
+  int store_contacts;
   int first;    // pair index of slot 0
   int nlocal, newton_pair, shearupdate;
   int eflag_global, eflag_atom, vflag_global, vflag_atom;
@@ -287,6 +320,12 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
       Kokkos::atomic_add(&f(i, k), F[k]);
       Kokkos::atomic_add(&torque(i, k), tA[k]);
     }
+    if (store_contacts) {
+      const double xi[3] = {pi.x.x, pi.x.y, pi.x.z}, xj[3] = {pj.x.x, pj.x.y, pj.x.z};
+      if (polydem::contact_owned(newton_pair, j < nlocal, tag(i), tag(j), xi, xj))
+        polydem::fill_contact_record(&records(p, 0), tag(i), tag(j), mask(i), mask(j),
+                                     Vi < Vj ? Vi : Vj, geo, cf);
+    }
     if (newton_pair || j < nlocal)
       for (int k = 0; k < 3; k++) {
         Kokkos::atomic_add(&f(j, k), -F[k]);
@@ -339,7 +378,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
 template <class DeviceType>
 PairPolyhedronKokkos<DeviceType>::PairPolyhedronKokkos(LAMMPS *lmp) :
     PairPolyhedron(lmp), avecKK(nullptr), fix_historyKK(nullptr), shape_version(-1), max_faces(0),
-    params_dirty(1), npairs(0), nslots(0)
+    params_dirty(1), npairs(0), nslots(0), store_contacts(0)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -604,13 +643,16 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::ensure_partne
 {
   PolyMaxFunctor<DeviceType> fmax;
   fmax.npartner = d_npartner;
-  int mine = 0, most = 0;
+  int mine = 0, most = 0, allcap = 0;
   Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, nlocal),
                           fmax, mine);
   MPI_Allreduce(&mine, &most, 1, MPI_INT, MPI_MAX, world);
   int &cap = HistoryAccess::capacity(fix_history);
-  if (most > cap) {
-    cap = most + 8;
+  // a rank may have grown alone (unpack_restart): take the largest capacity
+  MPI_Allreduce(&cap, &allcap, 1, MPI_INT, MPI_MAX, world);
+  const int want = most > allcap ? most + 8 : allcap;
+  if (want != cap) {
+    cap = want;
     fix_history->grow_arrays(atom->nmax);
   }
 }
@@ -623,7 +665,15 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::ensure_partne
 template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceType>::run_pairs()
 {
   typedef polydem::OverlapWorkspace<double, MF> Workspace;
-  const double budget = execution_space == Device ? WORKSPACE_BUDGET_DEVICE : WORKSPACE_BUDGET_HOST;
+  // CPU back ends (Serial, OpenMP, ...: the execution space reaches host
+  // memory): a few slots per thread, so the batch's workspaces stay in cache
+  // (all pairs in one batch made the Serial /kk style 2x slower than plain);
+  // GPUs: as many slots as the budget allows
+  typedef typename DeviceType::execution_space ExecSpace;
+  const bool cpu = Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
+  const double budget = cpu
+      ? std::min(WORKSPACE_BUDGET_HOST, (double) SLOTS_PER_CPU_THREAD * ExecSpace::concurrency() * sizeof(Workspace))
+      : WORKSPACE_BUDGET_DEVICE;
   const int maxslots = std::max(1, (int) (budget / sizeof(Workspace)));
   const int want = std::min(npairs, maxslots);
   if (want <= 0) return;
@@ -647,6 +697,7 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.type = atomKK->k_type.view<DeviceType>();
   fn.pshape = avecKK->k_pshape.view<DeviceType>();
   fn.tag = atomKK->k_tag.view<DeviceType>();
+  fn.mask = atomKK->k_mask.view<DeviceType>();
   fn.quat = avecKK->k_quat.view<DeviceType>();
   fn.neighbors = static_cast<NeighListKokkos<DeviceType> *>(list)->d_neighbors;
   fn.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
@@ -670,6 +721,14 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.dt = update->dt;
   fn.overlap_warn = overlap_warn;
   fn.core = core;
+  fn.store_contacts = store_contacts;
+  if (store_contacts) {
+    if ((int) d_records.extent(0) < npairs)
+      d_records = Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType>(
+          "polyhedron/kk:records", npairs + npairs / 5 + 16);
+    Kokkos::deep_copy(d_records, 0.0);
+    fn.records = d_records;
+  }
 
   PolyReduce total;
   for (int first = 0; first < npairs; first += nslots) {
@@ -685,6 +744,21 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += total.v[k];
   for (int k = 0; k < NCOUNT; k++) local_counts[k] += total.cnt[k];
+}
+
+/* ----------------------------------------------------------------------
+   the records of contacts (CR_ID1 > 0) to the host, in pair-array order
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::gather_records()
+{
+  contact_step = update->ntimestep;
+  if (npairs <= 0) return;
+  auto h = Kokkos::create_mirror_view(d_records);
+  Kokkos::deep_copy(h, d_records);
+  for (int p = 0; p < npairs; p++)
+    if (h(p, polydem::CR_ID1) > 0.0)
+      for (int k = 0; k < polydem::CR_NFIELD; k++) contact_data.push_back(h(p, k));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -716,6 +790,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
   fix_historyKK->k_firstvalue.template sync<DeviceType>();
 
   build_pairs();
+  store_contacts = store_contacts_now() ? 1 : 0;
   switch (workspace_max_faces(max_faces)) {
     case 16:
       run_pairs<16>();
@@ -730,6 +805,8 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
       run_pairs<128>();
       break;
   }
+
+  if (store_contacts) gather_records();
 
   fix_historyKK->k_firstflag.template modify<DeviceType>();
   fix_historyKK->k_firstvalue.template modify<DeviceType>();
@@ -752,6 +829,7 @@ template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::memory_usag
 {
   double bytes = Pair::memory_usage();
   bytes += (double) d_workspace.extent(0);
+  bytes += (double) d_records.extent(0) * polydem::CR_NFIELD * sizeof(double);
   bytes += (double) (d_count.extent(0) + d_offset.extent(0) + 2 * d_pairs.extent(0)) * sizeof(int);
   bytes += (double) (d_sverts.extent(0) + d_splanes.extent(0)) * sizeof(double);
   bytes += (double) (d_sface_start.extent(0) + d_sface_verts.extent(0) + d_sedges.extent(0) +

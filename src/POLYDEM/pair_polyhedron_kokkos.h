@@ -24,6 +24,7 @@ PairStyle(polyhedron/kk/host,PairPolyhedronKokkos<LMPHostType>);
 
 #include "kokkos_type.h"
 #include "pair_polyhedron.h"
+#include "polydem_contact_record.h"
 #include "polydem_shape_view.h"
 
 namespace LAMMPS_NS {
@@ -44,6 +45,8 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   // device memory for the overlap workspaces of one batch [bytes]
   static constexpr double WORKSPACE_BUDGET_DEVICE = 512.0 * 1024 * 1024;
   static constexpr double WORKSPACE_BUDGET_HOST = 64.0 * 1024 * 1024;
+  // on CPU back ends: workspaces per thread in one batch
+  static constexpr int SLOTS_PER_CPU_THREAD = 16;
 
   // the MaxFaces instantiations of OverlapWorkspace the style dispatches on
   static int workspace_max_faces(int nfaces);
@@ -77,6 +80,10 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   Kokkos::View<char *, DeviceType> d_workspace;
   int nslots;
 
+  // per-contact records by pair index, on steps a contact compute is due
+  Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> d_records;
+  int store_contacts;
+
   DAT::tdual_efloat_1d k_eatom;
   DAT::tdual_virial_array k_vatom;
 
@@ -85,6 +92,7 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   void build_pairs();
   void ensure_partners(int nlocal);
   template <int MF> void run_pairs();
+  void gather_records();
 };
 
 }    // namespace LAMMPS_NS

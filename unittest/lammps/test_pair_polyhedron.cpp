@@ -2,6 +2,7 @@
 // energy conservation of elastic collisions and its dt^2 convergence,
 // momentum conservation, bad pair_coeff input.
 
+#include "pair_restart_case.h"
 #include "polydem_lmp.h"
 
 #include "force.h"
@@ -34,20 +35,33 @@ struct Collision {
   double final_rel_energy_error;    // after the particles separated
 };
 
-// Two dodecahedra (edge 1 mm) approach at 0.4 m/s each, offset (oblique) and
-// spinning; elastic (e = 1) and frictionless (mu = 0).
-Collision collide(double dt, long steps, const std::string &shape = "dodecahedron.shape",
-                  double scale = 0.001)
+// Two particles approach at 0.4 m/s each along x from +-x0, the second
+// offset by (dy, dz) (0: head-on) and both spinning if spin; elastic (e = 1)
+// and frictionless (mu = 0); E = 1e7 Pa, 2500 kg/m^3.
+struct Approach {
+  std::string shape;
+  double scale, x0, dy, dz;
+  bool spin;
+};
+const Approach DODECA_OBLIQUE{"dodecahedron.shape", 0.001, 0.002, 0.0007, 0.0003, true};
+const Approach DODECA_HEADON{"dodecahedron.shape", 0.001, 0.002, 0.0, 0.0, false};
+// the 42-vertex faceted cylinder of the seed (D = 8 mm, L = 5.3 mm)
+const Approach CYL_OBLIQUE{"cylinder42.shape", 1.0, 0.006, 0.0015, 0.0008, true};
+const Approach CYL_HEADON{"cylinder42.shape", 1.0, 0.006, 0.0, 0.0, false};
+
+Collision collide(double dt, long steps, const Approach &ap = DODECA_OBLIQUE)
 {
   Lmp l;
   l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-          "comm_modify vel yes", "region box block -0.02 0.02 -0.02 0.02 -0.02 0.02",
-          "create_box 1 box", "polyhedron_shape s " + potentials() + "/" + shape,
-          "create_atoms 1 single -0.002 0.0 0.0", "create_atoms 1 single 0.002 0.0007 0.0003",
-          "polyhedron_set group all scale " + num(scale) + " density 2500",
-          "polyhedron_set atom 1 quat 1 2 3 30 omega 30 -20 50",
-          "polyhedron_set atom 2 quat -1 0.5 2 70 omega -40 10 25",
-          "velocity all set 0 0 0", "set atom 1 vx 0.4", "set atom 2 vx -0.4",
+          "comm_modify vel yes", "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05",
+          "create_box 1 box", "polyhedron_shape s " + potentials() + "/" + ap.shape,
+          "create_atoms 1 single " + num(-ap.x0) + " 0.0 0.0",
+          "create_atoms 1 single " + num(ap.x0) + " " + num(ap.dy) + " " + num(ap.dz),
+          "polyhedron_set group all scale " + num(ap.scale) + " density 2500",
+          "polyhedron_set atom 1 quat 1 2 3 30", "polyhedron_set atom 2 quat -1 0.5 2 70"});
+  if (ap.spin)
+    l.cmds({"polyhedron_set atom 1 omega 30 -20 50", "polyhedron_set atom 2 omega -40 10 25"});
+  l.cmds({"velocity all set 0 0 0", "set atom 1 vx 0.4", "set atom 2 vx -0.4",
           "pair_style polyhedron", "pair_coeff * * 1.0e7 0.3 1.0 0.0", "neighbor 0.0005 bin",
           "neigh_modify every 1 delay 0 check yes", "fix 1 all nve/polyhedron",
           "compute kt all ke", "compute er all erotate/polyhedron", "thermo 10",
@@ -82,28 +96,27 @@ Collision collide(double dt, long steps, const std::string &shape = "dodecahedro
   return c;
 }
 
-}    // namespace
 
-// Elastic oblique collision with spin: total energy (translational +
-// rotational + W(V)) is conserved across the collision, and its deviation
+// Elastic collisions: total energy (translational + rotational + W(V)) is
+// conserved across the collision to 1e-6 at dt = t_c/200, and its deviation
 // during the contact falls as dt^2 (Feng's force is the exact gradient of
-// W(V); the integrator is symplectic). The contact lasts t_c = 2.75e-4 s
-// (measured below); dt = t_c/200, t_c/400, t_c/800.
-TEST(PairPolyhedron, ElasticCollisionConservesEnergy)
+// W(V); the integrator is symplectic), at dt = t_c/200, t_c/400, t_c/800.
+// tc: the contact time of the case (measured with pe > 0, checked to 10 %);
+// T: approach, contact and separation.
+void check_energy_convergence(const Approach &ap, double tc, double T)
 {
-  const double tc = 2.75e-4;
-  const double T = 0.006;    // approach (2 ms), contact, separation
-  const Collision c1 = collide(tc / 200, (long) (T / (tc / 200)));
-  const Collision c2 = collide(tc / 400, (long) (T / (tc / 400)));
-  const Collision c3 = collide(tc / 800, (long) (T / (tc / 800)));
+  const Collision c1 = collide(tc / 200, (long) (T / (tc / 200)), ap);
+  const Collision c2 = collide(tc / 400, (long) (T / (tc / 400)), ap);
+  const Collision c3 = collide(tc / 800, (long) (T / (tc / 800)), ap);
   ASSERT_GT(c1.max_pe, 0.0) << "the particles never touched";
   EXPECT_EQ(c1.final_rel_energy_error, c1.final_rel_energy_error);    // not NaN
-  std::printf("contact time %.3g s; max energy deviation during contact: dt=t_c/200 %.3g, "
-              "/400 %.3g, /800 %.3g; after separation %.3g %.3g %.3g; max W %.3g J; "
+  std::printf("%s%s: contact time %.3g s; max energy deviation during contact: dt=t_c/200 "
+              "%.3g, /400 %.3g, /800 %.3g; after separation %.3g %.3g %.3g; max W %.3g J; "
               "momentum error %.3g\n",
-              c1.contact_time, c1.max_rel_energy_error, c2.max_rel_energy_error,
-              c3.max_rel_energy_error, c1.final_rel_energy_error, c2.final_rel_energy_error,
-              c3.final_rel_energy_error, c1.max_pe, c1.max_rel_momentum_error);
+              ap.shape.c_str(), ap.spin ? " oblique, spinning" : " head-on", c1.contact_time,
+              c1.max_rel_energy_error, c2.max_rel_energy_error, c3.max_rel_energy_error,
+              c1.final_rel_energy_error, c2.final_rel_energy_error, c3.final_rel_energy_error,
+              c1.max_pe, c1.max_rel_momentum_error);
   EXPECT_NEAR(c1.contact_time / tc, 1.0, 0.1);
   // before vs after the collision, at dt = t_c/200
   EXPECT_LE(c1.final_rel_energy_error, 1e-6);
@@ -112,6 +125,24 @@ TEST(PairPolyhedron, ElasticCollisionConservesEnergy)
   EXPECT_NEAR(std::log2(c2.max_rel_energy_error / c3.max_rel_energy_error), 2.0, 0.3);
   // Newton's third law: total momentum to round-off
   EXPECT_LE(c1.max_rel_momentum_error, 1e-12);
+}
+
+}    // namespace
+
+TEST(PairPolyhedron, ElasticCollisionConservesEnergy)
+{
+  check_energy_convergence(DODECA_OBLIQUE, 2.75e-4, 0.006);
+}
+
+TEST(PairPolyhedron, ElasticHeadOnDodecahedraConserveEnergy)
+{
+  check_energy_convergence(DODECA_HEADON, 1.95e-4, 0.006);
+}
+
+TEST(PairPolyhedron, ElasticCylindersConserveEnergy)
+{
+  check_energy_convergence(CYL_HEADON, 7.0e-4, 0.008);
+  check_energy_convergence(CYL_OBLIQUE, 3.8e-4, 0.008);
 }
 
 // Two aligned cubes (edge a) overlapping face to face by delta, offset by dy
@@ -332,43 +363,9 @@ TEST(PairPolyhedron, FrictionInclineSticksOrSlides)
 // in the restart file).
 TEST(PairPolyhedron, RestartKeepsContactHistory)
 {
-  const std::string rfile = ::testing::TempDir() + "polydem_pair_restart.bin";
-  const double th = 20.0 * M_PI / 180.0;
-  const std::string tilt =
-      "fix g top gravity 9.81 vector " + num(std::sin(th)) + " 0 " + num(-std::cos(th));
-  double ref[6], got[6];
-  {
-    Lmp l;
-    std::vector<std::string> c = {
-        "units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-        "comm_modify vel yes", "region box block -0.3 0.3 -0.05 0.05 -0.05 0.08",
-        "create_box 2 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape"};
-    for (int k = 0; k < 5; k++) c.push_back("create_atoms 1 single " + num(-0.2 + 0.025 * k) + " 0 0");
-    for (const std::string &x : std::vector<std::string>{
-             "create_atoms 2 single -0.15 0.003 0.02501", "polyhedron_set group all density 1500",
-             "polyhedron_set type 2 quat 0 0 1 10", "group top type 2",
-             "pair_style polyhedron core 2e-4", "pair_coeff * * 1.0e6 0.1 0.3 0.5",
-             "neighbor 0.001 bin", "neigh_modify exclude type 1 1",
-             "fix 1 top nve/polyhedron", "fix g top gravity 9.81 vector 0 0 -1",
-             "timestep 1e-5", "run 3000", "unfix g", tilt, "run 1000",
-             "write_restart " + rfile, "run 1000"})
-      c.push_back(x);
-    l.cmds(c);
-    auto *a = l.lmp->atom;
-    const int i = a->map(6);
-    for (int k = 0; k < 3; k++) ref[k] = a->x[i][k], ref[3 + k] = a->angmom[i][k];
-  }
-  {
-    Lmp l;
-    l.cmds({"read_restart " + rfile, "comm_modify vel yes", "group top type 2",
-            "neighbor 0.001 bin", "neigh_modify exclude type 1 1", "fix 1 top nve/polyhedron",
-            tilt, "timestep 1e-5", "run 1000"});
-    auto *a = l.lmp->atom;
-    const int i = a->map(6);
-    for (int k = 0; k < 3; k++) got[k] = a->x[i][k], got[3 + k] = a->angmom[i][k];
-  }
-  for (int k = 0; k < 6; k++) EXPECT_EQ(got[k], ref[k]) << "component " << k;
-  std::remove(rfile.c_str());
+  const auto r = polydem_test::pair_restart_case(
+      {}, ::testing::TempDir() + "polydem_pair_restart.bin", [](Lmp &) {});
+  for (int k = 0; k < 6; k++) EXPECT_EQ(r.got[k], r.ref[k]) << "component " << k;
 }
 
 TEST(PairPolyhedron, BadCoefficients)
