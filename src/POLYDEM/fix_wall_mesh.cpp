@@ -248,6 +248,7 @@ void FixWallMesh::init()
   const int nt = atom->ntypes;
   tE.assign(nt + 1, 0.0);
   tnu = wE = wnu = tdamp = tmu = tE;
+  tdtab.assign(nt + 1, polydem::WallDamping<double>());
   for (int t = 1; t <= nt; t++) {
     tE[t] = E[t];
     tnu[t] = nu[t];
@@ -259,6 +260,7 @@ void FixWallMesh::init()
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} E nu "
                  "e mu)", t, t, t);
     tdamp[t] = polydem::damping_factor(et);
+    tdtab[t] = polydem::wall_damping_table(et);
   }
   build_grid();
 }
@@ -387,7 +389,8 @@ void FixWallMesh::compute_forces(bool update)
     pose.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
     pose.s = atom->pscale[i];
     const auto wf = polydem::wall_particle(
-        sv, pose, mp, g, params(i, update), cosmax, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
+        sv, pose, mp, g, params(i, update), tdtab[atom->type[i]], cosmax,
+        polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
         polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]), hist[i], update, *ws, P);
     counts_local[0] += P.noverflow;
     counts_local[1] += P.ndegenerate;

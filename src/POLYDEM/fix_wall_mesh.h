@@ -70,6 +70,7 @@ class FixWallMesh : public Fix {
   double **hist;     // per atom: WALL_HIST_SIZE values
   // per type (1..ntypes): particle E, nu; wall E, nu; damping ratio; mu
   std::vector<double> tE, tnu, wE, wnu, tdamp, tmu;
+  std::vector<polydem::WallDamping<double>> tdtab;    // zeta(e, contact shape)
   double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
   int reduced;
   double counts_local[3], counts_reported[3];

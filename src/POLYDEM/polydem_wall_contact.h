@@ -28,6 +28,10 @@
 #include "polydem_contact_model.h"
 #include "polydem_mesh_grid.h"
 
+#include <cmath>
+#include <utility>
+#include <vector>
+
 namespace polydem {
 
 constexpr int WALL_MAX_PATCH = 4;    // contacts per particle and mesh
@@ -40,6 +44,7 @@ template <typename T> struct WallPatch {
   Vec3<T> S, M;     // sums (mesh frame)
   Vec3<T> ac;       // area-weighted sum of section centroids
   Vec3<T> vc;       // volume-weighted sum of volume centroids
+  T depth;          // deepest particle vertex behind the first facet's plane
 };
 
 template <typename T> struct WallPatches {
@@ -87,6 +92,14 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         const Vec3<T> z = make_vec3(T(0), T(0), T(0));
         p.nseed = r.normal;
         p.volume = p.area = T(0);
+        p.depth = T(0);
+        const ShapeView<T> &sv = *a->view;
+        for (int i = 0; i < sv.nverts; ++i) {
+          const Vec3<T> x = a->x + a->s * matvec(a->R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
+                                                                  sv.verts[3 * i + 2]));
+          const T d = dot(r.normal, tri.v[0] - x);
+          p.depth = d > p.depth ? d : p.depth;
+        }
         p.S = p.M = p.ac = p.vc = z;
       } else
         out->nmerged++;    // more facet orientations than patches: join the closest
@@ -125,6 +138,90 @@ template <typename T> struct MeshPose {
   Vec3<T> vw, w;   // translation velocity, angular velocity (lab)
 };
 
+// Normal damping of a wall contact. contact_force's damping ratio is
+// calibrated for a face contact (V = A delta, W' ~ V^(1/3)) of a free
+// particle. A corner or edge hitting a wall is a different self-similar
+// contact: with V ~ delta^a (a = A delta / V: 1 face, 2 edge, 3 vertex) and
+// W' ~ V^q (q = dlnW'/dlnV: 1/3 for Feng's law, 1 deep in the quadratic
+// core V << V0), F = W'(V) A ~ delta^(a(q+1) - 1) and the model's local
+// stiffness W''(V) A^2 = q a F / delta. The restitution then depends on
+// (a, q), and the contact point sees the mass m_c = 1 / (1/m + (r x n).
+// I^-1 (r x n)) (r: centre to contact point), not m. The wall contact uses
+// m_c and zeta(e, a, q) interpolated in a table calibrated on the host, so
+// that a corner impact reverses the contact point's normal velocity by e
+// (the assumption of seed Eqs. 27-28).
+constexpr int WALL_DAMP_N = 9;    // a = 1, 1.25, ..., 3; q = 1/3 and 1
+template <typename T> struct WallDamping {
+  T z[2][WALL_DAMP_N];
+};
+
+template <typename T> POLYDEM_FN T wall_damping_ratio(const WallDamping<T> &d, T a, T q)
+{
+  T u = (a - T(1)) * T(4);
+  if (!(u > T(0))) u = T(0);
+  if (u > T(WALL_DAMP_N - 1)) u = T(WALL_DAMP_N - 1);
+  int k = (int) u;
+  if (k > WALL_DAMP_N - 2) k = WALL_DAMP_N - 2;
+  const T f = u - T(k);
+  T wq = (q - T(1) / T(3)) * T(1.5);
+  wq = wq < T(0) ? T(0) : (wq > T(1) ? T(1) : wq);
+  const T z0 = (T(1) - f) * d.z[0][k] + f * d.z[0][k + 1];
+  const T z1 = (T(1) - f) * d.z[1][k] + f * d.z[1][k + 1];
+  return (T(1) - wq) * z0 + wq * z1;
+}
+
+// Restitution of x'' = -x^p - 2 zeta sqrt(b x^(p-1)) x', x(0) = 0, x'(0) = 1,
+// p = a(q+1) - 1, b = q a (host only; a = 1, q = 1/3 is the pair's face
+// contact, damping_factor).
+inline double wall_contact_restitution(double zeta, double a, double q)
+{
+  const double p = a * (q + 1.0) - 1.0, b = q * a, h = 5e-5;
+  double x = 0.0, v = 1.0;
+  auto kick = [&](double xx, double vv) {
+    if (!(xx > 0.0)) return vv;
+    const double xp = std::pow(xx, p);
+    const double g = 2.0 * zeta * std::sqrt(b * xp / xx);
+    return (vv - 0.5 * h * xp) / (1.0 + 0.5 * h * g);
+  };
+  for (int n = 0; n < 4000000; n++) {
+    v = kick(x, v);
+    x += h * v;
+    if (x <= 0.0 && n > 0) return -v;
+    v = kick(x, v);
+    if (v < 0.0 && x < 1e-300) return -v;
+  }
+  return 0.0;
+}
+
+// zeta(e, a, q) table for restitution e (host only, remembered per e)
+inline WallDamping<double> wall_damping_table(double e)
+{
+  static std::vector<std::pair<double, WallDamping<double>>> cache;
+  for (auto &c : cache)
+    if (c.first == e) return c.second;
+  WallDamping<double> d;
+  for (int iq = 0; iq < 2; iq++)
+    for (int k = 0; k < WALL_DAMP_N; k++) {
+      const double a = 1.0 + 0.25 * k, q = iq == 0 ? 1.0 / 3.0 : 1.0;
+      d.z[iq][k] = 0.0;
+      if (!(e > 0.0) || e >= 1.0) continue;
+      if (iq == 0 && k == 0) {    // the pair's calibration, same value
+        d.z[iq][k] = damping_factor(e);
+        continue;
+      }
+      double lo = 0.0, hi = 1.0;
+      while (wall_contact_restitution(hi, a, q) > e && hi < 1e3) hi *= 2.0;
+      for (int it = 0; it < 30; it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (wall_contact_restitution(mid, a, q) > e) lo = mid;
+        else hi = mid;
+      }
+      d.z[iq][k] = 0.5 * (lo + hi);
+    }
+  cache.emplace_back(e, d);
+  return d;
+}
+
 template <typename T> struct WallForce {
   Vec3<T> f, tau;    // on the particle (torque about its centroid)
   T energy;          // sum of W(V) over patches
@@ -135,10 +232,13 @@ template <typename T> struct WallForce {
 // tangential history hist[WALL_HIST_SIZE] for this mesh: each patch takes
 // the old slot whose normal is closest within the patch angle (else a fresh
 // spring); unmatched slots are cleared. p: contact parameters (meff = m_p).
+// Iinv: inverse principal moments of the particle, R its rotation.
 template <typename T>
 POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &mp,
-                                    const ContactParams<T> &p, T cosmax, const Vec3<T> &x,
-                                    const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update)
+                                    const ContactParams<T> &p0, const WallDamping<T> &damp,
+                                    const Vec3<T> &Iinv, const Mat3<T> &R, T cosmax,
+                                    const Vec3<T> &x, const Vec3<T> &v, const Vec3<T> &w,
+                                    T *hist, bool update)
 {
   WallForce<T> out;
   out.f = out.tau = make_vec3(T(0), T(0), T(0));
@@ -177,6 +277,18 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
       used[best] = true;
       for (int i = 0; i < 3; ++i) shear[i] = hist[WALL_HIST * best + 3 + i];
     }
+    // contact-point mass and damping ratio of this patch's contact shape
+    ContactParams<T> p = p0;
+    const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
+    const T im = T(1) / p0.meff + rn.x * rn.x * Iinv.x + rn.y * rn.y * Iinv.y + rn.z * rn.z * Iinv.z;
+    p.meff = T(1) / im;
+    // local exponent of W'(V): 1/3 above V0, -> 1 deep in the core
+    T qexp = T(1) / T(3);
+    if (q.volume < p0.V0) {
+      const T u = q.volume / p0.V0;
+      qexp = (T(5) / T(3) - T(4) / T(3) * u) / (T(5) / T(3) - T(2) / T(3) * u);
+    }
+    p.damp = wall_damping_ratio(damp, an * q.depth / q.volume, qexp);
     const ContactForce<T> cf = contact_force(g, p, x, xw, v, mp.vw, w, mp.w, shear);
     T *h = newh + WALL_HIST * out.ncontact;
     h[0] = g.normal.x;
@@ -198,8 +310,9 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
 template <typename T, int MF, int ME>
 POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab,
                                       const MeshPose<T> &mp, const MeshGridView<T> &g,
-                                      const ContactParams<T> &p, T cosmax, const Vec3<T> &v,
-                                      const Vec3<T> &w, T *hist, bool update,
+                                      const ContactParams<T> &p, const WallDamping<T> &damp,
+                                      T cosmax, const Vec3<T> &v, const Vec3<T> &w, T *hist,
+                                      bool update,
                                       ClipWorkspace<T, MF, ME> &ws, WallPatches<T> &P)
 {
   Pose<T> pm;
@@ -208,7 +321,11 @@ POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab
   pm.s = lab.s;
   const PosedShape<T> a = make_posed(sv, pm);
   wall_patches(a, g, cosmax, ws, P);
-  return wall_forces(P, mp, p, cosmax, lab.x, v, w, hist, update);
+  // inverse principal moments: I = rho s^5 I_unit, rho = m / (s^3 V_unit)
+  const T rho = p.meff / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
+  const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),
+                                 T(1) / (rho * s5 * sv.inertia[2]));
+  return wall_forces(P, mp, p, damp, Iinv, a.R, cosmax, lab.x, v, w, hist, update);
 }
 
 }    // namespace polydem
