@@ -2,6 +2,7 @@
 // analytic flat wall (seed §3.2, Table 2 cuboid), bad input, restart.
 #include "polydem_lmp.h"
 #include "wall_meshes.h"
+#include "wall_scene.h"
 
 #include "atom_vec_polyhedron.h"
 #include "fix.h"
@@ -234,4 +235,151 @@ TEST(WallMesh, CylinderImpact)
     EXPECT_NEAR(r.wy, r.wy_a, 0.02 * std::fabs(r.wy_a)) << th;
     EXPECT_NEAR(r.vz, r.vz_a, 0.02 * V) << th;
   }
+}
+
+namespace {
+
+std::string write_file(const std::string &name, const std::string &text)
+{
+  const std::string p = tmpdir() + "/" + name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::vector<std::string> one_particle()
+{
+  return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
+          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
+          "create_atoms 1 single 0 0 0.05", "polyhedron_set group all density 1500",
+          "pair_style polyhedron", "pair_coeff * * 1e6 0.1 0.5 0.5"};
+}
+
+}    // namespace
+
+// Acceptance 5: each bad input a clear LAMMPS error naming the command and
+// the file (and line), or a warning with a count.
+TEST(WallMesh, BadInput)
+{
+  const std::string good = tmpdir() + "/good.stl";
+  write_ascii(good, flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2));
+  Tris t = flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2);
+  const std::string trunc = tmpdir() + "/trunc_lmp.stl";
+  write_binary(trunc, t, 84 + 50 * 8 - 20);
+  const std::string bad = write_file("bad_lmp.stl", "solid s\n facet normal 0 0 1\n  outer loop\n"
+                                                    "   vertex 0 0 0\n   vertex 1 0\n");
+  const std::string nan = write_file("nan_lmp.stl", "solid s\n facet normal 0 0 1\n  outer loop\n"
+                                                    "   vertex 0 0 0\n   vertex 1 0 0\n"
+                                                    "   vertex 0 NaN 0\n  endloop\n endfacet\n"
+                                                    "endsolid s\n");
+  const std::string empty = write_file("empty_lmp.stl", "solid s\nendsolid s\n");
+  struct Case {
+    std::string args, expect;
+  };
+  const std::vector<Case> cases = {
+      {"/nonexistent/wall.stl", "fix wall/mesh: /nonexistent/wall.stl: cannot open file"},
+      {trunc, "truncated binary STL"},
+      {bad, "bad_lmp.stl:5: expected 'vertex x y z'"},
+      {nan, "nan_lmp.stl:2: facet: non-finite coordinate"},
+      {empty, "empty mesh"},
+      {good + " bogus 1", "fix wall/mesh: unknown keyword 'bogus'"},
+      {good + " scale -1", "fix wall/mesh: scale must be > 0"},
+      {good + " offset 1 2", "keyword 'offset' needs 3 value(s)"},
+      {good + " move rotate 0 0 0 0 0 1 speed 3", "'omega' or 'rpm', got 'speed'"},
+      {good + " move rotate 0 0 0 0 0 0 rpm 3", "move rotate axis must be non-zero"},
+      {good + " move spin", "unknown move style 'spin'"},
+      {good + " friction -0.1", "friction must be >= 0"},
+      {good + " restitution 0", "restitution must be in (0, 1]"},
+      {good + " poisson 0.5", "poisson must be in (-1, 0.5)"},
+      {good + " patch/angle 95", "patch/angle must be in [0, 90)"},
+      {good + " flip maybe", "flip expects yes or no"},
+      {good + " scale abc", "Expected floating point parameter"},
+  };
+  for (const auto &c : cases) {
+    Lmp l;
+    l.cmds(one_particle());
+    const std::string msg = l.error_of("fix w all wall/mesh " + c.args);
+    EXPECT_NE(msg.find(c.expect), std::string::npos) << c.args << " -> '" << msg << "'";
+  }
+  {    // without pair_style polyhedron the particles have no material
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "region box block -1 1 -1 1 -1 1",
+            "create_box 1 box", "fix w all wall/mesh " + good});
+    const std::string msg = l.error_of("run 0");
+    EXPECT_NE(msg.find("requires pair_style polyhedron"), std::string::npos) << msg;
+  }
+}
+
+// zero-area and duplicate triangles: dropped, counted in a warning
+TEST(WallMesh, DroppedTrianglesWarn)
+{
+  Tris t = flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2);
+  const Tris dup(t.begin(), t.begin() + 9);
+  t.insert(t.end(), dup.begin(), dup.end());
+  for (double v : {0.0, 0.0, 0.0, 0.01, 0.0, 0.0, 0.02, 0.0, 0.0}) t.push_back(v);
+  const std::string f = tmpdir() + "/dropped.stl";
+  write_binary(f, t);
+  const std::string log = tmpdir() + "/dropped.log";
+  {
+    Lmp l({"-log", log});
+    l.cmds(one_particle());
+    l.cmd("fix w all wall/mesh " + f);
+  }
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  EXPECT_NE(text.find("10 triangles read, 8 kept"), std::string::npos) << text;
+  EXPECT_NE(text.find("WARNING: fix wall/mesh: " + f + ": 1 zero-area triangles dropped"),
+            std::string::npos);
+  EXPECT_NE(text.find("WARNING: fix wall/mesh: " + f + ": 1 duplicate triangles dropped"),
+            std::string::npos);
+}
+
+// Restart: the wall history of every atom and the mesh's displacement (a
+// translating box) survive write_restart / read_restart bit for bit; with
+// a fix of another ID (history and displacement lost) the run differs.
+TEST(WallMesh, Restart)
+{
+  const double B = 0.06;
+  const std::string data = scene_data(tmpdir() + "/restart.data", 3, B, 11);
+  const std::string stl = tmpdir() + "/restart_box.stl";
+  write_binary(stl, closed_box(B, 4));
+  const std::string rst = tmpdir() + "/wall.restart";
+  const std::string fix = " all wall/mesh " + stl + " friction 0.6 move translate 0.02 0 0";
+  std::map<long, Lmp::State> ref, again, lost;
+  double wref[3];
+  {
+    Lmp l;
+    l.cmds(scene_setup(data));
+    l.cmds({"fix w" + fix, "run 400", "write_restart " + rst, "run 300"});
+    ref = l.local_state();
+    auto *w = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+    for (int k = 0; k < 3; k++) wref[k] = w->compute_vector(k);
+    ASSERT_GT(w->compute_vector(6), 0.0);    // contacts at the restart time and after
+  }
+  auto restarted = [&](const std::string &id) {
+    Lmp l;
+    l.cmds({"read_restart " + rst, "comm_modify vel yes", "neighbor 0.002 bin",
+            "neigh_modify every 1 delay 0 check yes", "fix nve all nve/polyhedron",
+            "fix g all gravity 9.81 vector 0 0 -1", "fix " + id + fix, "run 300"});
+    if (id == "w") {
+      auto *w = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+      for (int k = 0; k < 3; k++) EXPECT_EQ(w->compute_vector(k), wref[k]);
+    }
+    return l.local_state();
+  };
+  again = restarted("w");
+  lost = restarted("other");
+  ASSERT_EQ(again.size(), ref.size());
+  double same = 0.0, diff = 0.0;
+  for (auto &kv : ref)
+    for (int k = 0; k < 3; k++) {
+      same = std::fmax(same, std::fabs(kv.second.x[k] - again[kv.first].x[k]));
+      same = std::fmax(same, std::fabs(kv.second.v[k] - again[kv.first].v[k]));
+      diff = std::fmax(diff, std::fabs(kv.second.v[k] - lost[kv.first].v[k]));
+    }
+  std::printf("[ wall     ] restart: max |difference| %.3g; without history %.3g\n", same, diff);
+  EXPECT_EQ(same, 0.0);
+  EXPECT_GT(diff, 1e-6);
 }
