@@ -328,10 +328,8 @@ polydem::ContactParams<double> FixWallMesh::params(int i, bool stepping) const
   const double s = atom->pscale[i];
   const double V = avec->shape(atom->pshape[i]).volume() * s * s * s;
   const double m = atom->rmass[i];
-  auto p = polydem::make_contact_params(tE[t], tnu[t], V, m, wE[t], wnu[t], V, m, tdamp[t],
-                                        tmu[t], core, stepping ? update->dt : 0.0);
-  p.meff = m;    // the wall has infinite mass
-  return p;
+  return polydem::wall_params(tE[t], tnu[t], wE[t], wnu[t], V, m, tdamp[t], tmu[t], core,
+                              stepping ? update->dt : 0.0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -354,10 +352,8 @@ void FixWallMesh::post_force(int /*vflag*/)
 void FixWallMesh::tally(const double *x, const polydem::WallForce<double> &wf,
                         const polydem::MeshPose<double> &mp, int ntri)
 {
-  // reaction on the mesh: -f, and the torque balancing the particle's about
-  // the mesh's axis point o + d
-  const polydem::Vec3<double> r = polydem::make_vec3(x[0], x[1], x[2]) - (mp.o + mp.d);
-  const polydem::Vec3<double> tm = -(wf.tau + polydem::cross(r, wf.f));
+  // reaction on the mesh: -f, and the torque balancing the particle's
+  const auto tm = polydem::wall_reaction_torque(polydem::make_vec3(x[0], x[1], x[2]), wf, mp);
   local[0] -= wf.f.x;
   local[1] -= wf.f.y;
   local[2] -= wf.f.z;

@@ -305,6 +305,27 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
   return out;
 }
 
+// Contact parameters of a particle (volume V, mass m, type material E, nu)
+// with the wall (wE, wnu): the wall is a half-space sized like the particle
+// (R_w = R_p) and of infinite mass (m_eff = m).
+template <typename T>
+POLYDEM_FN ContactParams<T> wall_params(T E, T nu, T wE, T wnu, T V, T m, T damp, T mu, T core,
+                                        T dt)
+{
+  ContactParams<T> p = make_contact_params(E, nu, V, m, wE, wnu, V, m, damp, mu, core, dt);
+  p.meff = m;
+  return p;
+}
+
+// Torque on the mesh about its axis point o + d balancing the particle's
+// force f and torque tau (about x).
+template <typename T>
+POLYDEM_FN Vec3<T> wall_reaction_torque(const Vec3<T> &x, const WallForce<T> &wf,
+                                        const MeshPose<T> &mp)
+{
+  return -(wf.tau + cross(x - (mp.o + mp.d), wf.f));
+}
+
 // Everything for one particle (lab pose x, q, s; velocity v, spin w):
 // pose into the mesh frame, patches, forces back in the lab frame.
 template <typename T, int MF, int ME>
