@@ -375,7 +375,7 @@ void FixWallMesh::compute_forces(bool update)
   const int nlocal = atom->nlocal;
   const auto mp = mesh_pose();
   const auto g = grid_view();
-  if (!ws) ws = std::make_unique<polydem::ClipWorkspace<double>>();
+  if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
   polydem::WallPatches<double> P;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;

@@ -75,7 +75,7 @@ class FixWallMesh : public Fix {
   int reduced;
   double counts_local[3], counts_reported[3];
   class AtomVecPolyhedron *avec;
-  std::unique_ptr<polydem::ClipWorkspace<double>> ws;
+  std::unique_ptr<polydem::WallWorkspace<double>> ws;
 
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;

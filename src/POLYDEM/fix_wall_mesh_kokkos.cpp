@@ -23,7 +23,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 
 namespace {
 
-typedef polydem::ClipWorkspace<double> WallWorkspace;
+typedef polydem::WallWorkspace<double> WallWorkspace;
 constexpr int NSUM = 12;    // force (3), torque (3), contacts, triangles, energy, counters (3)
 
 /* ----------------------------------------------------------------------

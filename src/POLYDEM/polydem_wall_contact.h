@@ -37,6 +37,7 @@ namespace polydem {
 constexpr int WALL_MAX_PATCH = 4;    // contacts per particle and mesh
 constexpr int WALL_HIST = 6;         // per patch: normal (3), shear (3)
 constexpr int WALL_HIST_SIZE = WALL_MAX_PATCH * WALL_HIST;
+constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle (more: clipped at once)
 
 template <typename T> struct WallPatch {
   Vec3<T> nseed;    // first facet's normal n_w (mesh frame)
@@ -53,19 +54,238 @@ template <typename T> struct WallPatches {
   WallPatch<T> p[WALL_MAX_PATCH];
 };
 
+// Clipping workspace plus the particle's posed vertices (mesh frame), computed
+// once per particle for the exact cheap rejects of wall_patches.
+template <typename T, int MF = MAX_TEMPLATE_FACES, int ME = 3 * MAX_TEMPLATE_VERTS>
+struct WallWorkspace {
+  ClipWorkspace<T, MF, ME> clip;
+  T verts[3 * MAX_TEMPLATE_VERTS];
+  T dist[MAX_TEMPLATE_VERTS];    // scaled signed distances to the current plane
+  // candidates of one particle, and the coplanar-group coverage test
+  static constexpr int MAXH = 4 * MAX_TEMPLATE_VERTS + 8;
+  int cand[WALL_MAX_CAND];
+  unsigned char cflag[WALL_MAX_CAND];
+  int ncand;
+  T hu[MAXH], hv[MAXH], pu[MAXH], pv[MAXH], qu[MAXH], qv[MAXH];
+};
+
 template <typename T, int MF, int ME> struct WallAccumulate {
   const PosedShape<T> *a;
   const MeshGridView<T> *g;
-  ClipWorkspace<T, MF, ME> *ws;
+  WallWorkspace<T, MF, ME> *ws;
   WallPatches<T> *out;
   T cosmax;    // cos(patch angle)
 
-  POLYDEM_FN void operator()(int t)
+  // Exact cheap reject. The part of the particle behind the triangle's plane
+  // is the convex hull of the vertices behind it and of the edges' crossing
+  // points; separated if it is empty or lies outside one side of the prism.
+  POLYDEM_FN bool separated(const Triangle<T> &tri) const
+  {
+    const ShapeView<T> &sv = *a->view;
+    const Vec3<T> nr = cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
+    bool any = false;
+    for (int i = 0; i < sv.nverts; ++i) {
+      ws->dist[i] = dot(nr, wall_vert(i) - tri.v[0]);
+      any = any || ws->dist[i] < T(0);
+    }
+    if (!any) return true;
+    for (int e = 0; e < 3; ++e) {
+      const Vec3<T> o = tri.v[e], side = cross(tri.v[(e + 1) % 3] - o, nr);    // outward
+      bool out = true;
+      for (int i = 0; i < sv.nverts && out; ++i)
+        if (ws->dist[i] < T(0)) out = dot(side, wall_vert(i) - o) > T(0);
+      for (int k = 0; k < sv.nedges && out; ++k) {
+        const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+        const T di = ws->dist[i], dj = ws->dist[j];
+        if ((di < T(0)) == (dj < T(0))) continue;
+        const Vec3<T> vi = wall_vert(i);
+        const Vec3<T> p = vi + (di / (di - dj)) * (wall_vert(j) - vi);
+        out = dot(side, p - o) > T(0);
+      }
+      if (out) return true;
+    }
+    return false;
+  }
+
+  POLYDEM_FN Vec3<T> wall_vert(int i) const
+  {
+    return make_vec3(ws->verts[3 * i], ws->verts[3 * i + 1], ws->verts[3 * i + 2]);
+  }
+
+  POLYDEM_FN Triangle<T> triangle(int t) const
   {
     Triangle<T> tri;
     const T *q = g->tri + 9 * t;
     for (int v = 0; v < 3; ++v) tri.v[v] = make_vec3(q[3 * v], q[3 * v + 1], q[3 * v + 2]);
-    const ClipResult<T> r = polyhedron_triangle(*a, tri, *ws);
+    return tri;
+  }
+
+  // candidates that survive the reject wait in ws->cand for finish()
+  POLYDEM_FN void operator()(int t)
+  {
+    const Triangle<T> tri = triangle(t);
+    if (separated(tri)) return;
+    if (ws->ncand < WALL_MAX_CAND) ws->cand[ws->ncand++] = t;
+    else clip_add(tri);
+  }
+
+  // Group the candidates by plane. If the coplanar triangles of a group
+  // cover the projection of the particle's part behind that plane, their
+  // prisms partition that part (polydem_clip.h), and one clip against a
+  // large triangle of the plane gives the same V, S, M (to round-off) at
+  // the cost of one volume instead of one per triangle. Else (mesh border,
+  // holes, overlaps, curved meshes) each triangle is clipped on its own.
+  POLYDEM_FN void finish()
+  {
+    const T L = posed_radius(*a);
+    for (int c = 0; c < ws->ncand; ++c) ws->cflag[c] = 0;
+    for (int c = 0; c < ws->ncand; ++c) {
+      if (ws->cflag[c]) continue;
+      const Triangle<T> tc = triangle(ws->cand[c]);
+      Vec3<T> n = cross(tc.v[1] - tc.v[0], tc.v[2] - tc.v[0]);
+      n = (T(1) / norm(n)) * n;
+      const T d = dot(n, tc.v[0]);
+      int ng = 0;    // members flagged 2
+      for (int k = c; k < ws->ncand; ++k) {
+        if (ws->cflag[k]) continue;
+        const Triangle<T> tk = k == c ? tc : triangle(ws->cand[k]);
+        Vec3<T> nk = cross(tk.v[1] - tk.v[0], tk.v[2] - tk.v[0]);
+        nk = (T(1) / norm(nk)) * nk;
+        const T tol = T(1e-12);
+        if (fabs(nk.x - n.x) <= tol && fabs(nk.y - n.y) <= tol && fabs(nk.z - n.z) <= tol &&
+            fabs(dot(nk, tk.v[0]) - d) <= tol * L) {
+          ws->cflag[k] = 2;
+          ng++;
+        }
+      }
+      Triangle<T> big;
+      if (ng > 1 && covered(tc.v[0], n, big)) {
+        clip_add(big);
+        for (int k = c; k < ws->ncand; ++k)
+          if (ws->cflag[k] == 2) ws->cflag[k] = 1;
+      } else {
+        for (int k = c; k < ws->ncand; ++k)
+          if (ws->cflag[k] == 2) {
+            ws->cflag[k] = 1;
+            clip_add(triangle(ws->cand[k]));
+          }
+      }
+    }
+  }
+
+  // Is the projection of the part behind the plane (o, n) covered by the
+  // group's triangles (cflag 2)? If so, big is a triangle of the plane
+  // (counter-clockwise about n) containing it.
+  POLYDEM_FN bool covered(const Vec3<T> &o, const Vec3<T> &n, Triangle<T> &big)
+  {
+    const ShapeView<T> &sv = *a->view;
+    Vec3<T> e1 = fabs(n.x) < T(0.9) ? cross(n, make_vec3(T(1), T(0), T(0)))
+                                    : cross(n, make_vec3(T(0), T(1), T(0)));
+    e1 = (T(1) / norm(e1)) * e1;
+    const Vec3<T> e2 = cross(n, e1);
+    // points: vertices behind the plane and edge crossings, in (e1, e2)
+    int m = 0;
+    for (int i = 0; i < sv.nverts; ++i) {
+      ws->dist[i] = dot(n, wall_vert(i) - o);
+      if (ws->dist[i] < T(0)) {
+        ws->hu[m] = dot(wall_vert(i) - o, e1);
+        ws->hv[m++] = dot(wall_vert(i) - o, e2);
+      }
+    }
+    for (int k = 0; k < sv.nedges; ++k) {
+      const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+      const T di = ws->dist[i], dj = ws->dist[j];
+      if ((di < T(0)) == (dj < T(0))) continue;
+      const Vec3<T> vi = wall_vert(i);
+      const Vec3<T> p = vi + (di / (di - dj)) * (wall_vert(j) - vi) - o;
+      ws->hu[m] = dot(p, e1);
+      ws->hv[m++] = dot(p, e2);
+    }
+    if (m < 3) return false;
+    // convex hull (monotone chain) into pu/pv, counter-clockwise
+    for (int i = 1; i < m; ++i) {    // insertion sort by (u, v)
+      const T u = ws->hu[i], v = ws->hv[i];
+      int j = i - 1;
+      while (j >= 0 && (ws->hu[j] > u || (ws->hu[j] == u && ws->hv[j] > v))) {
+        ws->hu[j + 1] = ws->hu[j];
+        ws->hv[j + 1] = ws->hv[j];
+        --j;
+      }
+      ws->hu[j + 1] = u;
+      ws->hv[j + 1] = v;
+    }
+    int h = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      const int start = h;
+      for (int ii = 0; ii < m; ++ii) {
+        const int i = pass == 0 ? ii : m - 1 - ii;
+        while (h >= start + 2 &&
+               (ws->pu[h - 1] - ws->pu[h - 2]) * (ws->hv[i] - ws->pv[h - 2]) -
+                       (ws->pv[h - 1] - ws->pv[h - 2]) * (ws->hu[i] - ws->pu[h - 2]) <= T(0))
+          --h;
+        ws->pu[h] = ws->hu[i];
+        ws->pv[h++] = ws->hv[i];
+      }
+      --h;    // last point is the first of the other chain
+    }
+    if (h < 3) return false;
+    T area = T(0), cu = T(0), cv = T(0), rad = T(0);
+    for (int i = 0; i < h; ++i) {
+      const int j = (i + 1) % h;
+      area += T(0.5) * (ws->pu[i] * ws->pv[j] - ws->pu[j] * ws->pv[i]);
+      cu += ws->pu[i] / T(h);
+      cv += ws->pv[i] / T(h);
+    }
+    if (!(area > T(0))) return false;
+    // area of the hull inside each triangle of the group
+    T cov = T(0);
+    for (int c = 0; c < ws->ncand; ++c) {
+      if (ws->cflag[c] != 2) continue;
+      const Triangle<T> t = triangle(ws->cand[c]);
+      T tu[3], tv[3];
+      for (int k = 0; k < 3; ++k) {
+        tu[k] = dot(t.v[k] - o, e1);
+        tv[k] = dot(t.v[k] - o, e2);
+      }
+      int q = h;
+      T *iu = ws->pu, *iv = ws->pv, *ou = ws->qu, *ov = ws->qv;
+      for (int k = 0; k < h; ++k) {
+        ws->qu[k] = ws->pu[k];    // keep the hull: clip a copy
+        ws->qv[k] = ws->pv[k];
+      }
+      iu = ws->qu;
+      iv = ws->qv;
+      ou = ws->hu;
+      ov = ws->hv;
+      for (int e = 0; e < 3 && q > 0; ++e) {
+        q = clip_detail::sh_pass(iu, iv, q, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], ou, ov);
+        T *su = iu, *sv2 = iv;
+        iu = ou;
+        iv = ov;
+        ou = su;
+        ov = sv2;
+      }
+      for (int i = 1; i + 1 < q; ++i)
+        cov += T(0.5) * ((iu[i] - iu[0]) * (iv[i + 1] - iv[0]) - (iv[i] - iv[0]) * (iu[i + 1] - iu[0]));
+    }
+    if (!(fabs(cov - area) <= T(1e-9) * area)) return false;
+    for (int i = 0; i < h; ++i) {
+      const T du = ws->pu[i] - cu, dv = ws->pv[i] - cv;
+      const T r2 = sqrt(du * du + dv * dv);
+      rad = r2 > rad ? r2 : rad;
+    }
+    // equilateral triangle with inradius 2 rad around (cu, cv)
+    const T R = T(4) * rad + posed_radius(*a) * T(1e-3);
+    for (int k = 0; k < 3; ++k) {
+      const T ang = T(1.5707963267948966) + T(2.0943951023931957) * T(k);
+      big.v[k] = o + (cu + R * cos(ang)) * e1 + (cv + R * sin(ang)) * e2;
+    }
+    return true;
+  }
+
+  POLYDEM_FN void clip_add(const Triangle<T> &tri)
+  {
+    const ClipResult<T> r = polyhedron_triangle(*a, tri, ws->clip);
     if (r.status == STATUS_SEPARATED) return;
     if (r.status == STATUS_OVERFLOW) {
       out->noverflow++;
@@ -93,11 +313,8 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         p.nseed = r.normal;
         p.volume = p.area = T(0);
         p.depth = T(0);
-        const ShapeView<T> &sv = *a->view;
-        for (int i = 0; i < sv.nverts; ++i) {
-          const Vec3<T> x = a->x + a->s * matvec(a->R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
-                                                                  sv.verts[3 * i + 2]));
-          const T d = dot(r.normal, tri.v[0] - x);
+        for (int i = 0; i < a->view->nverts; ++i) {
+          const T d = dot(r.normal, tri.v[0] - wall_vert(i));
           p.depth = d > p.depth ? d : p.depth;
         }
         p.S = p.M = p.ac = p.vc = z;
@@ -117,16 +334,30 @@ template <typename T, int MF, int ME> struct WallAccumulate {
 // Patches of posed particle a (mesh frame) against the mesh; r: bounding radius.
 template <typename T, int MF, int ME>
 POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T cosmax,
-                             ClipWorkspace<T, MF, ME> &ws, WallPatches<T> &out)
+                             WallWorkspace<T, MF, ME> &ws, WallPatches<T> &out)
 {
   out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = 0;
+  const ShapeView<T> &sv = *a.view;
+  if (sv.nverts > MAX_TEMPLATE_VERTS) {
+    out.noverflow++;
+    return;
+  }
+  for (int i = 0; i < sv.nverts; ++i) {
+    const Vec3<T> x = a.x + a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
+                                                         sv.verts[3 * i + 2]));
+    ws.verts[3 * i] = x.x;
+    ws.verts[3 * i + 1] = x.y;
+    ws.verts[3 * i + 2] = x.z;
+  }
   WallAccumulate<T, MF, ME> acc;
   acc.a = &a;
   acc.g = &g;
   acc.ws = &ws;
   acc.out = &out;
   acc.cosmax = cosmax;
+  ws.ncand = 0;
   mesh_for_each_near(g, a.x, posed_radius(a), acc);
+  acc.finish();
 }
 
 // Rigid motion of the mesh: p_lab = o + d + Rm (p_mesh - o); wall velocity
@@ -334,7 +565,7 @@ POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab
                                       const ContactParams<T> &p, const WallDamping<T> &damp,
                                       T cosmax, const Vec3<T> &v, const Vec3<T> &w, T *hist,
                                       bool update,
-                                      ClipWorkspace<T, MF, ME> &ws, WallPatches<T> &P)
+                                      WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P)
 {
   Pose<T> pm;
   pm.x = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
