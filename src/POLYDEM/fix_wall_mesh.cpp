@@ -265,7 +265,9 @@ void FixWallMesh::init()
   build_grid();
 }
 
-// bin edge: user value, else the largest particle's bounding diameter
+// bin edge: user value, else max(r_max / 2, twice the mean triangle edge)
+// (r_max: largest bounding radius of the group): a query then scans little
+// beyond the sphere's box, and a bin holds a few triangles
 void FixWallMesh::build_grid()
 {
   double h = binsize;
@@ -274,13 +276,16 @@ void FixWallMesh::build_grid()
     for (int i = 0; i < atom->nlocal; i++)
       if (atom->mask[i] & groupbit) rmax = MAX(rmax, atom->radius[i]);
     MPI_Allreduce(MPI_IN_PLACE, &rmax, 1, MPI_DOUBLE, MPI_MAX, world);
-    h = 2.0 * rmax;
-    if (!(h > 0.0)) {
-      double ext = 0.0;
-      for (size_t k = 3; k < mesh.tri.size(); k++)
-        ext = MAX(ext, fabs(mesh.tri[k] - mesh.tri[k % 3]));
-      h = ext > 0.0 ? ext / 16.0 : 1.0;
-    }
+    double edge = 0.0;
+    const int nt = mesh.ntri();
+    for (int t = 0; t < nt; t++)
+      for (int e = 0; e < 3; e++) {
+        const double *p = &mesh.tri[9 * t + 3 * e], *q = &mesh.tri[9 * t + 3 * ((e + 1) % 3)];
+        edge += sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                     (p[2] - q[2]) * (p[2] - q[2]));
+      }
+    edge /= 3.0 * nt;
+    h = MAX(0.5 * rmax, 2.0 * edge);
   }
   if (!grid.start.empty() && grid.h == h) return;
   grid = polydem::build_mesh_grid(mesh.tri, h);
@@ -298,6 +303,9 @@ polydem::MeshGridView<double> FixWallMesh::grid_view() const
   g.h = grid.h;
   g.start = grid.start.data();
   g.items = grid.items.data();
+  g.plane = grid.plane.data();
+  g.box = grid.box.data();
+  g.tbin = grid.tbin.data();
   return g;
 }
 

@@ -24,7 +24,16 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 namespace {
 
 typedef polydem::WallWorkspace<double> WallWorkspace;
-constexpr int NSUM = 12;    // force (3), torque (3), contacts, triangles, energy, counters (3)
+constexpr int NSUM = 12;
+
+// device copy of a host vector (at least one element)
+template <class V, class S> void upload(V &d, const std::vector<S> &h, const char *name)
+{
+  d = V(std::string(name), std::max<size_t>(1, h.size()));
+  auto m = Kokkos::create_mirror_view(d);
+  for (size_t k = 0; k < h.size(); k++) m(k) = h[k];
+  Kokkos::deep_copy(d, m);
+}    // force (3), torque (3), contacts, triangles, energy, counters (3)
 
 /* ----------------------------------------------------------------------
    one particle per thread: FixWallMesh::compute_forces statement for
@@ -143,20 +152,12 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
   if (!avecKK) error->all(FLERR, "fix wall/mesh/kk requires atom_style polyhedron/kk");
 
   // mesh and grid (rebuilt by FixWallMesh::init only if the bin edge changed)
-  d_tri = Kokkos::View<double *, DeviceType>("wall/mesh/kk:tri", mesh.tri.size());
-  d_start = Kokkos::View<int *, DeviceType>("wall/mesh/kk:start", grid.start.size());
-  d_items = Kokkos::View<int *, DeviceType>("wall/mesh/kk:items", std::max<size_t>(1, grid.items.size()));
-  {
-    auto h_tri = Kokkos::create_mirror_view(d_tri);
-    auto h_start = Kokkos::create_mirror_view(d_start);
-    auto h_items = Kokkos::create_mirror_view(d_items);
-    for (size_t k = 0; k < mesh.tri.size(); k++) h_tri(k) = mesh.tri[k];
-    for (size_t k = 0; k < grid.start.size(); k++) h_start(k) = grid.start[k];
-    for (size_t k = 0; k < grid.items.size(); k++) h_items(k) = grid.items[k];
-    Kokkos::deep_copy(d_tri, h_tri);
-    Kokkos::deep_copy(d_start, h_start);
-    Kokkos::deep_copy(d_items, h_items);
-  }
+  upload(d_tri, mesh.tri, "wall/mesh/kk:tri");
+  upload(d_plane, grid.plane, "wall/mesh/kk:plane");
+  upload(d_box, grid.box, "wall/mesh/kk:box");
+  upload(d_start, grid.start, "wall/mesh/kk:start");
+  upload(d_items, grid.items, "wall/mesh/kk:items");
+  upload(d_tbin, grid.tbin, "wall/mesh/kk:tbin");
 
   // per-type material, as FixWallMesh::params
   const int nt = atom->ntypes;
@@ -275,6 +276,9 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.grid.tri = d_tri.data();
   k.grid.start = d_start.data();
   k.grid.items = d_items.data();
+  k.grid.plane = d_plane.data();
+  k.grid.box = d_box.data();
+  k.grid.tbin = d_tbin.data();
   k.mp = mesh_pose();
   k.cosmax = cosmax;
   k.core = core;

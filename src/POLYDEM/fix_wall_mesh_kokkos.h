@@ -52,8 +52,8 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   tdual_hist k_hist;
 
   // mesh and grid (mesh frame)
-  Kokkos::View<double *, DeviceType> d_tri;
-  Kokkos::View<int *, DeviceType> d_start, d_items;
+  Kokkos::View<double *, DeviceType> d_tri, d_plane, d_box;
+  Kokkos::View<int *, DeviceType> d_start, d_items, d_tbin;
   // shape templates, flat, and one ShapeView each pointing into them
   int shape_version;
   Kokkos::View<double *, DeviceType> d_sverts, d_splanes;

@@ -26,6 +26,9 @@ template <typename T> struct MeshGridView {
   int n[3];             // bins per direction
   const int *start;     // n0 n1 n2 + 1 offsets into items
   const int *items;     // triangle indices
+  const T *plane;       // 4 per triangle: unit normal, offset n . t0
+  const T *box;         // 6 per triangle: min xyz, max xyz
+  const int *tbin;      // 3 per triangle: its first bin (i, j, k)
 };
 
 // bin index of coordinate x along direction d, clamped to [0, n-1]; the
@@ -65,20 +68,11 @@ POLYDEM_FN void mesh_tri_bins(const MeshGridView<T> &g, int t, int *blo, int *bh
 template <typename T>
 POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c, T r)
 {
-  const T *p = g.tri + 9 * t;
-  const Vec3<T> t0 = make_vec3(p[0], p[1], p[2]);
-  const Vec3<T> nr = cross(make_vec3(p[3], p[4], p[5]) - t0, make_vec3(p[6], p[7], p[8]) - t0);
-  const T nn = norm(nr);
-  if (!(nn > T(0))) return false;
-  const T d = dot(nr, c - t0) / nn;
+  const T *pl = g.plane + 4 * t, *b = g.box + 6 * t;
+  const T d = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
   if (!(d < r) || !(d > -r)) return false;
-  for (int k = 0; k < 3; ++k) {
-    const T a = p[k] < p[3 + k] ? (p[k] < p[6 + k] ? p[k] : p[6 + k])
-                                : (p[3 + k] < p[6 + k] ? p[3 + k] : p[6 + k]);
-    const T b = p[k] > p[3 + k] ? (p[k] > p[6 + k] ? p[k] : p[6 + k])
-                                : (p[3 + k] > p[6 + k] ? p[3 + k] : p[6 + k]);
-    if (c[k] + r < a || c[k] - r > b) return false;
-  }
+  for (int k = 0; k < 3; ++k)
+    if (c[k] + r < b[k] || c[k] - r > b[3 + k]) return false;
   return true;
 }
 
@@ -99,8 +93,7 @@ POLYDEM_FN void mesh_for_each_near(const MeshGridView<T> &g, const Vec3<T> &c, T
         const int b = mesh_bin_id<T>(g.n, i, j, k);
         for (int s = g.start[b]; s < g.start[b + 1]; ++s) {
           const int t = g.items[s];
-          int tlo[3], thi[3];
-          mesh_tri_bins(g, t, tlo, thi);
+          const int *tlo = g.tbin + 3 * t;
           // first bin of the intersection of the two bin boxes
           const int fi = tlo[0] > qlo[0] ? tlo[0] : qlo[0];
           const int fj = tlo[1] > qlo[1] ? tlo[1] : qlo[1];

@@ -240,11 +240,33 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
     v.n[d] = g.n[d];
   }
   v.h = g.h;
+  g.plane.resize(4 * (size_t) nt);
+  g.box.resize(6 * (size_t) nt);
+  g.tbin.resize(3 * (size_t) nt);
+  for (int t = 0; t < nt; t++) {
+    const double *p = tri.data() + 9 * (size_t) t;
+    const double e1[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
+    const double e2[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+    double n[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int d = 0; d < 3; d++) n[d] /= l;
+    for (int d = 0; d < 3; d++) g.plane[4 * t + d] = n[d];
+    g.plane[4 * t + 3] = n[0] * p[0] + n[1] * p[1] + n[2] * p[2];
+    for (int d = 0; d < 3; d++) {
+      g.box[6 * t + d] = std::min(p[d], std::min(p[3 + d], p[6 + d]));
+      g.box[6 * t + 3 + d] = std::max(p[d], std::max(p[3 + d], p[6 + d]));
+    }
+  }
+  v.plane = g.plane.data();
+  v.box = g.box.data();
   std::vector<int> count(nbins + 1, 0);
   for (int pass = 0; pass < 2; pass++) {
     for (int t = 0; t < nt; t++) {
       int blo[3], bhi[3];
       mesh_tri_bins(v, t, blo, bhi);
+      if (pass == 0)
+        for (int d = 0; d < 3; d++) g.tbin[3 * t + d] = blo[d];
       for (int k = blo[2]; k <= bhi[2]; k++)
         for (int j = blo[1]; j <= bhi[1]; j++)
           for (int i = blo[0]; i <= bhi[0]; i++) {

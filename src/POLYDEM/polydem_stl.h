@@ -51,6 +51,9 @@ struct MeshGrid {
   int n[3] = {1, 1, 1};
   std::vector<int> start;    // nbins + 1
   std::vector<int> items;    // triangle indices
+  std::vector<double> plane; // 4 per triangle: unit normal, offset
+  std::vector<double> box;   // 6 per triangle: bounding box
+  std::vector<int> tbin;     // 3 per triangle: first bin
 };
 
 // h: requested bin edge; enlarged so that there are at most max_bins bins.

@@ -60,7 +60,9 @@ template <typename T, int MF = MAX_TEMPLATE_FACES, int ME = 3 * MAX_TEMPLATE_VER
 struct WallWorkspace {
   ClipWorkspace<T, MF, ME> clip;
   T verts[3 * MAX_TEMPLATE_VERTS];
-  T dist[MAX_TEMPLATE_VERTS];    // scaled signed distances to the current plane
+  T dist[MAX_TEMPLATE_VERTS];    // signed distances to the current plane
+  T pc[4], pbox[6];              // that plane, the box of the part behind it
+  int pvalid, pany;              // cache valid; some vertex behind the plane
   // candidates of one particle, and the coplanar-group coverage test
   static constexpr int MAXH = 4 * MAX_TEMPLATE_VERTS + 8;
   int cand[WALL_MAX_CAND];
@@ -78,17 +80,51 @@ template <typename T, int MF, int ME> struct WallAccumulate {
 
   // Exact cheap reject. The part of the particle behind the triangle's plane
   // is the convex hull of the vertices behind it and of the edges' crossing
-  // points; separated if it is empty or lies outside one side of the prism.
-  POLYDEM_FN bool separated(const Triangle<T> &tri) const
+  // points; separated if it is empty, if the bounding box of its projection
+  // on the plane misses the triangle's, or if it lies outside one side of the
+  // prism. Distances and box are kept for the next triangle of the plane.
+  POLYDEM_FN bool separated(int t, const Triangle<T> &tri) const
   {
     const ShapeView<T> &sv = *a->view;
-    const Vec3<T> nr = cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
-    bool any = false;
-    for (int i = 0; i < sv.nverts; ++i) {
-      ws->dist[i] = dot(nr, wall_vert(i) - tri.v[0]);
-      any = any || ws->dist[i] < T(0);
+    const T *pl = g->plane + 4 * t;
+    if (!(ws->pvalid && pl[0] == ws->pc[0] && pl[1] == ws->pc[1] && pl[2] == ws->pc[2] &&
+          pl[3] == ws->pc[3])) {
+      for (int k = 0; k < 4; ++k) ws->pc[k] = pl[k];
+      ws->pvalid = 1;
+      ws->pany = 0;
+      for (int k = 0; k < 3; ++k) {
+        ws->pbox[k] = T(1e300);
+        ws->pbox[3 + k] = T(-1e300);
+      }
+      for (int i = 0; i < sv.nverts; ++i) {
+        const Vec3<T> v = wall_vert(i);
+        ws->dist[i] = pl[0] * v.x + pl[1] * v.y + pl[2] * v.z - pl[3];
+        if (ws->dist[i] < T(0)) {
+          ws->pany = 1;
+          grow_box(v - ws->dist[i] * make_vec3(pl[0], pl[1], pl[2]));    // onto the plane
+        }
+      }
+      for (int k = 0; k < sv.nedges && ws->pany; ++k) {
+        const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+        const T di = ws->dist[i], dj = ws->dist[j];
+        if ((di < T(0)) == (dj < T(0))) continue;
+        const Vec3<T> vi = wall_vert(i);
+        grow_box(vi + (di / (di - dj)) * (wall_vert(j) - vi));
+      }
+      // the triangle's prism meets the behind part only where the triangle
+      // meets its projection: compare boxes in the plane, with a margin for
+      // round-off across the plane [length]
+      const T margin = T(1e-9) * posed_radius(*a);
+      for (int k = 0; k < 3; ++k) {
+        ws->pbox[k] -= margin;
+        ws->pbox[3 + k] += margin;
+      }
     }
-    if (!any) return true;
+    if (!ws->pany) return true;
+    const T *b = g->box + 6 * t;
+    for (int k = 0; k < 3; ++k)
+      if (b[3 + k] < ws->pbox[k] || b[k] > ws->pbox[3 + k]) return true;
+    const Vec3<T> nr = make_vec3(pl[0], pl[1], pl[2]);
     for (int e = 0; e < 3; ++e) {
       const Vec3<T> o = tri.v[e], side = cross(tri.v[(e + 1) % 3] - o, nr);    // outward
       bool out = true;
@@ -105,6 +141,14 @@ template <typename T, int MF, int ME> struct WallAccumulate {
       if (out) return true;
     }
     return false;
+  }
+
+  POLYDEM_FN void grow_box(const Vec3<T> &p) const
+  {
+    for (int k = 0; k < 3; ++k) {
+      ws->pbox[k] = p[k] < ws->pbox[k] ? p[k] : ws->pbox[k];
+      ws->pbox[3 + k] = p[k] > ws->pbox[3 + k] ? p[k] : ws->pbox[3 + k];
+    }
   }
 
   POLYDEM_FN Vec3<T> wall_vert(int i) const
@@ -124,7 +168,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
   POLYDEM_FN void operator()(int t)
   {
     const Triangle<T> tri = triangle(t);
-    if (separated(tri)) return;
+    if (separated(t, tri)) return;
     if (ws->ncand < WALL_MAX_CAND) ws->cand[ws->ncand++] = t;
     else clip_add(tri);
   }
@@ -184,6 +228,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     e1 = (T(1) / norm(e1)) * e1;
     const Vec3<T> e2 = cross(n, e1);
     // points: vertices behind the plane and edge crossings, in (e1, e2)
+    ws->pvalid = 0;    // dist[] is reused below
     int m = 0;
     for (int i = 0; i < sv.nverts; ++i) {
       ws->dist[i] = dot(n, wall_vert(i) - o);
@@ -356,6 +401,7 @@ POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T
   acc.out = &out;
   acc.cosmax = cosmax;
   ws.ncand = 0;
+  ws.pvalid = 0;
   mesh_for_each_near(g, a.x, posed_radius(a), acc);
   acc.finish();
 }
