@@ -1,0 +1,525 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - fix wall/mesh
+------------------------------------------------------------------------- */
+
+#include "fix_wall_mesh.h"
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "update.h"
+
+#include "polydem_contact_model.h"
+#include "polydem_shape_template.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using MathConst::MY_PI;
+
+static constexpr int NH = polydem::WALL_HIST_SIZE;
+
+/* ----------------------------------------------------------------------
+   fix ID group wall/mesh file.stl keyword value ...
+------------------------------------------------------------------------- */
+
+FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), binsize(0.0), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0), wall_mu(-1.0),
+    core(1.0e-4), patch_angle(20.0), movestyle(MOVE_NONE), omega(0.0), elapsed(0.0),
+    hist(nullptr), reduced(0), avec(nullptr)
+{
+  if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
+  file = arg[3];
+  for (int k = 0; k < 3; k++) vel[k] = origin[k] = axis[k] = 0.0;
+
+  scalar_flag = 1;
+  extscalar = 1;
+  vector_flag = 1;
+  size_vector = NVEC;
+  extvector = 1;
+  global_freq = 1;
+  energy_global_flag = 1;
+  restart_global = 1;
+  restart_peratom = 1;
+  create_attribute = 1;
+  time_integrate = 0;
+
+  double rot_angle = 0.0, rot_axis[3] = {0.0, 0.0, 1.0};
+  auto need = [&](int iarg, int n, const char *what) {
+    if (iarg + n >= narg)
+      error->all(FLERR, "fix wall/mesh: keyword '{}' needs {} value(s): {}", arg[iarg], n, what);
+  };
+  auto num = [&](int k) { return utils::numeric(FLERR, arg[k], false, lmp); };
+  polydem::StlTransform xf;
+  int iarg = 4;
+  while (iarg < narg) {
+    const std::string kw = arg[iarg];
+    if (kw == "scale") {
+      need(iarg, 1, "s");
+      xf.scale = num(iarg + 1);
+      if (!(xf.scale > 0.0) || !std::isfinite(xf.scale))
+        error->all(FLERR, "fix wall/mesh: scale must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "offset") {
+      need(iarg, 3, "dx dy dz");
+      for (int k = 0; k < 3; k++) xf.offset[k] = num(iarg + 1 + k);
+      iarg += 4;
+    } else if (kw == "rotate") {
+      need(iarg, 4, "angle(degrees) ax ay az");
+      rot_angle = num(iarg + 1);
+      for (int k = 0; k < 3; k++) rot_axis[k] = num(iarg + 2 + k);
+      iarg += 5;
+    } else if (kw == "flip") {
+      need(iarg, 1, "yes or no");
+      const std::string yn = arg[iarg + 1];
+      if (yn != "yes" && yn != "no")
+        error->all(FLERR, "fix wall/mesh: flip expects yes or no, got '{}'", yn);
+      xf.flip = yn == "yes";
+      iarg += 2;
+    } else if (kw == "youngs") {
+      need(iarg, 1, "E");
+      wall_E = num(iarg + 1);
+      if (!(wall_E > 0.0) || !std::isfinite(wall_E))
+        error->all(FLERR, "fix wall/mesh: youngs must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "poisson") {
+      need(iarg, 1, "nu");
+      wall_nu = num(iarg + 1);
+      if (!(wall_nu > -1.0 && wall_nu < 0.5))
+        error->all(FLERR, "fix wall/mesh: poisson must be in (-1, 0.5), got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "restitution") {
+      need(iarg, 1, "e");
+      wall_e = num(iarg + 1);
+      if (!(wall_e > 0.0 && wall_e <= 1.0))
+        error->all(FLERR, "fix wall/mesh: restitution must be in (0, 1], got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "friction") {
+      need(iarg, 1, "mu");
+      wall_mu = num(iarg + 1);
+      if (!(wall_mu >= 0.0) || !std::isfinite(wall_mu))
+        error->all(FLERR, "fix wall/mesh: friction must be >= 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "core") {
+      need(iarg, 1, "fraction");
+      core = num(iarg + 1);
+      if (!(core >= 0.0 && core < 1.0))
+        error->all(FLERR, "fix wall/mesh: core must be in [0, 1), got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "patch/angle") {
+      need(iarg, 1, "degrees");
+      patch_angle = num(iarg + 1);
+      if (!(patch_angle >= 0.0 && patch_angle < 90.0))
+        error->all(FLERR, "fix wall/mesh: patch/angle must be in [0, 90), got '{}'",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "bin") {
+      need(iarg, 1, "edge length");
+      binsize = num(iarg + 1);
+      if (!(binsize > 0.0) || !std::isfinite(binsize))
+        error->all(FLERR, "fix wall/mesh: bin must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "move") {
+      need(iarg, 1, "none, translate or rotate");
+      const std::string m = arg[iarg + 1];
+      if (m == "none") {
+        movestyle = MOVE_NONE;
+        iarg += 2;
+      } else if (m == "translate") {
+        need(iarg + 1, 3, "vx vy vz");
+        movestyle = MOVE_TRANSLATE;
+        for (int k = 0; k < 3; k++) vel[k] = num(iarg + 2 + k);
+        iarg += 5;
+      } else if (m == "rotate") {
+        need(iarg + 1, 8, "ox oy oz ax ay az omega|rpm value");
+        movestyle = MOVE_ROTATE;
+        for (int k = 0; k < 3; k++) origin[k] = num(iarg + 2 + k);
+        for (int k = 0; k < 3; k++) axis[k] = num(iarg + 5 + k);
+        const std::string u = arg[iarg + 8];
+        const double val = num(iarg + 9);
+        if (u == "omega") omega = val;
+        else if (u == "rpm") omega = val * 2.0 * MY_PI / 60.0;
+        else
+          error->all(FLERR, "fix wall/mesh: move rotate expects 'omega' or 'rpm', got '{}'", u);
+        const double l = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+        if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: move rotate axis must be non-zero");
+        for (int k = 0; k < 3; k++) axis[k] /= l;
+        iarg += 10;
+      } else
+        error->all(FLERR, "fix wall/mesh: unknown move style '{}' (none, translate, rotate)", m);
+    } else
+      error->all(FLERR, "fix wall/mesh: unknown keyword '{}'", kw);
+  }
+
+  // load-time rotation (Rodrigues), applied after the scale
+  {
+    const double l = sqrt(rot_axis[0] * rot_axis[0] + rot_axis[1] * rot_axis[1] +
+                          rot_axis[2] * rot_axis[2]);
+    if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: rotate axis must be non-zero");
+    const double c = cos(rot_angle * MY_PI / 180.0), s = sin(rot_angle * MY_PI / 180.0);
+    const double u[3] = {rot_axis[0] / l, rot_axis[1] / l, rot_axis[2] / l};
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) xf.R[i][j] = (i == j ? c : 0.0) + (1.0 - c) * u[i] * u[j];
+    xf.R[0][1] -= s * u[2];
+    xf.R[0][2] += s * u[1];
+    xf.R[1][0] += s * u[2];
+    xf.R[1][2] -= s * u[0];
+    xf.R[2][0] -= s * u[1];
+    xf.R[2][1] += s * u[0];
+  }
+  cosmax = cos(patch_angle * MY_PI / 180.0);
+
+  // every rank reads the file (meshes are replicated); rank 0 reports
+  int ok = 1;
+  std::string why;
+  try {
+    mesh = polydem::read_stl(file, xf);
+  } catch (polydem::StlError &e) {
+    ok = 0;
+    why = e.what();
+  }
+  int allok;
+  MPI_Allreduce(&ok, &allok, 1, MPI_INT, MPI_MIN, world);
+  if (!allok) {
+    if (!ok) error->one(FLERR, "fix wall/mesh: {}", why);
+    error->all(FLERR, "fix wall/mesh: cannot read {}", file);
+  }
+  if (comm->me == 0) {
+    utils::logmesg(lmp, "fix wall/mesh {}: {} {} STL, {} triangles read, {} kept\n", id, file,
+                   mesh.binary ? "binary" : "ASCII", mesh.nread, mesh.ntri());
+    if (mesh.ndegenerate > 0)
+      error->warning(FLERR, "fix wall/mesh: {}: {} zero-area triangles dropped", file,
+                     mesh.ndegenerate);
+    if (mesh.nduplicate > 0)
+      error->warning(FLERR, "fix wall/mesh: {}: {} duplicate triangles dropped", file,
+                     mesh.nduplicate);
+  }
+
+  for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
+  for (int k = 0; k < 3; k++) counts_local[k] = counts_reported[k] = 0.0;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixWallMesh::~FixWallMesh()
+{
+  if (copymode) return;
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(hist);
+}
+
+int FixWallMesh::setmask()
+{
+  return INITIAL_INTEGRATE | POST_FORCE;
+}
+
+/* ----------------------------------------------------------------------
+   material per particle type: E, nu from the pair style (pair_coeff), wall
+   E, nu default to the particle's; e, mu default to the type's like pair
+------------------------------------------------------------------------- */
+
+void FixWallMesh::init()
+{
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
+  if (!avec) error->all(FLERR, "fix wall/mesh requires atom_style polyhedron");
+  int dim = 0;
+  double *E = nullptr, *nu = nullptr, **e = nullptr, **mu = nullptr;
+  if (force->pair) {
+    E = (double *) force->pair->extract("youngs", dim);
+    nu = (double *) force->pair->extract("poisson", dim);
+    e = (double **) force->pair->extract("restitution", dim);
+    mu = (double **) force->pair->extract("friction", dim);
+  }
+  if (!E || !nu || !e || !mu)
+    error->all(FLERR, "fix wall/mesh: requires pair_style polyhedron (the particles' E and nu "
+               "come from its pair_coeff)");
+  const int nt = atom->ntypes;
+  tE.assign(nt + 1, 0.0);
+  tnu = wE = wnu = tdamp = tmu = tE;
+  tdtab.assign(nt + 1, polydem::WallDamping<double>());
+  for (int t = 1; t <= nt; t++) {
+    tE[t] = E[t];
+    tnu[t] = nu[t];
+    wE[t] = wall_E > 0.0 ? wall_E : E[t];
+    wnu[t] = wall_nu > -1.0 ? wall_nu : nu[t];
+    const double et = wall_e > 0.0 ? wall_e : e[t][t];
+    tmu[t] = wall_mu >= 0.0 ? wall_mu : mu[t][t];
+    if (!(tE[t] > 0.0) || !(et > 0.0))
+      error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} E nu "
+                 "e mu)", t, t, t);
+    tdamp[t] = polydem::damping_factor(et);
+    tdtab[t] = polydem::wall_damping_table(et);
+  }
+  build_grid();
+}
+
+// bin edge: user value, else max(r_max / 2, twice the mean triangle edge)
+// (r_max: largest bounding radius of the group): a query then scans little
+// beyond the sphere's box, and a bin holds a few triangles
+void FixWallMesh::build_grid()
+{
+  double h = binsize;
+  if (!(h > 0.0)) {
+    double rmax = 0.0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (atom->mask[i] & groupbit) rmax = MAX(rmax, atom->radius[i]);
+    MPI_Allreduce(MPI_IN_PLACE, &rmax, 1, MPI_DOUBLE, MPI_MAX, world);
+    double edge = 0.0;
+    const int nt = mesh.ntri();
+    for (int t = 0; t < nt; t++)
+      for (int e = 0; e < 3; e++) {
+        const double *p = &mesh.tri[9 * t + 3 * e], *q = &mesh.tri[9 * t + 3 * ((e + 1) % 3)];
+        edge += sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                     (p[2] - q[2]) * (p[2] - q[2]));
+      }
+    edge /= 3.0 * nt;
+    h = MAX(0.5 * rmax, 2.0 * edge);
+  }
+  if (!grid.start.empty() && grid.h == h) return;
+  grid = polydem::build_mesh_grid(mesh.tri, h);
+}
+
+polydem::MeshGridView<double> FixWallMesh::grid_view() const
+{
+  polydem::MeshGridView<double> g;
+  g.tri = mesh.tri.data();
+  g.ntri = mesh.ntri();
+  for (int d = 0; d < 3; d++) {
+    g.lo[d] = grid.lo[d];
+    g.n[d] = grid.n[d];
+  }
+  g.h = grid.h;
+  g.start = grid.start.data();
+  g.items = grid.items.data();
+  g.plane = grid.plane.data();
+  g.box = grid.box.data();
+  g.tbin = grid.tbin.data();
+  return g;
+}
+
+polydem::MeshPose<double> FixWallMesh::mesh_pose() const
+{
+  using polydem::make_vec3;
+  polydem::MeshPose<double> mp;
+  mp.o = make_vec3(origin[0], origin[1], origin[2]);
+  mp.d = make_vec3(0.0, 0.0, 0.0);
+  mp.vw = make_vec3(0.0, 0.0, 0.0);
+  mp.w = make_vec3(0.0, 0.0, 0.0);
+  mp.q = polydem::make_quat(1.0, 0.0, 0.0, 0.0);
+  if (movestyle == MOVE_TRANSLATE) {
+    mp.vw = make_vec3(vel[0], vel[1], vel[2]);
+    mp.d = elapsed * mp.vw;
+  } else if (movestyle == MOVE_ROTATE) {
+    const double ph = 0.5 * omega * elapsed;
+    mp.q = polydem::make_quat(cos(ph), sin(ph) * axis[0], sin(ph) * axis[1], sin(ph) * axis[2]);
+    mp.w = omega * make_vec3(axis[0], axis[1], axis[2]);
+  }
+  mp.R = polydem::quat_to_mat(mp.q);
+  return mp;
+}
+
+polydem::ContactParams<double> FixWallMesh::params(int i, bool stepping) const
+{
+  const int t = atom->type[i];
+  const double s = atom->pscale[i];
+  const double V = avec->shape(atom->pshape[i]).volume() * s * s * s;
+  const double m = atom->rmass[i];
+  return polydem::wall_params(tE[t], tnu[t], wE[t], wnu[t], V, m, tdamp[t], tmu[t], core,
+                              stepping ? update->dt : 0.0);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixWallMesh::setup(int /*vflag*/)
+{
+  compute_forces(false);
+}
+
+void FixWallMesh::initial_integrate(int /*vflag*/)
+{
+  elapsed += update->dt;
+}
+
+void FixWallMesh::post_force(int /*vflag*/)
+{
+  compute_forces(true);
+}
+
+void FixWallMesh::tally(const double *x, const polydem::WallForce<double> &wf,
+                        const polydem::MeshPose<double> &mp, int ntri)
+{
+  // reaction on the mesh: -f, and the torque balancing the particle's
+  const auto tm = polydem::wall_reaction_torque(polydem::make_vec3(x[0], x[1], x[2]), wf, mp);
+  local[0] -= wf.f.x;
+  local[1] -= wf.f.y;
+  local[2] -= wf.f.z;
+  local[3] += tm.x;
+  local[4] += tm.y;
+  local[5] += tm.z;
+  local[6] += wf.ncontact;
+  local[7] += ntri;
+  local[NVEC] += wf.energy;
+}
+
+void FixWallMesh::compute_forces(bool update)
+{
+  for (int k = 0; k <= NVEC; k++) local[k] = 0.0;
+  reduced = 0;
+  double **x = atom->x, **v = atom->v, **f = atom->f, **omg = atom->omega;
+  double **torque = atom->torque, **quat = atom->quat;
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const auto mp = mesh_pose();
+  const auto g = grid_view();
+  if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
+  polydem::WallPatches<double> P;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const auto sv = avec->shape(atom->pshape[i]).view();
+    polydem::Pose<double> pose;
+    pose.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
+    pose.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
+    pose.s = atom->pscale[i];
+    const auto wf = polydem::wall_particle(
+        sv, pose, mp, g, params(i, update), tdtab[atom->type[i]], cosmax,
+        polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
+        polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]), hist[i], update, *ws, P);
+    counts_local[0] += P.noverflow;
+    counts_local[1] += P.ndegenerate;
+    counts_local[2] += P.nmerged;
+    f[i][0] += wf.f.x;
+    f[i][1] += wf.f.y;
+    f[i][2] += wf.f.z;
+    torque[i][0] += wf.tau.x;
+    torque[i][1] += wf.tau.y;
+    torque[i][2] += wf.tau.z;
+    tally(x[i], wf, mp, P.ntri);
+  }
+  if (update && neighbor->ago == 0) report_counts();
+}
+
+// kernel failures are counted and reported (collectively) as warnings
+void FixWallMesh::report_counts()
+{
+  double all[3];
+  MPI_Allreduce(counts_local, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return;
+  const char *what[3] = {"clip workspace overflows (triangle skipped)",
+                         "degenerate particle-triangle contacts (NaN; triangle skipped)",
+                         "facets joined to the closest of the 4 contact patches"};
+  for (int k = 0; k < 3; k++)
+    if (all[k] > counts_reported[k]) {
+      error->warning(FLERR, "fix wall/mesh {}: {:.0f} {} by step {}", id, all[k], what[k],
+                     update->ntimestep);
+      counts_reported[k] = all[k];
+    }
+}
+
+double FixWallMesh::compute_scalar()
+{
+  if (!reduced) {
+    MPI_Allreduce(local, global, NVEC + 1, MPI_DOUBLE, MPI_SUM, world);
+    reduced = 1;
+  }
+  return global[NVEC];
+}
+
+double FixWallMesh::compute_vector(int n)
+{
+  compute_scalar();
+  return global[n];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixWallMesh::grow_arrays(int nmax)
+{
+  memory->grow(hist, nmax, NH, "wall/mesh:hist");
+}
+
+void FixWallMesh::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int k = 0; k < NH; k++) hist[j][k] = hist[i][k];
+}
+
+void FixWallMesh::set_arrays(int i)
+{
+  for (int k = 0; k < NH; k++) hist[i][k] = 0.0;
+}
+
+int FixWallMesh::pack_exchange(int i, double *buf)
+{
+  for (int k = 0; k < NH; k++) buf[k] = hist[i][k];
+  return NH;
+}
+
+int FixWallMesh::unpack_exchange(int nlocal, double *buf)
+{
+  for (int k = 0; k < NH; k++) hist[nlocal][k] = buf[k];
+  return NH;
+}
+
+int FixWallMesh::pack_restart(int i, double *buf)
+{
+  buf[0] = NH + 1;    // other fixes skip by this count
+  for (int k = 0; k < NH; k++) buf[k + 1] = hist[i][k];
+  return NH + 1;
+}
+
+void FixWallMesh::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < NH; k++) hist[nlocal][k] = extra[nlocal][m++];
+}
+
+int FixWallMesh::size_restart(int /*nlocal*/)
+{
+  return NH + 1;
+}
+
+int FixWallMesh::maxsize_restart()
+{
+  return NH + 1;
+}
+
+// global state: the time the mesh has moved for (its offset or angle)
+void FixWallMesh::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double list[2] = {elapsed, (double) mesh.ntri()};
+  const int size = 2 * sizeof(double);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list, sizeof(double), 2, fp);
+}
+
+void FixWallMesh::restart(char *buf)
+{
+  const auto *list = (const double *) buf;
+  elapsed = list[0];
+  if ((int) list[1] != mesh.ntri())
+    error->all(FLERR, "fix wall/mesh: the restart file's mesh had {} triangles, {} has {}",
+               (int) list[1], file, mesh.ntri());
+}
+
+double FixWallMesh::memory_usage()
+{
+  double bytes = (double) atom->nmax * NH * sizeof(double);
+  bytes += mesh.tri.size() * sizeof(double);
+  bytes += (grid.start.size() + grid.items.size()) * sizeof(int);
+  return bytes;
+}

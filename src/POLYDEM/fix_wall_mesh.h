@@ -1,0 +1,94 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - fix wall/mesh: a triangulated STL wall (static, translating or
+   rotating) in contact with polyhedral particles; patch-summed clipped
+   prism volumes and section areas (seed §2.4), the pair style's material
+   model. Physics in polydem_wall_contact.h.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(wall/mesh,FixWallMesh);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_WALL_MESH_H
+#define LMP_FIX_WALL_MESH_H
+
+#include "fix.h"
+
+#include "polydem_mesh_grid.h"
+#include "polydem_stl.h"
+#include "polydem_wall_contact.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixWallMesh : public Fix {
+ public:
+  FixWallMesh(class LAMMPS *, int, char **);
+  ~FixWallMesh() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void initial_integrate(int) override;
+  void post_force(int) override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  double memory_usage() override;
+
+  enum { MOVE_NONE, MOVE_TRANSLATE, MOVE_ROTATE };
+  // vector: force on the mesh (3), torque on the mesh about its axis point
+  // (3), contacts, triangles touched
+  enum { NVEC = 8 };
+
+ protected:
+  std::string file;
+  polydem::StlMesh mesh;
+  polydem::MeshGrid grid;
+  double binsize;    // user bin edge (0: automatic)
+  double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
+  double core, patch_angle, cosmax;
+  int movestyle;
+  double vel[3], origin[3], axis[3], omega;
+  double elapsed;    // time since the fix was defined (mesh motion)
+
+  double **hist;     // per atom: WALL_HIST_SIZE values
+  // per type (1..ntypes): particle E, nu; wall E, nu; damping ratio; mu
+  std::vector<double> tE, tnu, wE, wnu, tdamp, tmu;
+  std::vector<polydem::WallDamping<double>> tdtab;    // zeta(e, contact shape)
+  double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
+  int reduced;
+  double counts_local[3], counts_reported[3];
+  class AtomVecPolyhedron *avec;
+  std::unique_ptr<polydem::WallWorkspace<double>> ws;
+
+  polydem::MeshPose<double> mesh_pose() const;
+  polydem::MeshGridView<double> grid_view() const;
+  polydem::ContactParams<double> params(int i, bool update) const;
+  void build_grid();
+  void report_counts();
+  virtual void compute_forces(bool update);
+  // reaction of a particle force f, torque tau (about x) on the mesh
+  void tally(const double *x, const polydem::WallForce<double> &wf,
+             const polydem::MeshPose<double> &mp, int ntri);
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,366 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - fix wall/mesh/kk
+------------------------------------------------------------------------- */
+
+#include "fix_wall_mesh_kokkos.h"
+
+#include "atom_kokkos.h"
+#include "atom_masks.h"
+#include "atom_vec_polyhedron.h"
+#include "atom_vec_polyhedron_kokkos.h"
+#include "error.h"
+#include "memory_kokkos.h"
+#include "neighbor.h"
+#include "polydem_kokkos_masks.h"
+#include "polydem_shape_template.h"
+#include "update.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+
+static constexpr int NH = polydem::WALL_HIST_SIZE;
+
+namespace {
+
+typedef polydem::WallWorkspace<double> WallWorkspace;
+constexpr int NSUM = 12;
+
+// device copy of a host vector (at least one element)
+template <class V, class S> void upload(V &d, const std::vector<S> &h, const char *name)
+{
+  d = V(std::string(name), std::max<size_t>(1, h.size()));
+  auto m = Kokkos::create_mirror_view(d);
+  for (size_t k = 0; k < h.size(); k++) m(k) = h[k];
+  Kokkos::deep_copy(d, m);
+}    // force (3), torque (3), contacts, triangles, energy, counters (3)
+
+/* ----------------------------------------------------------------------
+   one particle per thread: FixWallMesh::compute_forces statement for
+   statement (pose, wall_particle, reaction), sums reduced over threads
+------------------------------------------------------------------------- */
+
+template <class DeviceType> struct WallMeshKernel {
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+  typedef double value_type[];
+  const unsigned value_count = NSUM;
+
+  typename AT::t_x_array_randomread x;
+  typename AT::t_v_array_randomread v, omega;
+  typename AT::t_f_array f, torque;
+  typename AT::t_float_1d_randomread rmass, pscale;
+  typename AT::t_int_1d_randomread mask, type, pshape;
+  polydem_view_t<tdual_quat_array, DeviceType> quat;
+  Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> hist;
+  Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
+  Kokkos::View<double *[6], DeviceType> mat;
+  Kokkos::View<polydem::WallDamping<double> *, DeviceType> dtab;
+  Kokkos::View<char *, DeviceType> workspace;
+  polydem::MeshGridView<double> grid;
+  polydem::MeshPose<double> mp;
+  double cosmax, core, dt;
+  int update, groupbit, ibase;
+
+  KOKKOS_INLINE_FUNCTION void init(value_type s) const
+  {
+    for (int k = 0; k < NSUM; k++) s[k] = 0.0;
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile value_type d, const volatile value_type s) const
+  {
+    for (int k = 0; k < NSUM; k++) d[k] += s[k];
+  }
+
+  KOKKOS_INLINE_FUNCTION void operator()(const int slot, value_type sum) const
+  {
+    const int i = ibase + slot;
+    if (!(mask(i) & groupbit)) return;
+    auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
+    const polydem::ShapeView<double> &sv = shapes(pshape(i));
+    const int t = type(i);
+    const double s = pscale(i);
+    const double V = sv.volume * s * s * s;
+    const auto p = polydem::wall_params(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, rmass(i),
+                                        mat(t, 4), mat(t, 5), core, update ? dt : 0.0);
+    polydem::Pose<double> pose;
+    pose.x = polydem::make_vec3(x(i, 0), x(i, 1), x(i, 2));
+    pose.q = polydem::make_quat(quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3));
+    pose.s = s;
+    double h[NH];
+    for (int k = 0; k < NH; k++) h[k] = hist(i, k);
+    polydem::WallPatches<double> P;
+    const auto wf = polydem::wall_particle(
+        sv, pose, mp, grid, p, dtab(t), cosmax, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
+        polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P);
+    for (int k = 0; k < NH; k++) hist(i, k) = h[k];
+    f(i, 0) += wf.f.x;
+    f(i, 1) += wf.f.y;
+    f(i, 2) += wf.f.z;
+    torque(i, 0) += wf.tau.x;
+    torque(i, 1) += wf.tau.y;
+    torque(i, 2) += wf.tau.z;
+    const auto tm = polydem::wall_reaction_torque(pose.x, wf, mp);
+    sum[0] -= wf.f.x;
+    sum[1] -= wf.f.y;
+    sum[2] -= wf.f.z;
+    sum[3] += tm.x;
+    sum[4] += tm.y;
+    sum[5] += tm.z;
+    sum[6] += wf.ncontact;
+    sum[7] += P.ntri;
+    sum[8] += wf.energy;
+    sum[9] += P.noverflow;
+    sum[10] += P.ndegenerate;
+    sum[11] += P.nmerged;
+  }
+};
+
+}    // namespace
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType>
+FixWallMeshKokkos<DeviceType>::FixWallMeshKokkos(LAMMPS *lmp, int narg, char **arg) :
+    FixWallMesh(lmp, narg, arg), avecKK(nullptr), shape_version(-1), nslots(0)
+{
+  kokkosable = 1;
+  atomKK = (AtomKokkos *) atom;
+  execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | MASK_MASK | TYPE_MASK |
+      RMASS_MASK | POLYDEM_ALL_MASK;
+  datamask_modify = F_MASK | TORQUE_MASK;
+  // the base class allocated a plain history array: replace it by the DualView
+  memory->destroy(hist);
+  hist = nullptr;
+  grow_arrays(atom->nmax);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+template <class DeviceType> FixWallMeshKokkos<DeviceType>::~FixWallMeshKokkos()
+{
+  if (copymode) return;
+  memoryKK->destroy_kokkos(k_hist, hist);
+  hist = nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
+{
+  FixWallMesh::init();
+  avecKK = AtomVecPolyhedronKokkos::of(atom);
+  if (!avecKK) error->all(FLERR, "fix wall/mesh/kk requires atom_style polyhedron/kk");
+
+  // mesh and grid (rebuilt by FixWallMesh::init only if the bin edge changed)
+  upload(d_tri, mesh.tri, "wall/mesh/kk:tri");
+  upload(d_plane, grid.plane, "wall/mesh/kk:plane");
+  upload(d_box, grid.box, "wall/mesh/kk:box");
+  upload(d_start, grid.start, "wall/mesh/kk:start");
+  upload(d_items, grid.items, "wall/mesh/kk:items");
+  upload(d_tbin, grid.tbin, "wall/mesh/kk:tbin");
+
+  // per-type material, as FixWallMesh::params
+  const int nt = atom->ntypes;
+  d_mat = Kokkos::View<double *[6], DeviceType>("wall/mesh/kk:mat", nt + 1);
+  d_dtab = Kokkos::View<polydem::WallDamping<double> *, DeviceType>("wall/mesh/kk:dtab", nt + 1);
+  auto h_mat = Kokkos::create_mirror_view(d_mat);
+  auto h_dtab = Kokkos::create_mirror_view(d_dtab);
+  for (int t = 0; t <= nt; t++) {
+    const double m[6] = {tE[t], tnu[t], wE[t], wnu[t], tdamp[t], tmu[t]};
+    for (int k = 0; k < 6; k++) h_mat(t, k) = m[k];
+    h_dtab(t) = tdtab[t];
+  }
+  Kokkos::deep_copy(d_mat, h_mat);
+  Kokkos::deep_copy(d_dtab, h_dtab);
+  shape_version = -1;
+  update_shapes();
+}
+
+/* ----------------------------------------------------------------------
+   all shape templates flat on the device, one ShapeView per template
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
+{
+  if (shape_version == avecKK->shape_version()) return;
+  AtomVecPolyhedron *av = avecKK;
+  const int n = av->ntemplates();
+  if (n == 0) error->all(FLERR, "fix wall/mesh/kk: no shape defined (polyhedron_shape)");
+  int size[5] = {0, 0, 0, 0, 0};    // verts, planes, face_start, face_verts, edges
+  for (int t = 0; t < n; t++) {
+    const auto sv = av->shape(t).view();
+    const int add[5] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
+                        2 * sv.nedges};
+    for (int k = 0; k < 5; k++) size[k] += add[k];
+  }
+  d_sverts = Kokkos::View<double *, DeviceType>("wall/mesh/kk:verts", size[0]);
+  d_splanes = Kokkos::View<double *, DeviceType>("wall/mesh/kk:planes", size[1]);
+  d_sface_start = Kokkos::View<int *, DeviceType>("wall/mesh/kk:face_start", size[2]);
+  d_sface_verts = Kokkos::View<int *, DeviceType>("wall/mesh/kk:face_verts", size[3]);
+  d_sedges = Kokkos::View<int *, DeviceType>("wall/mesh/kk:edges", size[4]);
+  d_shapes = Kokkos::View<polydem::ShapeView<double> *, DeviceType>("wall/mesh/kk:shapes", n);
+  auto h_verts = Kokkos::create_mirror_view(d_sverts);
+  auto h_planes = Kokkos::create_mirror_view(d_splanes);
+  auto h_fs = Kokkos::create_mirror_view(d_sface_start);
+  auto h_fv = Kokkos::create_mirror_view(d_sface_verts);
+  auto h_edges = Kokkos::create_mirror_view(d_sedges);
+  auto h_shapes = Kokkos::create_mirror_view(d_shapes);
+  int off[5] = {0, 0, 0, 0, 0};
+  for (int t = 0; t < n; t++) {
+    const auto sv = av->shape(t).view();
+    const int add[5] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
+                        2 * sv.nedges};
+    for (int k = 0; k < add[0]; k++) h_verts(off[0] + k) = sv.verts[k];
+    for (int k = 0; k < add[1]; k++) h_planes(off[1] + k) = sv.planes[k];
+    for (int k = 0; k < add[2]; k++) h_fs(off[2] + k) = sv.face_start[k];
+    for (int k = 0; k < add[3]; k++) h_fv(off[3] + k) = sv.face_verts[k];
+    for (int k = 0; k < add[4]; k++) h_edges(off[4] + k) = sv.edges[k];
+    polydem::ShapeView<double> dv = sv;    // counts, radius, volume, inertia
+    dv.verts = d_sverts.data() + off[0];
+    dv.planes = d_splanes.data() + off[1];
+    dv.face_start = d_sface_start.data() + off[2];
+    dv.face_verts = d_sface_verts.data() + off[3];
+    dv.edges = d_sedges.data() + off[4];
+    dv.dual = nullptr;    // host memory; the clip kernel does not use the dual seed
+    h_shapes(t) = dv;
+    for (int k = 0; k < 5; k++) off[k] += add[k];
+  }
+  Kokkos::deep_copy(d_sverts, h_verts);
+  Kokkos::deep_copy(d_splanes, h_planes);
+  Kokkos::deep_copy(d_sface_start, h_fs);
+  Kokkos::deep_copy(d_sface_verts, h_fv);
+  Kokkos::deep_copy(d_sedges, h_edges);
+  Kokkos::deep_copy(d_shapes, h_shapes);
+  shape_version = avecKK->shape_version();
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(bool stepping)
+{
+  for (int k = 0; k <= NVEC; k++) local[k] = 0.0;
+  reduced = 0;
+  update_shapes();
+  atomKK->sync(execution_space, datamask_read);
+  k_hist.template sync<DeviceType>();
+
+  const int nlocal = atom->nlocal;
+  const bool device = !std::is_same<DeviceType, LMPHostType>::value ||
+      !std::is_same<LMPDeviceType, LMPHostType>::value;
+  const double budget = device ? WORKSPACE_BUDGET_DEVICE : WORKSPACE_BUDGET_HOST;
+  const int want = std::max(1, std::min(nlocal, (int) (budget / sizeof(WallWorkspace))));
+  if (want > nslots) {
+    nslots = want;
+    d_workspace = Kokkos::View<char *, DeviceType>(
+        Kokkos::view_alloc(Kokkos::WithoutInitializing, "wall/mesh/kk:workspace"),
+        (size_t) nslots * sizeof(WallWorkspace));
+  }
+
+  WallMeshKernel<DeviceType> k;
+  k.x = atomKK->k_x.view<DeviceType>();
+  k.v = atomKK->k_v.view<DeviceType>();
+  k.omega = atomKK->k_omega.view<DeviceType>();
+  k.f = atomKK->k_f.view<DeviceType>();
+  k.torque = atomKK->k_torque.view<DeviceType>();
+  k.rmass = atomKK->k_rmass.view<DeviceType>();
+  k.pscale = avecKK->k_pscale.view<DeviceType>();
+  k.mask = atomKK->k_mask.view<DeviceType>();
+  k.type = atomKK->k_type.view<DeviceType>();
+  k.pshape = avecKK->k_pshape.view<DeviceType>();
+  k.quat = avecKK->k_quat.view<DeviceType>();
+  k.hist = k_hist.template view<DeviceType>();
+  k.shapes = d_shapes;
+  k.mat = d_mat;
+  k.dtab = d_dtab;
+  k.workspace = d_workspace;
+  k.grid = grid_view();
+  k.grid.tri = d_tri.data();
+  k.grid.start = d_start.data();
+  k.grid.items = d_items.data();
+  k.grid.plane = d_plane.data();
+  k.grid.box = d_box.data();
+  k.grid.tbin = d_tbin.data();
+  k.mp = mesh_pose();
+  k.cosmax = cosmax;
+  k.core = core;
+  k.dt = update->dt;
+  k.update = stepping ? 1 : 0;
+  k.groupbit = groupbit;
+
+  double total[NSUM];
+  for (int m = 0; m < NSUM; m++) total[m] = 0.0;
+  for (int i0 = 0; i0 < nlocal; i0 += nslots) {
+    k.ibase = i0;
+    double sum[NSUM];
+    Kokkos::parallel_reduce(std::min(nslots, nlocal - i0), k, sum);
+    for (int m = 0; m < NSUM; m++) total[m] += sum[m];
+  }
+  atomKK->modified(execution_space, datamask_modify);
+  k_hist.template modify<DeviceType>();
+
+  for (int m = 0; m < NVEC; m++) local[m] = total[m];
+  local[NVEC] = total[8];
+  for (int m = 0; m < 3; m++) counts_local[m] += total[9 + m];
+  if (stepping && neighbor->ago == 0) report_counts();
+}
+
+/* ----------------------------------------------------------------------
+   per-atom history: host rows alias the DualView's host view; host
+   access (exchange, sort, restart) syncs first and marks the host modified
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::host_rows_current()
+{
+  k_hist.sync_host();
+  k_hist.modify_host();
+}
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::grow_arrays(int nmax)
+{
+  if (hist) k_hist.sync_host();
+  memoryKK->grow_kokkos(k_hist, hist, nmax, NH, "wall/mesh/kk:hist");
+  k_hist.modify_host();
+}
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::copy_arrays(int i, int j, int d)
+{
+  host_rows_current();
+  FixWallMesh::copy_arrays(i, j, d);
+}
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::set_arrays(int i)
+{
+  host_rows_current();
+  FixWallMesh::set_arrays(i);
+}
+
+template <class DeviceType> int FixWallMeshKokkos<DeviceType>::pack_exchange(int i, double *buf)
+{
+  k_hist.sync_host();
+  return FixWallMesh::pack_exchange(i, buf);
+}
+
+template <class DeviceType> int FixWallMeshKokkos<DeviceType>::unpack_exchange(int n, double *buf)
+{
+  host_rows_current();
+  return FixWallMesh::unpack_exchange(n, buf);
+}
+
+template <class DeviceType> int FixWallMeshKokkos<DeviceType>::pack_restart(int i, double *buf)
+{
+  k_hist.sync_host();
+  return FixWallMesh::pack_restart(i, buf);
+}
+
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::unpack_restart(int n, int nth)
+{
+  host_rows_current();
+  FixWallMesh::unpack_restart(n, nth);
+}
+
+namespace LAMMPS_NS {
+template class FixWallMeshKokkos<LMPDeviceType>;
+#ifdef LMP_KOKKOS_GPU
+template class FixWallMeshKokkos<LMPHostType>;
+#endif
+}    // namespace LAMMPS_NS

@@ -1,0 +1,76 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - fix wall/mesh/kk: fix wall/mesh with one Kokkos thread per
+   particle. Mesh, bin grid, shape templates and per-type material live on
+   the device; the per-atom wall history is a DualView (host rows alias it
+   for exchange and restart). Calls the same kernels (polydem_wall_contact.h)
+   with the same arithmetic as the plain fix.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(wall/mesh/kk,FixWallMeshKokkos<LMPDeviceType>);
+FixStyle(wall/mesh/kk/device,FixWallMeshKokkos<LMPDeviceType>);
+FixStyle(wall/mesh/kk/host,FixWallMeshKokkos<LMPHostType>);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_WALL_MESH_KOKKOS_H
+#define LMP_FIX_WALL_MESH_KOKKOS_H
+
+// Kokkos first: fix_wall_mesh.h includes the kernel headers, whose
+// POLYDEM_FN must see KOKKOS_VERSION to become KOKKOS_INLINE_FUNCTION
+#include "kokkos_type.h"
+// clang-format off
+#include "fix_wall_mesh.h"
+// clang-format on
+
+namespace LAMMPS_NS {
+
+template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
+ public:
+  typedef DeviceType device_type;
+  typedef Kokkos::DualView<double **, Kokkos::LayoutRight, LMPDeviceType> tdual_hist;
+
+  FixWallMeshKokkos(class LAMMPS *, int, char **);
+  ~FixWallMeshKokkos() override;
+  void init() override;
+
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+
+  // memory for the clipping workspaces of one batch of particles [bytes]
+  static constexpr double WORKSPACE_BUDGET_DEVICE = 256.0 * 1024 * 1024;
+  static constexpr double WORKSPACE_BUDGET_HOST = 32.0 * 1024 * 1024;
+
+ protected:
+  class AtomVecPolyhedronKokkos *avecKK;
+  tdual_hist k_hist;
+
+  // mesh and grid (mesh frame)
+  Kokkos::View<double *, DeviceType> d_tri, d_plane, d_box;
+  Kokkos::View<int *, DeviceType> d_start, d_items, d_tbin;
+  // shape templates, flat, and one ShapeView each pointing into them
+  int shape_version;
+  Kokkos::View<double *, DeviceType> d_sverts, d_splanes;
+  Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges;
+  Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
+  // per type: particle E, nu; wall E, nu; damping ratio; friction; zeta table
+  Kokkos::View<double *[6], DeviceType> d_mat;
+  Kokkos::View<polydem::WallDamping<double> *, DeviceType> d_dtab;
+  Kokkos::View<char *, DeviceType> d_workspace;
+  int nslots;
+
+  void compute_forces(bool update) override;
+  void update_shapes();
+  void host_rows_current();    // sync the history to the host before host access
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

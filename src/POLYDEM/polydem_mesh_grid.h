@@ -1,0 +1,110 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - plain-data view of a triangle mesh and its uniform bin grid
+   (built on the host by build_mesh_grid, polydem_stl.h), host and device.
+   The grid lives in the mesh's own frame: a rigidly moving mesh keeps it,
+   and particles are transformed into that frame instead.
+
+   Candidate triangles of a sphere (c, r): the bins overlapping the sphere's
+   box. A triangle listed in several of these bins is visited once, in the
+   first bin of (its bin box) ∩ (the query box), so no visited list is
+   needed. The work per query depends on the triangles near the sphere, not
+   on the mesh size.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_MESH_GRID_H
+#define POLYDEM_MESH_GRID_H
+
+#include "polydem_math.h"
+
+namespace polydem {
+
+template <typename T> struct MeshGridView {
+  const T *tri;         // 9 per triangle, mesh frame
+  int ntri;
+  T lo[3];              // grid origin
+  T h;                  // bin edge [length]
+  int n[3];             // bins per direction
+  const int *start;     // n0 n1 n2 + 1 offsets into items
+  const int *items;     // triangle indices
+  const T *plane;       // 4 per triangle: unit normal, offset n . t0
+  const T *box;         // 6 per triangle: min xyz, max xyz
+  const int *tbin;      // 3 per triangle: its first bin (i, j, k)
+};
+
+// bin index of coordinate x along direction d, clamped to [0, n-1]; the
+// host build and the device query use this same expression
+template <typename T> POLYDEM_FN int mesh_bin(T x, T lo, T h, int n)
+{
+  const T u = (x - lo) / h;
+  if (!(u > T(0))) return 0;    // also NaN
+  if (u >= T(n)) return n - 1;
+  const int b = (int) u;
+  return b < n - 1 ? b : n - 1;
+}
+
+template <typename T> POLYDEM_FN int mesh_bin_id(const int *n, int i, int j, int k)
+{
+  return (k * n[1] + j) * n[0] + i;
+}
+
+// bounding box of triangle t in bins
+template <typename T>
+POLYDEM_FN void mesh_tri_bins(const MeshGridView<T> &g, int t, int *blo, int *bhi)
+{
+  const T *p = g.tri + 9 * t;
+  for (int d = 0; d < 3; ++d) {
+    T a = p[d], b = p[d];
+    for (int v = 1; v < 3; ++v) {
+      a = p[3 * v + d] < a ? p[3 * v + d] : a;
+      b = p[3 * v + d] > b ? p[3 * v + d] : b;
+    }
+    blo[d] = mesh_bin(a, g.lo[d], g.h, g.n[d]);
+    bhi[d] = mesh_bin(b, g.lo[d], g.h, g.n[d]);
+  }
+}
+
+// Does the sphere (c, r) reach triangle t's plane and its bounding box?
+// Conservative cheap reject before the clipping kernel.
+template <typename T>
+POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c, T r)
+{
+  const T *pl = g.plane + 4 * t, *b = g.box + 6 * t;
+  const T d = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
+  if (!(d < r) || !(d > -r)) return false;
+  for (int k = 0; k < 3; ++k)
+    if (c[k] + r < b[k] || c[k] - r > b[3 + k]) return false;
+  return true;
+}
+
+// Calls f(t) once for every triangle t near the sphere (c, r).
+// Loops are bounded by the grid size and the bin lists.
+template <typename T, typename F>
+POLYDEM_FN void mesh_for_each_near(const MeshGridView<T> &g, const Vec3<T> &c, T r, F &f)
+{
+  int qlo[3], qhi[3];
+  for (int d = 0; d < 3; ++d) {
+    if (c[d] + r < g.lo[d] || c[d] - r > g.lo[d] + g.h * T(g.n[d])) return;
+    qlo[d] = mesh_bin(c[d] - r, g.lo[d], g.h, g.n[d]);
+    qhi[d] = mesh_bin(c[d] + r, g.lo[d], g.h, g.n[d]);
+  }
+  for (int k = qlo[2]; k <= qhi[2]; ++k)
+    for (int j = qlo[1]; j <= qhi[1]; ++j)
+      for (int i = qlo[0]; i <= qhi[0]; ++i) {
+        const int b = mesh_bin_id<T>(g.n, i, j, k);
+        for (int s = g.start[b]; s < g.start[b + 1]; ++s) {
+          const int t = g.items[s];
+          const int *tlo = g.tbin + 3 * t;
+          // first bin of the intersection of the two bin boxes
+          const int fi = tlo[0] > qlo[0] ? tlo[0] : qlo[0];
+          const int fj = tlo[1] > qlo[1] ? tlo[1] : qlo[1];
+          const int fk = tlo[2] > qlo[2] ? tlo[2] : qlo[2];
+          if (fi != i || fj != j || fk != k) continue;
+          if (!mesh_tri_near(g, t, c, r)) continue;
+          f(t);
+        }
+      }
+}
+
+}    // namespace polydem
+
+#endif

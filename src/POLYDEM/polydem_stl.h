@@ -1,0 +1,64 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - STL reader (ASCII and binary) and the uniform bin grid of a
+   triangle mesh, host only (fix wall/mesh setup). No LAMMPS includes: errors
+   are thrown as StlError with the file name and, for ASCII, the line number;
+   the LAMMPS style turns them into error->all.
+
+   Vertices are transformed at load: p' = R (scale p) + offset. Orientation:
+   the vertex order (t0, t1, t2), counter-clockwise seen from the front,
+   defines the side particles live on (the stored facet normal is ignored);
+   flip reverses it. Zero-area and duplicate triangles are dropped and
+   counted; NaN/Inf coordinates and an empty mesh are errors.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_STL_H
+#define POLYDEM_STL_H
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polydem {
+
+struct StlError : public std::runtime_error {
+  explicit StlError(const std::string &what) : std::runtime_error(what) {}
+};
+
+struct StlTransform {
+  double scale = 1.0;
+  double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};    // rotation, applied after scale
+  double offset[3] = {0, 0, 0};                           // applied last
+  bool flip = false;                                      // reverse vertex order
+};
+
+struct StlMesh {
+  std::vector<double> tri;    // 9 values per kept triangle (t0, t1, t2)
+  bool binary = false;
+  long nread = 0;          // triangles in the file
+  long ndegenerate = 0;    // dropped: zero area (relative 1e-12 of the longest edge squared)
+  long nduplicate = 0;     // dropped: same three vertices as an earlier triangle
+  int ntri() const { return (int) (tri.size() / 9); }
+};
+
+// Throws StlError naming the file (and line for ASCII).
+StlMesh read_stl(const std::string &path, const StlTransform &xf);
+
+// Uniform grid of cubic bins of edge h over the mesh's bounding box; each
+// triangle is listed in every bin its bounding box overlaps (CSR arrays).
+struct MeshGrid {
+  double lo[3] = {0, 0, 0};
+  double h = 1.0;
+  int n[3] = {1, 1, 1};
+  std::vector<int> start;    // nbins + 1
+  std::vector<int> items;    // triangle indices
+  std::vector<double> plane; // 4 per triangle: unit normal, offset
+  std::vector<double> box;   // 6 per triangle: bounding box
+  std::vector<int> tbin;     // 3 per triangle: first bin
+};
+
+// h: requested bin edge; enlarged so that there are at most max_bins bins.
+MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins = 1L << 22);
+
+}    // namespace polydem
+
+#endif

@@ -1,0 +1,631 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - contact of one convex polyhedron with a triangle mesh (fix
+   wall/mesh and /kk), host and device. No LAMMPS includes.
+
+   Seed §2.4 (Algorithm VII, Eqs. 10-11) weights a facet's force by the
+   clipped section area. Here the facets a particle touches are grouped into
+   patches of near-coplanar normals (|angle| < patch angle to the patch's
+   first facet). Per patch the kernel's per-triangle results are summed:
+     V = sum V_t,  S = sum S_t = -sum n_t A_t,  M = sum M_t
+   (polydem_clip.h: prisms of a flat triangulated wall partition the space
+   behind it, so V, S, M of a flat patch equal those of the infinite plane
+   whatever the triangulation), and the patch is one contact of the pair
+   model (polydem_contact_model.h, Eqs. 12-20):
+     F = -W'(V) S,  tau = -W'(V) M   (+ damping, Cundall-Strack friction),
+   so each patch force is the exact gradient of W(V_patch), with no double
+   counting or spikes at shared edges and vertices. A sharp edge of the
+   mesh (angle > patch angle) gives two contacts, each with its own
+   tangential history.
+
+   Wall material: a half-space of (E_w, nu_w) sized like the particle
+   (R_w = R_p), so K = (E_p + E_w)/R_p, K_t likewise; m_eff = m_p.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_WALL_CONTACT_H
+#define POLYDEM_WALL_CONTACT_H
+
+#include "polydem_clip.h"
+#include "polydem_contact_model.h"
+#include "polydem_mesh_grid.h"
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace polydem {
+
+constexpr int WALL_MAX_PATCH = 4;    // contacts per particle and mesh
+constexpr int WALL_HIST = 6;         // per patch: normal (3), shear (3)
+constexpr int WALL_HIST_SIZE = WALL_MAX_PATCH * WALL_HIST;
+constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle (more: clipped at once)
+
+template <typename T> struct WallPatch {
+  Vec3<T> nseed;    // first facet's normal n_w (mesh frame)
+  T volume, area;
+  Vec3<T> S, M;     // sums (mesh frame)
+  Vec3<T> ac;       // area-weighted sum of section centroids
+  Vec3<T> vc;       // volume-weighted sum of volume centroids
+  T depth;          // deepest particle vertex behind the first facet's plane
+};
+
+template <typename T> struct WallPatches {
+  int n;
+  int noverflow, ndegenerate, nmerged, ntri;    // counts for the host's warnings
+  WallPatch<T> p[WALL_MAX_PATCH];
+};
+
+// Clipping workspace plus the particle's posed vertices (mesh frame), computed
+// once per particle for the exact cheap rejects of wall_patches.
+template <typename T, int MF = MAX_TEMPLATE_FACES, int ME = 3 * MAX_TEMPLATE_VERTS>
+struct WallWorkspace {
+  ClipWorkspace<T, MF, ME> clip;
+  T verts[3 * MAX_TEMPLATE_VERTS];
+  T dist[MAX_TEMPLATE_VERTS];    // signed distances to the current plane
+  T pc[4], pbox[6];              // that plane, the box of the part behind it
+  int pvalid, pany;              // cache valid; some vertex behind the plane
+  // candidates of one particle, and the coplanar-group coverage test
+  static constexpr int MAXH = 4 * MAX_TEMPLATE_VERTS + 8;
+  int cand[WALL_MAX_CAND];
+  unsigned char cflag[WALL_MAX_CAND];
+  int ncand;
+  T hu[MAXH], hv[MAXH], pu[MAXH], pv[MAXH], qu[MAXH], qv[MAXH];
+};
+
+template <typename T, int MF, int ME> struct WallAccumulate {
+  const PosedShape<T> *a;
+  const MeshGridView<T> *g;
+  WallWorkspace<T, MF, ME> *ws;
+  WallPatches<T> *out;
+  T cosmax;    // cos(patch angle)
+
+  // Exact cheap reject. The part of the particle behind the triangle's plane
+  // is the convex hull of the vertices behind it and of the edges' crossing
+  // points; separated if it is empty, if the bounding box of its projection
+  // on the plane misses the triangle's, or if it lies outside one side of the
+  // prism. Distances and box are kept for the next triangle of the plane.
+  POLYDEM_FN bool separated(int t, const Triangle<T> &tri) const
+  {
+    const ShapeView<T> &sv = *a->view;
+    const T *pl = g->plane + 4 * t;
+    if (!(ws->pvalid && pl[0] == ws->pc[0] && pl[1] == ws->pc[1] && pl[2] == ws->pc[2] &&
+          pl[3] == ws->pc[3])) {
+      for (int k = 0; k < 4; ++k) ws->pc[k] = pl[k];
+      ws->pvalid = 1;
+      ws->pany = 0;
+      for (int k = 0; k < 3; ++k) {
+        ws->pbox[k] = T(1e300);
+        ws->pbox[3 + k] = T(-1e300);
+      }
+      for (int i = 0; i < sv.nverts; ++i) {
+        const Vec3<T> v = wall_vert(i);
+        ws->dist[i] = pl[0] * v.x + pl[1] * v.y + pl[2] * v.z - pl[3];
+        if (ws->dist[i] < T(0)) {
+          ws->pany = 1;
+          grow_box(v - ws->dist[i] * make_vec3(pl[0], pl[1], pl[2]));    // onto the plane
+        }
+      }
+      for (int k = 0; k < sv.nedges && ws->pany; ++k) {
+        const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+        const T di = ws->dist[i], dj = ws->dist[j];
+        if ((di < T(0)) == (dj < T(0))) continue;
+        const Vec3<T> vi = wall_vert(i);
+        grow_box(vi + (di / (di - dj)) * (wall_vert(j) - vi));
+      }
+      // the triangle's prism meets the behind part only where the triangle
+      // meets its projection: compare boxes in the plane, with a margin for
+      // round-off across the plane [length]
+      const T margin = T(1e-9) * posed_radius(*a);
+      for (int k = 0; k < 3; ++k) {
+        ws->pbox[k] -= margin;
+        ws->pbox[3 + k] += margin;
+      }
+    }
+    if (!ws->pany) return true;
+    const T *b = g->box + 6 * t;
+    for (int k = 0; k < 3; ++k)
+      if (b[3 + k] < ws->pbox[k] || b[k] > ws->pbox[3 + k]) return true;
+    const Vec3<T> nr = make_vec3(pl[0], pl[1], pl[2]);
+    for (int e = 0; e < 3; ++e) {
+      const Vec3<T> o = tri.v[e], side = cross(tri.v[(e + 1) % 3] - o, nr);    // outward
+      bool out = true;
+      for (int i = 0; i < sv.nverts && out; ++i)
+        if (ws->dist[i] < T(0)) out = dot(side, wall_vert(i) - o) > T(0);
+      for (int k = 0; k < sv.nedges && out; ++k) {
+        const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+        const T di = ws->dist[i], dj = ws->dist[j];
+        if ((di < T(0)) == (dj < T(0))) continue;
+        const Vec3<T> vi = wall_vert(i);
+        const Vec3<T> p = vi + (di / (di - dj)) * (wall_vert(j) - vi);
+        out = dot(side, p - o) > T(0);
+      }
+      if (out) return true;
+    }
+    return false;
+  }
+
+  POLYDEM_FN void grow_box(const Vec3<T> &p) const
+  {
+    for (int k = 0; k < 3; ++k) {
+      ws->pbox[k] = p[k] < ws->pbox[k] ? p[k] : ws->pbox[k];
+      ws->pbox[3 + k] = p[k] > ws->pbox[3 + k] ? p[k] : ws->pbox[3 + k];
+    }
+  }
+
+  POLYDEM_FN Vec3<T> wall_vert(int i) const
+  {
+    return make_vec3(ws->verts[3 * i], ws->verts[3 * i + 1], ws->verts[3 * i + 2]);
+  }
+
+  POLYDEM_FN Triangle<T> triangle(int t) const
+  {
+    Triangle<T> tri;
+    const T *q = g->tri + 9 * t;
+    for (int v = 0; v < 3; ++v) tri.v[v] = make_vec3(q[3 * v], q[3 * v + 1], q[3 * v + 2]);
+    return tri;
+  }
+
+  // candidates that survive the reject wait in ws->cand for finish()
+  POLYDEM_FN void operator()(int t)
+  {
+    const Triangle<T> tri = triangle(t);
+    if (separated(t, tri)) return;
+    if (ws->ncand < WALL_MAX_CAND) ws->cand[ws->ncand++] = t;
+    else clip_add(tri);
+  }
+
+  // Group the candidates by plane. If the coplanar triangles of a group
+  // cover the projection of the particle's part behind that plane, their
+  // prisms partition that part (polydem_clip.h), and one clip against a
+  // large triangle of the plane gives the same V, S, M (to round-off) at
+  // the cost of one volume instead of one per triangle. Else (mesh border,
+  // holes, overlaps, curved meshes) each triangle is clipped on its own.
+  POLYDEM_FN void finish()
+  {
+    const T L = posed_radius(*a);
+    for (int c = 0; c < ws->ncand; ++c) ws->cflag[c] = 0;
+    for (int c = 0; c < ws->ncand; ++c) {
+      if (ws->cflag[c]) continue;
+      const Triangle<T> tc = triangle(ws->cand[c]);
+      Vec3<T> n = cross(tc.v[1] - tc.v[0], tc.v[2] - tc.v[0]);
+      n = (T(1) / norm(n)) * n;
+      const T d = dot(n, tc.v[0]);
+      int ng = 0;    // members flagged 2
+      for (int k = c; k < ws->ncand; ++k) {
+        if (ws->cflag[k]) continue;
+        const Triangle<T> tk = k == c ? tc : triangle(ws->cand[k]);
+        Vec3<T> nk = cross(tk.v[1] - tk.v[0], tk.v[2] - tk.v[0]);
+        nk = (T(1) / norm(nk)) * nk;
+        const T tol = T(1e-12);
+        if (fabs(nk.x - n.x) <= tol && fabs(nk.y - n.y) <= tol && fabs(nk.z - n.z) <= tol &&
+            fabs(dot(nk, tk.v[0]) - d) <= tol * L) {
+          ws->cflag[k] = 2;
+          ng++;
+        }
+      }
+      Triangle<T> big;
+      if (ng > 1 && covered(tc.v[0], n, big)) {
+        clip_add(big);
+        for (int k = c; k < ws->ncand; ++k)
+          if (ws->cflag[k] == 2) ws->cflag[k] = 1;
+      } else {
+        for (int k = c; k < ws->ncand; ++k)
+          if (ws->cflag[k] == 2) {
+            ws->cflag[k] = 1;
+            clip_add(triangle(ws->cand[k]));
+          }
+      }
+    }
+  }
+
+  // Is the projection of the part behind the plane (o, n) covered by the
+  // group's triangles (cflag 2)? If so, big is a triangle of the plane
+  // (counter-clockwise about n) containing it.
+  POLYDEM_FN bool covered(const Vec3<T> &o, const Vec3<T> &n, Triangle<T> &big)
+  {
+    const ShapeView<T> &sv = *a->view;
+    Vec3<T> e1 = fabs(n.x) < T(0.9) ? cross(n, make_vec3(T(1), T(0), T(0)))
+                                    : cross(n, make_vec3(T(0), T(1), T(0)));
+    e1 = (T(1) / norm(e1)) * e1;
+    const Vec3<T> e2 = cross(n, e1);
+    // points: vertices behind the plane and edge crossings, in (e1, e2)
+    ws->pvalid = 0;    // dist[] is reused below
+    int m = 0;
+    for (int i = 0; i < sv.nverts; ++i) {
+      ws->dist[i] = dot(n, wall_vert(i) - o);
+      if (ws->dist[i] < T(0)) {
+        ws->hu[m] = dot(wall_vert(i) - o, e1);
+        ws->hv[m++] = dot(wall_vert(i) - o, e2);
+      }
+    }
+    for (int k = 0; k < sv.nedges; ++k) {
+      const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+      const T di = ws->dist[i], dj = ws->dist[j];
+      if ((di < T(0)) == (dj < T(0))) continue;
+      const Vec3<T> vi = wall_vert(i);
+      const Vec3<T> p = vi + (di / (di - dj)) * (wall_vert(j) - vi) - o;
+      ws->hu[m] = dot(p, e1);
+      ws->hv[m++] = dot(p, e2);
+    }
+    if (m < 3) return false;
+    // convex hull (monotone chain) into pu/pv, counter-clockwise
+    for (int i = 1; i < m; ++i) {    // insertion sort by (u, v)
+      const T u = ws->hu[i], v = ws->hv[i];
+      int j = i - 1;
+      while (j >= 0 && (ws->hu[j] > u || (ws->hu[j] == u && ws->hv[j] > v))) {
+        ws->hu[j + 1] = ws->hu[j];
+        ws->hv[j + 1] = ws->hv[j];
+        --j;
+      }
+      ws->hu[j + 1] = u;
+      ws->hv[j + 1] = v;
+    }
+    int h = 0;
+    for (int pass = 0; pass < 2; ++pass) {
+      const int start = h;
+      for (int ii = 0; ii < m; ++ii) {
+        const int i = pass == 0 ? ii : m - 1 - ii;
+        while (h >= start + 2 &&
+               (ws->pu[h - 1] - ws->pu[h - 2]) * (ws->hv[i] - ws->pv[h - 2]) -
+                       (ws->pv[h - 1] - ws->pv[h - 2]) * (ws->hu[i] - ws->pu[h - 2]) <= T(0))
+          --h;
+        ws->pu[h] = ws->hu[i];
+        ws->pv[h++] = ws->hv[i];
+      }
+      --h;    // last point is the first of the other chain
+    }
+    if (h < 3) return false;
+    T area = T(0), cu = T(0), cv = T(0), rad = T(0);
+    for (int i = 0; i < h; ++i) {
+      const int j = (i + 1) % h;
+      area += T(0.5) * (ws->pu[i] * ws->pv[j] - ws->pu[j] * ws->pv[i]);
+      cu += ws->pu[i] / T(h);
+      cv += ws->pv[i] / T(h);
+    }
+    if (!(area > T(0))) return false;
+    // area of the hull inside each triangle of the group
+    T cov = T(0);
+    for (int c = 0; c < ws->ncand; ++c) {
+      if (ws->cflag[c] != 2) continue;
+      const Triangle<T> t = triangle(ws->cand[c]);
+      T tu[3], tv[3];
+      for (int k = 0; k < 3; ++k) {
+        tu[k] = dot(t.v[k] - o, e1);
+        tv[k] = dot(t.v[k] - o, e2);
+      }
+      int q = h;
+      T *iu = ws->pu, *iv = ws->pv, *ou = ws->qu, *ov = ws->qv;
+      for (int k = 0; k < h; ++k) {
+        ws->qu[k] = ws->pu[k];    // keep the hull: clip a copy
+        ws->qv[k] = ws->pv[k];
+      }
+      iu = ws->qu;
+      iv = ws->qv;
+      ou = ws->hu;
+      ov = ws->hv;
+      for (int e = 0; e < 3 && q > 0; ++e) {
+        q = clip_detail::sh_pass(iu, iv, q, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], ou, ov);
+        T *su = iu, *sv2 = iv;
+        iu = ou;
+        iv = ov;
+        ou = su;
+        ov = sv2;
+      }
+      for (int i = 1; i + 1 < q; ++i)
+        cov += T(0.5) * ((iu[i] - iu[0]) * (iv[i + 1] - iv[0]) - (iv[i] - iv[0]) * (iu[i + 1] - iu[0]));
+    }
+    if (!(fabs(cov - area) <= T(1e-9) * area)) return false;
+    for (int i = 0; i < h; ++i) {
+      const T du = ws->pu[i] - cu, dv = ws->pv[i] - cv;
+      const T r2 = sqrt(du * du + dv * dv);
+      rad = r2 > rad ? r2 : rad;
+    }
+    // equilateral triangle with inradius 2 rad around (cu, cv)
+    const T R = T(4) * rad + posed_radius(*a) * T(1e-3);
+    for (int k = 0; k < 3; ++k) {
+      const T ang = T(1.5707963267948966) + T(2.0943951023931957) * T(k);
+      big.v[k] = o + (cu + R * cos(ang)) * e1 + (cv + R * sin(ang)) * e2;
+    }
+    return true;
+  }
+
+  POLYDEM_FN void clip_add(const Triangle<T> &tri)
+  {
+    const ClipResult<T> r = polyhedron_triangle(*a, tri, ws->clip);
+    if (r.status == STATUS_SEPARATED) return;
+    if (r.status == STATUS_OVERFLOW) {
+      out->noverflow++;
+      return;
+    }
+    if (r.status != STATUS_OK) {
+      out->ndegenerate++;
+      return;
+    }
+    out->ntri++;
+    int k = -1;
+    T best = T(-2);
+    for (int i = 0; i < out->n; ++i) {
+      const T c = dot(out->p[i].nseed, r.normal);
+      if (c > best) {
+        best = c;
+        k = i;
+      }
+    }
+    if (k < 0 || best < cosmax) {
+      if (out->n < WALL_MAX_PATCH) {
+        k = out->n++;
+        WallPatch<T> &p = out->p[k];
+        const Vec3<T> z = make_vec3(T(0), T(0), T(0));
+        p.nseed = r.normal;
+        p.volume = p.area = T(0);
+        p.depth = T(0);
+        for (int i = 0; i < a->view->nverts; ++i) {
+          const T d = dot(r.normal, tri.v[0] - wall_vert(i));
+          p.depth = d > p.depth ? d : p.depth;
+        }
+        p.S = p.M = p.ac = p.vc = z;
+      } else
+        out->nmerged++;    // more facet orientations than patches: join the closest
+    }
+    WallPatch<T> &p = out->p[k];
+    p.volume += r.volume;
+    p.area += r.area;
+    p.S += r.S;
+    p.M += r.M;
+    p.ac += r.area * r.acentroid;
+    p.vc += r.volume * r.vcentroid;
+  }
+};
+
+// Patches of posed particle a (mesh frame) against the mesh; r: bounding radius.
+template <typename T, int MF, int ME>
+POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T cosmax,
+                             WallWorkspace<T, MF, ME> &ws, WallPatches<T> &out)
+{
+  out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = 0;
+  const ShapeView<T> &sv = *a.view;
+  if (sv.nverts > MAX_TEMPLATE_VERTS) {
+    out.noverflow++;
+    return;
+  }
+  for (int i = 0; i < sv.nverts; ++i) {
+    const Vec3<T> x = a.x + a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
+                                                         sv.verts[3 * i + 2]));
+    ws.verts[3 * i] = x.x;
+    ws.verts[3 * i + 1] = x.y;
+    ws.verts[3 * i + 2] = x.z;
+  }
+  WallAccumulate<T, MF, ME> acc;
+  acc.a = &a;
+  acc.g = &g;
+  acc.ws = &ws;
+  acc.out = &out;
+  acc.cosmax = cosmax;
+  ws.ncand = 0;
+  ws.pvalid = 0;
+  mesh_for_each_near(g, a.x, posed_radius(a), acc);
+  acc.finish();
+}
+
+// Rigid motion of the mesh: p_lab = o + d + Rm (p_mesh - o); wall velocity
+// at p_lab: vw + w x (p_lab - o - d).
+template <typename T> struct MeshPose {
+  Vec3<T> o, d;    // rotation origin (mesh frame = lab at t=0), displacement
+  Mat3<T> R;       // rotation
+  Quat<T> q;       // same rotation as a quaternion
+  Vec3<T> vw, w;   // translation velocity, angular velocity (lab)
+};
+
+// Normal damping of a wall contact. contact_force's damping ratio is
+// calibrated for a face contact (V = A delta, W' ~ V^(1/3)) of a free
+// particle. A corner or edge hitting a wall is a different self-similar
+// contact: with V ~ delta^a (a = A delta / V: 1 face, 2 edge, 3 vertex) and
+// W' ~ V^q (q = dlnW'/dlnV: 1/3 for Feng's law, 1 deep in the quadratic
+// core V << V0), F = W'(V) A ~ delta^(a(q+1) - 1) and the model's local
+// stiffness W''(V) A^2 = q a F / delta. The restitution then depends on
+// (a, q), and the contact point sees the mass m_c = 1 / (1/m + (r x n).
+// I^-1 (r x n)) (r: centre to contact point), not m. The wall contact uses
+// m_c and zeta(e, a, q) interpolated in a table calibrated on the host, so
+// that a corner impact reverses the contact point's normal velocity by e
+// (the assumption of seed Eqs. 27-28).
+constexpr int WALL_DAMP_N = 9;    // a = 1, 1.25, ..., 3; q = 1/3 and 1
+template <typename T> struct WallDamping {
+  T z[2][WALL_DAMP_N];
+};
+
+template <typename T> POLYDEM_FN T wall_damping_ratio(const WallDamping<T> &d, T a, T q)
+{
+  T u = (a - T(1)) * T(4);
+  if (!(u > T(0))) u = T(0);
+  if (u > T(WALL_DAMP_N - 1)) u = T(WALL_DAMP_N - 1);
+  int k = (int) u;
+  if (k > WALL_DAMP_N - 2) k = WALL_DAMP_N - 2;
+  const T f = u - T(k);
+  T wq = (q - T(1) / T(3)) * T(1.5);
+  wq = wq < T(0) ? T(0) : (wq > T(1) ? T(1) : wq);
+  const T z0 = (T(1) - f) * d.z[0][k] + f * d.z[0][k + 1];
+  const T z1 = (T(1) - f) * d.z[1][k] + f * d.z[1][k + 1];
+  return (T(1) - wq) * z0 + wq * z1;
+}
+
+// Restitution of x'' = -x^p - 2 zeta sqrt(b x^(p-1)) x', x(0) = 0, x'(0) = 1,
+// p = a(q+1) - 1, b = q a (host only; a = 1, q = 1/3 is the pair's face
+// contact, damping_factor).
+inline double wall_contact_restitution(double zeta, double a, double q)
+{
+  const double p = a * (q + 1.0) - 1.0, b = q * a, h = 5e-5;
+  double x = 0.0, v = 1.0;
+  auto kick = [&](double xx, double vv) {
+    if (!(xx > 0.0)) return vv;
+    const double xp = std::pow(xx, p);
+    const double g = 2.0 * zeta * std::sqrt(b * xp / xx);
+    return (vv - 0.5 * h * xp) / (1.0 + 0.5 * h * g);
+  };
+  for (int n = 0; n < 4000000; n++) {
+    v = kick(x, v);
+    x += h * v;
+    if (x <= 0.0 && n > 0) return -v;
+    v = kick(x, v);
+    if (v < 0.0 && x < 1e-300) return -v;
+  }
+  return 0.0;
+}
+
+// zeta(e, a, q) table for restitution e (host only, remembered per e)
+inline WallDamping<double> wall_damping_table(double e)
+{
+  static std::vector<std::pair<double, WallDamping<double>>> cache;
+  for (auto &c : cache)
+    if (c.first == e) return c.second;
+  WallDamping<double> d;
+  for (int iq = 0; iq < 2; iq++)
+    for (int k = 0; k < WALL_DAMP_N; k++) {
+      const double a = 1.0 + 0.25 * k, q = iq == 0 ? 1.0 / 3.0 : 1.0;
+      d.z[iq][k] = 0.0;
+      if (!(e > 0.0) || e >= 1.0) continue;
+      if (iq == 0 && k == 0) {    // the pair's calibration, same value
+        d.z[iq][k] = damping_factor(e);
+        continue;
+      }
+      double lo = 0.0, hi = 1.0;
+      while (wall_contact_restitution(hi, a, q) > e && hi < 1e3) hi *= 2.0;
+      for (int it = 0; it < 30; it++) {
+        const double mid = 0.5 * (lo + hi);
+        if (wall_contact_restitution(mid, a, q) > e) lo = mid;
+        else hi = mid;
+      }
+      d.z[iq][k] = 0.5 * (lo + hi);
+    }
+  cache.emplace_back(e, d);
+  return d;
+}
+
+template <typename T> struct WallForce {
+  Vec3<T> f, tau;    // on the particle (torque about its centroid)
+  T energy;          // sum of W(V) over patches
+  int ncontact;
+};
+
+// Forces of all patches on the particle (lab frame) and the update of its
+// tangential history hist[WALL_HIST_SIZE] for this mesh: each patch takes
+// the old slot whose normal is closest within the patch angle (else a fresh
+// spring); unmatched slots are cleared. p: contact parameters (meff = m_p).
+// Iinv: inverse principal moments of the particle, R its rotation.
+template <typename T>
+POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &mp,
+                                    const ContactParams<T> &p0, const WallDamping<T> &damp,
+                                    const Vec3<T> &Iinv, const Mat3<T> &R, T cosmax,
+                                    const Vec3<T> &x, const Vec3<T> &v, const Vec3<T> &w,
+                                    T *hist, bool update)
+{
+  WallForce<T> out;
+  out.f = out.tau = make_vec3(T(0), T(0), T(0));
+  out.energy = T(0);
+  out.ncontact = 0;
+  T newh[WALL_HIST_SIZE];
+  for (int i = 0; i < WALL_HIST_SIZE; ++i) newh[i] = T(0);
+  bool used[WALL_MAX_PATCH] = {false, false, false, false};
+  const Vec3<T> xw = mp.o + mp.d;    // a point of the wall's rotation axis (lab)
+  for (int k = 0; k < P.n; ++k) {
+    const WallPatch<T> &q = P.p[k];
+    const T an = norm(q.S);
+    if (!(q.volume > T(0)) || !(an > T(0))) continue;
+    ContactGeometry<T> g;
+    g.volume = q.volume;
+    g.area = an;
+    g.S_A = matvec(mp.R, q.S);
+    g.M_A = matvec(mp.R, q.M);
+    g.M_B = make_vec3(T(0), T(0), T(0));
+    g.normal = (T(1) / an) * g.S_A;    // from the particle into the wall
+    const Vec3<T> cm = q.area > T(0) ? (T(1) / q.area) * q.ac : (T(1) / q.volume) * q.vc;
+    g.centroid = xw + matvec(mp.R, cm - mp.o);
+    // history slot with the closest normal (lab frame)
+    int best = -1;
+    T bc = cosmax;
+    for (int s = 0; s < WALL_MAX_PATCH; ++s) {
+      const T *h = hist + WALL_HIST * s;
+      const T c = h[0] * g.normal.x + h[1] * g.normal.y + h[2] * g.normal.z;
+      if (!used[s] && c >= bc) {
+        bc = c;
+        best = s;
+      }
+    }
+    T shear[3] = {T(0), T(0), T(0)};
+    if (best >= 0) {
+      used[best] = true;
+      for (int i = 0; i < 3; ++i) shear[i] = hist[WALL_HIST * best + 3 + i];
+    }
+    // contact-point mass and damping ratio of this patch's contact shape
+    ContactParams<T> p = p0;
+    const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
+    const T im = T(1) / p0.meff + rn.x * rn.x * Iinv.x + rn.y * rn.y * Iinv.y + rn.z * rn.z * Iinv.z;
+    p.meff = T(1) / im;
+    // local exponent of W'(V): 1/3 above V0, -> 1 deep in the core
+    T qexp = T(1) / T(3);
+    if (q.volume < p0.V0) {
+      const T u = q.volume / p0.V0;
+      qexp = (T(5) / T(3) - T(4) / T(3) * u) / (T(5) / T(3) - T(2) / T(3) * u);
+    }
+    p.damp = wall_damping_ratio(damp, an * q.depth / q.volume, qexp);
+    const ContactForce<T> cf = contact_force(g, p, x, xw, v, mp.vw, w, mp.w, shear);
+    T *h = newh + WALL_HIST * out.ncontact;
+    h[0] = g.normal.x;
+    h[1] = g.normal.y;
+    h[2] = g.normal.z;
+    for (int i = 0; i < 3; ++i) h[3 + i] = shear[i];
+    out.f += cf.F_A;
+    out.tau += cf.tau_A;
+    out.energy += cf.energy;
+    out.ncontact++;
+  }
+  if (update)    // setup (no time step yet) leaves the history as it was
+    for (int i = 0; i < WALL_HIST_SIZE; ++i) hist[i] = newh[i];
+  return out;
+}
+
+// Contact parameters of a particle (volume V, mass m, type material E, nu)
+// with the wall (wE, wnu): the wall is a half-space sized like the particle
+// (R_w = R_p) and of infinite mass (m_eff = m).
+template <typename T>
+POLYDEM_FN ContactParams<T> wall_params(T E, T nu, T wE, T wnu, T V, T m, T damp, T mu, T core,
+                                        T dt)
+{
+  ContactParams<T> p = make_contact_params(E, nu, V, m, wE, wnu, V, m, damp, mu, core, dt);
+  p.meff = m;
+  return p;
+}
+
+// Torque on the mesh about its axis point o + d balancing the particle's
+// force f and torque tau (about x).
+template <typename T>
+POLYDEM_FN Vec3<T> wall_reaction_torque(const Vec3<T> &x, const WallForce<T> &wf,
+                                        const MeshPose<T> &mp)
+{
+  return -(wf.tau + cross(x - (mp.o + mp.d), wf.f));
+}
+
+// Everything for one particle (lab pose x, q, s; velocity v, spin w):
+// pose into the mesh frame, patches, forces back in the lab frame.
+template <typename T, int MF, int ME>
+POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab,
+                                      const MeshPose<T> &mp, const MeshGridView<T> &g,
+                                      const ContactParams<T> &p, const WallDamping<T> &damp,
+                                      T cosmax, const Vec3<T> &v, const Vec3<T> &w, T *hist,
+                                      bool update,
+                                      WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P)
+{
+  Pose<T> pm;
+  pm.x = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
+  pm.q = qmul(qconj(mp.q), lab.q);
+  pm.s = lab.s;
+  const PosedShape<T> a = make_posed(sv, pm);
+  wall_patches(a, g, cosmax, ws, P);
+  // inverse principal moments: I = rho s^5 I_unit, rho = m / (s^3 V_unit)
+  const T rho = p.meff / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
+  const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),
+                                 T(1) / (rho * s5 * sv.inertia[2]));
+  return wall_forces(P, mp, p, damp, Iinv, a.R, cosmax, lab.x, v, w, hist, update);
+}
+
+}    // namespace polydem
+
+#endif

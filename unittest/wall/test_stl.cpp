@@ -1,0 +1,195 @@
+// STL reader and mesh bin grid (issue 5, acceptance 5 at the reader level):
+// ASCII and binary give the same triangles, load transform, dropped
+// triangles counted, clear errors with file and line, grid candidates equal
+// a brute-force search.
+#include "polydem_mesh_grid.h"
+#include "polydem_stl.h"
+#include "wall_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <random>
+#include <set>
+
+using namespace polydem;
+using namespace wall_test;
+
+namespace {
+
+std::string write_text(const std::string &name, const std::string &text)
+{
+  const std::string p = tmpdir() + "/" + name;
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::string error_of(const std::string &path, const StlTransform &xf = StlTransform())
+{
+  try {
+    read_stl(path, xf);
+  } catch (StlError &e) {
+    return e.what();
+  }
+  return "";
+}
+
+}    // namespace
+
+TEST(Stl, AsciiAndBinaryAgree)
+{
+  const Tris t = flat(-1, 1, -0.5, 0.5, 0.25, 5, 3, true, 0.3, 7);
+  const std::string a = tmpdir() + "/a.stl", b = tmpdir() + "/b.stl";
+  write_ascii(a, t);
+  write_binary(b, t);
+  const StlMesh ma = read_stl(a, StlTransform()), mb = read_stl(b, StlTransform());
+  EXPECT_FALSE(ma.binary);
+  EXPECT_TRUE(mb.binary);
+  ASSERT_EQ(ma.ntri(), 30);
+  ASSERT_EQ(mb.ntri(), 30);
+  for (size_t k = 0; k < t.size(); k++) {
+    EXPECT_EQ(ma.tri[k], t[k]);                          // ASCII: %.17g round trip
+    EXPECT_NEAR(mb.tri[k], t[k], 1e-7 * std::fabs(t[k]) + 1e-30);    // binary: float32
+  }
+}
+
+TEST(Stl, BinaryHeaderStartingWithSolid)
+{
+  const Tris t = flat(0, 1, 0, 1, 0, 2, 2);
+  const std::string b = tmpdir() + "/solidhdr.stl";
+  write_binary(b, t);
+  {
+    std::fstream f(b, std::ios::in | std::ios::out | std::ios::binary);
+    f.write("solid binary", 12);
+  }
+  const StlMesh m = read_stl(b, StlTransform());
+  EXPECT_TRUE(m.binary);
+  EXPECT_EQ(m.ntri(), 8);
+}
+
+TEST(Stl, TransformScaleRotateOffsetFlip)
+{
+  const Tris t = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const std::string a = tmpdir() + "/one.stl";
+  write_ascii(a, t);
+  StlTransform xf;
+  xf.scale = 2.0;
+  // 90 degrees about x: y -> z
+  xf.R[1][1] = 0;
+  xf.R[1][2] = -1;
+  xf.R[2][1] = 1;
+  xf.R[2][2] = 0;
+  xf.offset[0] = 10;
+  xf.flip = true;
+  const StlMesh m = read_stl(a, xf);
+  ASSERT_EQ(m.ntri(), 1);
+  const double expect[9] = {10, 0, 0, 10, 0, 2, 12, 0, 0};    // t1, t2 swapped
+  for (int k = 0; k < 9; k++) EXPECT_NEAR(m.tri[k], expect[k], 1e-15);
+}
+
+TEST(Stl, DropsZeroAreaAndDuplicates)
+{
+  Tris t = flat(0, 1, 0, 1, 0, 2, 2);    // 8 triangles
+  const Tris dup(t.begin() + 9, t.begin() + 18);
+  // same triangle, vertices rotated and reversed
+  const Tris dup2 = {dup[6], dup[7], dup[8], dup[3], dup[4], dup[5], dup[0], dup[1], dup[2]};
+  const Tris line = {0, 0, 0, 1, 1, 1, 2, 2, 2};     // collinear
+  const Tris point = {3, 3, 3, 3, 3, 3, 3, 3, 3};    // one point
+  for (const Tris *x : {&dup, &dup2, &line, &point}) t.insert(t.end(), x->begin(), x->end());
+  const std::string a = tmpdir() + "/drop.stl";
+  write_ascii(a, t);
+  const StlMesh m = read_stl(a, StlTransform());
+  EXPECT_EQ(m.nread, 12);
+  EXPECT_EQ(m.ntri(), 8);
+  EXPECT_EQ(m.nduplicate, 2);
+  EXPECT_EQ(m.ndegenerate, 2);
+}
+
+TEST(Stl, Errors)
+{
+  EXPECT_NE(error_of("/nonexistent/x.stl").find("/nonexistent/x.stl: cannot open"),
+            std::string::npos);
+  const std::string e = write_text("empty.stl", "");
+  EXPECT_NE(error_of(e).find("empty file"), std::string::npos);
+  const std::string es = write_text("emptysolid.stl", "solid x\nendsolid x\n");
+  EXPECT_NE(error_of(es).find("empty mesh"), std::string::npos);
+
+  const std::string bad = write_text("bad.stl", "solid x\n facet normal 0 0 1\n  outer loop\n"
+                                                "   vertex 0 0 0\n   vertex 1 0 zero\n");
+  const std::string m = error_of(bad);
+  EXPECT_NE(m.find("bad.stl:5: bad number 'zero'"), std::string::npos) << m;
+
+  const std::string kw = write_text("kw.stl", "solid x\n facet normal 0 0 1\n  outer loop\n"
+                                              "   vertex 0 0 0\n   vertex 1 0 0\n"
+                                              "   vertex 0 1 0\n  endloop\n endfacett\n");
+  EXPECT_NE(error_of(kw).find("kw.stl:8: expected 'endfacet'"), std::string::npos)
+      << error_of(kw);
+
+  const std::string two = write_text("two.stl", "solid x\n facet normal 0 0 1\n  outer loop\n"
+                                                "   vertex 0 0 0\n   vertex 1 0 0\n"
+                                                "  endloop\n");
+  EXPECT_NE(error_of(two).find("two.stl:6: facet has 2 vertices"), std::string::npos);
+
+  const std::string cut = write_text("cut.stl", "solid x\n facet normal 0 0 1\n  outer loop\n"
+                                                "   vertex 0 0 0\n");
+  EXPECT_NE(error_of(cut).find("unexpected end of file"), std::string::npos);
+
+  const std::string nan = write_text("nan.stl", "solid x\n facet normal 0 0 1\n  outer loop\n"
+                                                "   vertex 0 0 0\n   vertex nan 0 0\n"
+                                                "   vertex 0 1 0\n  endloop\n endfacet\n"
+                                                "endsolid\n");
+  EXPECT_NE(error_of(nan).find("nan.stl:2: facet: non-finite"), std::string::npos)
+      << error_of(nan);
+
+  const Tris t = flat(0, 1, 0, 1, 0, 2, 2);
+  const std::string tr = tmpdir() + "/trunc.stl";
+  write_binary(tr, t, 84 + 50 * 8 - 7);
+  EXPECT_NE(error_of(tr).find("truncated binary STL"), std::string::npos) << error_of(tr);
+  write_binary(tr, t, 50);
+  EXPECT_NE(error_of(tr).find("truncated binary STL"), std::string::npos);
+
+  Tris tn = t;
+  tn[4] = std::nan("");
+  const std::string bn = tmpdir() + "/nanbin.stl";
+  write_binary(bn, tn);
+  EXPECT_NE(error_of(bn).find("triangle 1: non-finite"), std::string::npos) << error_of(bn);
+}
+
+// candidates from the grid = brute force over all triangles (same near test)
+TEST(MeshGrid, CandidatesEqualBruteForce)
+{
+  Tris t = flat(-1, 1, -1, 1, 0, 12, 9, true, 0.35, 3);
+  const Tris w = flat(-1, 1, -1, 1, 0.5, 3, 3, false, 0.0, 1);
+  for (size_t k = 0; k < w.size(); k += 3) {    // a tilted second sheet
+    t.push_back(w[k]);
+    t.push_back(w[k + 1]);
+    t.push_back(w[k + 2] + 0.2 * w[k]);
+  }
+  for (double h : {0.05, 0.3, 5.0}) {
+    const MeshGrid g = build_mesh_grid(t, h);
+    MeshGridView<double> v{t.data(), (int) (t.size() / 9), {g.lo[0], g.lo[1], g.lo[2]}, g.h,
+                           {g.n[0], g.n[1], g.n[2]}, g.start.data(), g.items.data(),
+                           g.plane.data(), g.box.data(), g.tbin.data()};
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.3, 1.3);
+    for (int trial = 0; trial < 300; trial++) {
+      const Vec3<double> c = make_vec3(u(rng), u(rng), 0.5 * u(rng));
+      const double r = 0.02 + 0.2 * std::fabs(u(rng));
+      std::multiset<int> got;
+      auto f = [&](int k) { got.insert(k); };
+      mesh_for_each_near(v, c, r, f);
+      std::multiset<int> want;
+      for (int k = 0; k < v.ntri; k++)
+        if (mesh_tri_near(v, k, c, r)) want.insert(k);
+      ASSERT_EQ(got, want) << "h " << h << " trial " << trial;
+    }
+  }
+}
+
+TEST(MeshGrid, BinCountCapped)
+{
+  const Tris t = flat(0, 100, 0, 100, 0, 2, 2);
+  const MeshGrid g = build_mesh_grid(t, 1e-3, 1000);
+  EXPECT_LE((long) g.n[0] * g.n[1] * g.n[2], 1000);
+  EXPECT_EQ(g.start.back(), (int) g.items.size());
+}

@@ -1,0 +1,87 @@
+// fix wall/mesh/kk (Kokkos Serial) against plain fix wall/mesh (acceptance
+// 6): dodecahedra in a closed box mesh, translating or rotating (45 rpm),
+// with friction and damping, 500 steps: per-atom forces and torques to 1e-12
+// of the largest, positions and velocities to 1e-12, the mesh's global
+// vector and energy to 1e-12 relative.
+#include "wall_scene.h"
+
+#include "fix.h"
+#include "modify.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using polydem_test::Lmp;
+using namespace wall_test;
+
+namespace {
+
+const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
+
+struct Snapshot {
+  std::map<long, std::vector<double>> atoms;    // f, torque, x, v, wall history
+  std::vector<double> vec;                      // the fix's global vector + scalar
+};
+
+Snapshot run(const std::vector<std::string> &extra, const std::string &fixargs)
+{
+  const std::string data = scene_data(tmpdir() + "/kk.data", 3, 0.06, 21);
+  Lmp l(extra);
+  auto cmds = scene_setup(data);
+  if (!extra.empty())
+    for (auto &c : cmds)
+      if (c == "neighbor 0.002 bin") c = "newton off";    // with -pk newton off
+  l.cmds(cmds);
+  l.cmds({"neighbor 0.002 bin", "fix w all wall/mesh " + fixargs, "run 500"});
+  Snapshot s;
+  auto *a = l.lmp->atom;
+  auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+  for (int i = 0; i < a->nlocal; i++) {
+    std::vector<double> r;
+    for (int k = 0; k < 3; k++) r.push_back(a->f[i][k]);
+    for (int k = 0; k < 3; k++) r.push_back(a->torque[i][k]);
+    for (int k = 0; k < 3; k++) r.push_back(a->x[i][k]);
+    for (int k = 0; k < 3; k++) r.push_back(a->v[i][k]);
+    s.atoms[(long) a->tag[i]] = r;
+  }
+  for (int k = 0; k < fix->size_vector; k++) s.vec.push_back(fix->compute_vector(k));
+  s.vec.push_back(fix->compute_scalar());
+  return s;
+}
+
+void compare(const Snapshot &p, const Snapshot &k, const char *what)
+{
+  ASSERT_EQ(p.atoms.size(), k.atoms.size());
+  double fmax = 0.0, dmax = 0.0;
+  for (auto &kv : p.atoms) {
+    const auto &q = k.atoms.at(kv.first);
+    for (int c = 0; c < 6; c++) {
+      fmax = std::fmax(fmax, std::fabs(kv.second[c]));
+      dmax = std::fmax(dmax, std::fabs(kv.second[c] - q[c]));
+    }
+    for (int c = 6; c < 12; c++) EXPECT_NEAR(kv.second[c], q[c], 1e-12) << what;
+  }
+  std::printf("[ wall     ] %s: max |f,torque (kk - plain)| = %.3g (max |f| %.3g); mesh force "
+              "%.6g %.6g %.6g, contacts %g\n", what, dmax, fmax, p.vec[0], p.vec[1], p.vec[2],
+              p.vec[6]);
+  EXPECT_GT(fmax, 0.0);
+  EXPECT_LE(dmax, 1e-12 * fmax);
+  for (size_t c = 0; c < p.vec.size(); c++)
+    EXPECT_NEAR(p.vec[c], k.vec[c], 1e-12 * (1.0 + std::fabs(p.vec[c]))) << what << " " << c;
+}
+
+}    // namespace
+
+TEST(WallKokkos, KkEqualsPlain)
+{
+  const std::string box = tmpdir() + "/kk_box.stl";
+  write_binary(box, closed_box(0.06, 5));
+  for (const std::string move :
+       {" move translate 0.05 0 0", " move rotate 0.03 0.03 0.03 1 0.3 0.2 rpm 45"}) {
+    const std::string args = box + " friction 0.6 restitution 0.4" + move;
+    const Snapshot p = run({}, args), k = run(KK, args);
+    compare(p, k, move.c_str());
+    EXPECT_GE(p.vec[6], 1.0);    // wall contacts at the end
+  }
+}

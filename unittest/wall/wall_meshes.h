@@ -1,0 +1,132 @@
+// Test meshes for fix wall/mesh, written as STL files (ASCII or binary).
+#ifndef POLYDEM_TEST_WALL_MESHES_H
+#define POLYDEM_TEST_WALL_MESHES_H
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace wall_test {
+
+using Tris = std::vector<double>;    // 9 per triangle
+
+inline void write_ascii(const std::string &path, const Tris &t)
+{
+  FILE *f = std::fopen(path.c_str(), "w");
+  std::fprintf(f, "solid test\n");
+  for (size_t k = 0; k + 8 < t.size(); k += 9) {
+    std::fprintf(f, "  facet normal 0 0 0\n    outer loop\n");
+    for (int v = 0; v < 3; v++)
+      std::fprintf(f, "      vertex %.17g %.17g %.17g\n", t[k + 3 * v], t[k + 3 * v + 1],
+                   t[k + 3 * v + 2]);
+    std::fprintf(f, "    endloop\n  endfacet\n");
+  }
+  std::fprintf(f, "endsolid test\n");
+  std::fclose(f);
+}
+
+inline void write_binary(const std::string &path, const Tris &t, long truncate_to = -1)
+{
+  std::string data(80, ' ');
+  const uint32_t n = (uint32_t) (t.size() / 9);
+  data.append((const char *) &n, 4);
+  for (uint32_t i = 0; i < n; i++) {
+    float rec[12] = {0, 0, 0};
+    for (int k = 0; k < 9; k++) rec[3 + k] = (float) t[9 * i + k];
+    data.append((const char *) rec, 48);
+    data.append(2, '\0');
+  }
+  if (truncate_to >= 0) data.resize(truncate_to);
+  FILE *f = std::fopen(path.c_str(), "wb");
+  std::fwrite(data.data(), 1, data.size(), f);
+  std::fclose(f);
+}
+
+// Flat rectangle [x0,x1] x [y0,y1] at z, facing +z, nx by ny cells split
+// into two triangles each (diagonal alternating if alt); jitter moves the
+// interior vertices by up to jitter * cell size (an irregular mesh).
+inline Tris flat(double x0, double x1, double y0, double y1, double z, int nx, int ny,
+                 bool alt = false, double jitter = 0.0, unsigned seed = 1)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double hx = (x1 - x0) / nx, hy = (y1 - y0) / ny;
+  std::vector<double> px((nx + 1) * (ny + 1)), py(px.size());
+  for (int j = 0; j <= ny; j++)
+    for (int i = 0; i <= nx; i++) {
+      double x = x0 + i * hx, y = y0 + j * hy;
+      if (i > 0 && i < nx) x += jitter * hx * u(rng);
+      if (j > 0 && j < ny) y += jitter * hy * u(rng);
+      px[j * (nx + 1) + i] = x;
+      py[j * (nx + 1) + i] = y;
+    }
+  Tris t;
+  auto add = [&](int a, int b, int c) {
+    for (int v : {a, b, c}) {
+      t.push_back(px[v]);
+      t.push_back(py[v]);
+      t.push_back(z);
+    }
+  };
+  for (int j = 0; j < ny; j++)
+    for (int i = 0; i < nx; i++) {
+      const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+      if (alt && ((i + j) % 2)) {
+        add(a, b, c);
+        add(b, d, c);
+      } else {
+        add(a, b, d);
+        add(a, d, c);
+      }
+    }
+  return t;
+}
+
+// Fan triangulation of the same rectangle around an off-centre point:
+// long thin triangles meeting at one vertex (a strongly irregular mesh).
+inline Tris fan(double x0, double x1, double y0, double y1, double z, int nside, double cx,
+                double cy)
+{
+  std::vector<double> bx, by;
+  for (int k = 0; k < nside; k++) {
+    bx.push_back(x0 + (x1 - x0) * k / nside);
+    by.push_back(y0);
+  }
+  for (int k = 0; k < nside; k++) {
+    bx.push_back(x1);
+    by.push_back(y0 + (y1 - y0) * k / nside);
+  }
+  for (int k = 0; k < nside; k++) {
+    bx.push_back(x1 - (x1 - x0) * k / nside);
+    by.push_back(y1);
+  }
+  for (int k = 0; k < nside; k++) {
+    bx.push_back(x0);
+    by.push_back(y1 - (y1 - y0) * k / nside);
+  }
+  Tris t;
+  const size_t n = bx.size();
+  for (size_t k = 0; k < n; k++) {
+    const size_t l = (k + 1) % n;
+    for (double v : {cx, cy, z, bx[k], by[k], z, bx[l], by[l], z}) t.push_back(v);
+  }
+  return t;
+}
+
+inline std::string tmpdir()
+{
+  static std::string d;
+  if (d.empty()) {
+    char tmpl[] = "/tmp/polydem_wall_XXXXXX";
+    d = mkdtemp(tmpl);
+  }
+  return d;
+}
+
+}    // namespace wall_test
+
+#endif
