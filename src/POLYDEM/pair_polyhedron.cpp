@@ -31,7 +31,7 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
-static constexpr int SIZE_HISTORY = 3;    // tangential displacement
+static constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // tangential displacement, k_t
 
 /* ---------------------------------------------------------------------- */
 
@@ -321,7 +321,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
       const double rsq = delx * delx + dely * dely + delz * delz;
       auto no_contact = [&]() {
         touch[jj] = 0;
-        shear[0] = shear[1] = shear[2] = 0.0;
+        for (int k = 0; k < SIZE_HISTORY; k++) shear[k] = 0.0;
       };
       if (rsq >= radsum * radsum) {
         no_contact();
@@ -361,16 +361,15 @@ void PairPolyhedron::compute(int eflag, int vflag)
           core, shearupdate ? dt : 0.0);
 
       const auto geo = polydem::contact_geometry<double>(ov);
-      double hist[3] = {shear[0], shear[1], shear[2]};
+      double hist[SIZE_HISTORY];
+      for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = shear[k];
       const auto cf = polydem::contact_force(
           geo, p, pi.x, pj.x, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
           polydem::make_vec3(v[j][0], v[j][1], v[j][2]),
           polydem::make_vec3(omega[i][0], omega[i][1], omega[i][2]),
           polydem::make_vec3(omega[j][0], omega[j][1], omega[j][2]), hist);
       if (shearupdate) {
-        shear[0] = hist[0];
-        shear[1] = hist[1];
-        shear[2] = hist[2];
+        for (int k = 0; k < SIZE_HISTORY; k++) shear[k] = hist[k];
       }
 
       f[i][0] += cf.F_A.x;

@@ -32,7 +32,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-constexpr int SIZE_HISTORY = 3;    // tangential displacement, as the plain style
+constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // as the plain style
 
 template <class DeviceType> struct PolyKK {
   typedef ArrayTypes<DeviceType> AT;

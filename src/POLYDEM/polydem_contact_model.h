@@ -166,8 +166,13 @@ POLYDEM_FN ContactGeometry<T> contact_geometry(const Overlap &ov)
   return g;
 }
 
-// shear: accumulated tangential displacement (in/out, 3 values). With
-// mu = 0 the tangential part is skipped and shear is zeroed.
+// Values of tangential history per contact: displacement (3), stiffness of
+// the previous step (1).
+constexpr int CONTACT_HIST = 4;
+
+// shear: tangential history (in/out, CONTACT_HIST values: accumulated
+// displacement, previous k_t). With mu = 0 the tangential part is skipped
+// and shear is zeroed.
 template <typename T>
 POLYDEM_FN ContactForce<T> contact_force(const ContactGeometry<T> &g, const ContactParams<T> &p,
                                          const Vec3<T> &xA, const Vec3<T> &xB,
@@ -210,7 +215,7 @@ POLYDEM_FN ContactForce<T> contact_force(const ContactGeometry<T> &g, const Cont
   out.ft = T(0);
 
   if (!(p.mu > T(0))) {
-    shear[0] = shear[1] = shear[2] = T(0);
+    shear[0] = shear[1] = shear[2] = shear[3] = T(0);
     return out;
   }
 
@@ -221,8 +226,17 @@ POLYDEM_FN ContactForce<T> contact_force(const ContactGeometry<T> &g, const Cont
   const T s1 = norm(s);
   if (s1 > T(0)) s = (s0 / s1) * s;
   const Vec3<T> vt = vr - vn * n;
-  s += p.dt * vt;
   const T kt = p.Kt * g.area;
+  // The stiffness k_t = K_t A_n changes with the contact area. The spring is
+  // carried in incremental form: a growing area does not scale up the force
+  // already stored (-k_old s), only the new increment uses k_t; a shrinking
+  // area scales the force down with k_t (Mindlin unloading). Scaling a loaded
+  // spring up with the area pumped energy into dense frictional packings.
+  // shear[3] = k_old (magnitude: LAMMPS's history fix negates every value
+  // when it copies a pair's history to the partner).
+  const T kold = fabs(shear[3]);
+  if (kt > kold && kt > T(0)) s = (kold / kt) * s;
+  s += p.dt * vt;
   const T gt = T(2) * p.damp * sqrt(kt * p.meff);
   Vec3<T> Ft = (-kt) * s - gt * vt;
   const T ftm = norm(Ft);
@@ -235,6 +249,7 @@ POLYDEM_FN ContactForce<T> contact_force(const ContactGeometry<T> &g, const Cont
   shear[0] = s.x;
   shear[1] = s.y;
   shear[2] = s.z;
+  shear[3] = kt;
   out.ft = norm(Ft);
   out.F_A += Ft;
   out.tau_A += cross(rA, Ft);

@@ -35,7 +35,7 @@
 namespace polydem {
 
 constexpr int WALL_MAX_PATCH = 4;    // contacts per particle and mesh
-constexpr int WALL_HIST = 6;         // per patch: normal (3), shear (3)
+constexpr int WALL_HIST = 3 + CONTACT_HIST;    // per patch: normal (3), shear history
 constexpr int WALL_HIST_SIZE = WALL_MAX_PATCH * WALL_HIST;
 constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle (more: clipped at once)
 
@@ -549,10 +549,11 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
         best = s;
       }
     }
-    T shear[3] = {T(0), T(0), T(0)};
+    T shear[CONTACT_HIST];
+    for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = T(0);
     if (best >= 0) {
       used[best] = true;
-      for (int i = 0; i < 3; ++i) shear[i] = hist[WALL_HIST * best + 3 + i];
+      for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = hist[WALL_HIST * best + 3 + i];
     }
     // contact-point mass and damping ratio of this patch's contact shape
     ContactParams<T> p = p0;
@@ -571,7 +572,7 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
     h[0] = g.normal.x;
     h[1] = g.normal.y;
     h[2] = g.normal.z;
-    for (int i = 0; i < 3; ++i) h[3 + i] = shear[i];
+    for (int i = 0; i < CONTACT_HIST; ++i) h[3 + i] = shear[i];
     out.f += cf.F_A;
     out.tau += cf.tau_A;
     out.energy += cf.energy;

@@ -251,7 +251,7 @@ template <typename T> void exercise_contact_model(int n)
         p.mu = T(0.3);
         p.meff = T(0.5);
         p.dt = T(1e-6);
-        T sh[3] = {shear(i, 0), shear(i, 1), shear(i, 2)};
+        T sh[CONTACT_HIST] = {shear(i, 0), shear(i, 1), shear(i, 2), T(0)};
         const ContactForce<T> f = contact_force(g, p, z, make_vec3(T(1), T(0), T(0)), z,
                                                 make_vec3(T(-0.1), T(0.01), T(0)), z, z, sh);
         for (int k = 0; k < 3; ++k) shear(i, k) = sh[k];

@@ -22,6 +22,7 @@ const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "
 struct Snapshot {
   std::map<long, std::vector<double>> atoms;    // f, torque, x, v, wall history
   std::vector<double> vec;                      // the fix's global vector + scalar
+  double max_contacts = 0.0;                    // wall contacts, most seen every 50 steps
 };
 
 Snapshot run(const std::vector<std::string> &extra, const std::string &fixargs)
@@ -33,10 +34,14 @@ Snapshot run(const std::vector<std::string> &extra, const std::string &fixargs)
     for (auto &c : cmds)
       if (c == "neighbor 0.002 bin") c = "newton off";    // with -pk newton off
   l.cmds(cmds);
-  l.cmds({"neighbor 0.002 bin", "fix w all wall/mesh " + fixargs, "run 500"});
+  l.cmds({"neighbor 0.002 bin", "fix w all wall/mesh " + fixargs});
   Snapshot s;
-  auto *a = l.lmp->atom;
   auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+  for (int k = 0; k < 10; k++) {    // 500 steps; the most wall contacts seen at the ends
+    l.cmd("run 50");
+    s.max_contacts = std::fmax(s.max_contacts, fix->compute_vector(6));
+  }
+  auto *a = l.lmp->atom;
   for (int i = 0; i < a->nlocal; i++) {
     std::vector<double> r;
     for (int k = 0; k < 3; k++) r.push_back(a->f[i][k]);
@@ -82,6 +87,6 @@ TEST(WallKokkos, KkEqualsPlain)
     const std::string args = box + " friction 0.6 restitution 0.4" + move;
     const Snapshot p = run({}, args), k = run(KK, args);
     compare(p, k, move.c_str());
-    EXPECT_GE(p.vec[6], 1.0);    // wall contacts at the end
+    EXPECT_GE(p.max_contacts, 1.0);    // the wall was touched during the run
   }
 }

@@ -77,7 +77,9 @@ Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int 
   std::ifstream in(out);
   std::string line;
   Sweep s;
-  double shear = 0.0;    // analytic Cundall-Strack spring (flat wall, constant speed)
+  // analytic Cundall-Strack spring (flat wall, constant speed) in the
+  // contact model's incremental form: a growing area keeps the stored force
+  double shear = 0.0, Aold = 0.0;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream ls(line);
@@ -90,6 +92,7 @@ Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int 
     double fn = 0.0, ft = 0.0;
     if (A > 0.0) {
       fn = wprime(K, A * DELTA, CORE * Vp) * A;
+      if (A > Aold && Aold > 0.0) shear *= Aold / A;
       if (step > 0) shear += U * dt;
       ft = Kt * A * shear;
       if (ft > MU * fn) {
@@ -98,6 +101,7 @@ Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int 
       }
     } else
       shear = 0.0;
+    Aold = A;
     // force on the particle: +z (fn), -x (friction); on the mesh the opposite
     s.max_fn_err = std::fmax(s.max_fn_err, std::fabs(-fz - fn) / Ffull);
     s.max_ft_err = std::fmax(s.max_ft_err, std::fabs(fx - ft) / (MU * Ffull));
