@@ -285,6 +285,9 @@ template <typename T> struct EllipsoidContact {
   T delta;         // overlap (length of the normal chord through C)
   Vec3<T> n;       // unit normal, from A towards B
   Vec3<T> c;       // contact point C (lab frame)
+  Vec3<T> gB;      // d(W0^2)/d(x_B) = 2 (1-mu0) M_B (x_B - C) (envelope theorem); parallel
+                   // to n. Rotating B by theta changes W0^2 by ((C - x_B) x gB).theta,
+                   // and d/dx_A = -gB (translation invariance).
 };
 
 template <typename T>
@@ -298,6 +301,7 @@ POLYDEM_FN EllipsoidContact<T> ellipsoid_contact(const EllipsoidPose<T> &A,
   r.delta = T(0);
   r.n = make_vec3(T(0), T(0), T(0));
   r.c = A.x;
+  r.gB = r.n;
   if (!(A.axes.x > T(0) && A.axes.y > T(0) && A.axes.z > T(0) && B.axes.x > T(0) &&
         B.axes.y > T(0) && B.axes.z > T(0)))
     return r;
@@ -350,6 +354,7 @@ POLYDEM_FN EllipsoidContact<T> ellipsoid_contact(const EllipsoidPose<T> &A,
   r.delta = pc.L * (tA - tB);
   r.n = n;
   r.c = A.x + pc.L * p;
+  r.gB = (T(2) * (T(1) - mu0) / pc.L) * symvec(pc.mb, pc.d - p);
   return r;
 }
 

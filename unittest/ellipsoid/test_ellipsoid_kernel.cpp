@@ -8,7 +8,7 @@
 // overlap is the chord of the original ellipsoids along that normal line.
 // None of this uses the kernel's quartic/determinant machinery.
 
-#include "polydem_ellipsoid.h"
+#include "polydem_ellipsoid_force.h"
 
 #include <gtest/gtest.h>
 
@@ -297,4 +297,59 @@ TEST(EllipsoidKernel, NearTouching)
   printf("near touching: %d overlapping, %d decided by root isolation, max |n - n_ref| %.3g, "
          "delta beyond 1e-8 rel. (within 1e-14 abs.) %d\n",
          nover, nfallback, max_dn, nwrong_delta);
+}
+
+// Energy-conserving overlap delta = r (1/W0 - 1): value against the oracle,
+// and its gradient (translation and rotation of B, used as the force) against
+// central finite differences of the oracle's delta.
+TEST(EllipsoidKernel, CentreOverlapGradient)
+{
+  std::mt19937_64 g(4242);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> nd(0.0, 1.0);
+  auto dref = [](const EllipsoidPose<double> &A, const EllipsoidPose<double> &B) {
+    const LD w = oracle(A, B).W0;
+    const LD r = std::sqrt((LD)(B.x.x - A.x.x) * (B.x.x - A.x.x) +
+                           (LD)(B.x.y - A.x.y) * (B.x.y - A.x.y) +
+                           (LD)(B.x.z - A.x.z) * (B.x.z - A.x.z));
+    return r * (1 / w - 1);
+  };
+  int n = 0;
+  double max_val = 0.0, max_grad = 0.0;
+  const double h = 1e-6;
+  while (n < 2000) {
+    auto A = random_ellipsoid(g, make_vec3(nd(g), nd(g), nd(g)));
+    Vec3<double> dir = make_vec3(nd(g), nd(g), nd(g));
+    auto B = random_ellipsoid(g, A.x + (2.0 * u(g) / norm(dir)) * dir);
+    const auto c = ellipsoid_contact(A, B);
+    if (c.status != STATUS_OK || c.W0 < 0.3 || c.W0 > 1.0 - 1e-4) continue;
+    n++;
+    double delta;
+    Vec3<double> J, P;
+    centre_overlap(c, A.x, B.x, delta, J, P);
+    const double ref = (double) dref(A, B);
+    max_val = std::max(max_val, std::fabs(delta - ref) / ref);
+    EXPECT_NEAR(delta, ref, 1e-8 * ref + 1e-14);
+    const Vec3<double> lB = c.c - B.x;
+    const Vec3<double> rot = cross(lB, P);
+    for (int k = 0; k < 3; k++) {
+      auto Bp = B, Bm = B;
+      Bp.x[k] += h;
+      Bm.x[k] -= h;
+      const double fd = (double) ((dref(A, Bp) - dref(A, Bm)) / (2 * h));
+      // rotation of B by +-h about lab axis k
+      Vec3<double> ax = make_vec3(0.0, 0.0, 0.0);
+      ax[k] = std::sin(h / 2);
+      auto Rp = B, Rm = B;
+      Rp.q = qmul(make_quat(std::cos(h / 2), ax.x, ax.y, ax.z), B.q);
+      Rm.q = qmul(make_quat(std::cos(h / 2), -ax.x, -ax.y, -ax.z), B.q);
+      const double fr = (double) ((dref(A, Rp) - dref(A, Rm)) / (2 * h));
+      const double scale = norm(J) + norm(rot);
+      max_grad = std::max(max_grad, std::max(std::fabs(J[k] - fd), std::fabs(rot[k] - fr)) / scale);
+      EXPECT_NEAR(J[k], fd, 1e-6 * scale) << "pair " << n;
+      EXPECT_NEAR(rot[k], fr, 1e-6 * scale) << "pair " << n;
+    }
+  }
+  printf("centre overlap: %d pairs, max rel. error of delta %.3g, of its gradient (vs finite "
+         "differences, h = 1e-6) %.3g\n", n, max_val, max_grad);
 }
