@@ -37,11 +37,17 @@ PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
   centroidstressflag = CENTROID_NOTAVAIL;
   finitecutflag = 1;
   for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+  // compute pair ellipsoid: [1] collisions started, [2] pair-steps in contact (this run;
+  // a pair with a ghost atom counts 1/2 on each rank when newton_pair is off)
+  nextra = 2;
+  pvector = new double[nextra];
+  pvector[0] = pvector[1] = 0.0;
 }
 
 PairEllipsoid::~PairEllipsoid()
 {
   if (copymode) return;
+  delete[] pvector;
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -238,7 +244,9 @@ void PairEllipsoid::compute(int eflag, int vflag)
             1.0;
         continue;
       }
-      local_counts[CNT_CONTACTS] += 1.0;
+      // a pair with a ghost j is seen on two ranks when newton_pair is off
+      const double w = (newton_pair || j < nlocal) ? 1.0 : 0.5;
+      local_counts[CNT_CONTACTS] += w;
       const double amin = MIN(MIN(MIN(A.axes.x, A.axes.y), MIN(A.axes.z, B.axes.x)),
                               MIN(B.axes.y, B.axes.z));
       const int it = type[i], jt = type[j];
@@ -247,6 +255,7 @@ void PairEllipsoid::compute(int eflag, int vflag)
       const auto cf = polydem::ellipsoid_force(c, overlap, kn[it][jt], gamma, A.x, B.x, vec(v[i]),
                                                vec(v[j]), vec(omega[i]), vec(omega[j]));
       if (cf.delta > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
+      if (cf.delta < cf.rate * update->dt) local_counts[CNT_COLLISIONS] += w;
       f[i][0] += cf.F_A.x;
       f[i][1] += cf.F_A.y;
       f[i][2] += cf.F_A.z;
@@ -266,6 +275,8 @@ void PairEllipsoid::compute(int eflag, int vflag)
                      delx, dely, delz);
     }
   }
+  pvector[0] = local_counts[CNT_COLLISIONS];
+  pvector[1] = local_counts[CNT_CONTACTS];
   if (neighbor->ago == 0) report_counters();
 }
 
@@ -279,7 +290,8 @@ void PairEllipsoid::report_counters()
   if (comm->me != 0) return;
   const char *what[NCOUNT] = {"degenerate contacts (coincident centres or NaN; skipped)",
                               "contact searches without convergence (skipped)",
-                              "overlaps beyond overlap/warn of the smallest semi-axis", nullptr};
+                              "overlaps beyond overlap/warn of the smallest semi-axis", nullptr,
+                              nullptr};
   for (int k = 0; k < CNT_CONTACTS; k++)
     if (counters[k] > reported[k]) {
       error->warning(FLERR, "pair ellipsoid: {:.0f} {} by step {}", counters[k], what[k],

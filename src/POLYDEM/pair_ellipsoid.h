@@ -35,7 +35,9 @@ class PairEllipsoid : public Pair {
   void *extract(const char *, int &) override;
 
   // counters since the start of the run (global after report_counters)
-  enum { CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, NCOUNT };
+  // CNT_COLLISIONS: contacts in their first step (delta < (d delta/dt) dt), i.e.
+  // collisions started; CNT_CONTACTS: pair-steps in contact
+  enum { CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, CNT_COLLISIONS, NCOUNT };
   double counters[NCOUNT];
 
  protected:

@@ -42,6 +42,7 @@ template <typename T> struct EllipsoidForce {
   Vec3<T> tau_B;    // torque on B about its centre
   T energy;         // elastic energy 1/2 k_n delta^2
   T delta;          // overlap used
+  T rate;           // d delta / dt (chord: approach speed along n)
 };
 
 // Gradient of delta = r (1/W0 - 1) with respect to x_B: J = (1/W0 - 1) u + P,
@@ -73,6 +74,7 @@ POLYDEM_FN EllipsoidForce<T> ellipsoid_force(const EllipsoidContact<T> &c, int o
   if (overlap == OVERLAP_CHORD) {
     const T vn = -dot(vrel, c.n);    // approach speed
     f.delta = c.delta;
+    f.rate = vn;
     f.F_A = (-(kn * c.delta + gamma * vn)) * c.n;
     f.tau_A = cross(lA, f.F_A);
     f.tau_B = cross(lB, -f.F_A);
@@ -85,6 +87,7 @@ POLYDEM_FN EllipsoidForce<T> ellipsoid_force(const EllipsoidContact<T> &c, int o
     const T rate = ((T(1) / c.W0 - T(1)) / norm(d)) * dot(d, vB - vA) + dot(P, vrel);
     const T s = -(kn * delta + gamma * rate);    // force on B = s J
     f.delta = delta;
+    f.rate = rate;
     f.F_A = (-s) * J;
     f.tau_B = cross(lB, s * P);
     f.tau_A = cross(lA, (-s) * P);
