@@ -353,3 +353,44 @@ TEST(EllipsoidKernel, CentreOverlapGradient)
   printf("centre overlap: %d pairs, max rel. error of delta %.3g, of its gradient (vs finite "
          "differences, h = 1e-6) %.3g\n", n, max_val, max_grad);
 }
+
+// The kernels are templates; in float (not used by the pair styles: the
+// quartic's discriminant needs double) spheres still give W0 and delta to
+// float precision, and a prolate pair agrees with the double result.
+TEST(EllipsoidKernel, Float)
+{
+  EllipsoidPose<float> A, B;
+  A.x = make_vec3(0.0f, 0.0f, 0.0f);
+  A.q = make_quat(1.0f, 0.0f, 0.0f, 0.0f);
+  A.axes = make_vec3(0.5f, 0.5f, 0.5f);
+  B = A;
+  B.axes = make_vec3(0.25f, 0.25f, 0.25f);
+  B.x = make_vec3(0.3f, 0.4f, 0.0f);    // |d| = 0.5
+  auto c = ellipsoid_contact(A, B);
+  ASSERT_EQ(c.status, STATUS_OK);
+  EXPECT_NEAR(c.W0, 0.5f / 0.75f, 1e-6f);
+  EXPECT_NEAR(c.delta, 0.25f, 1e-6f);
+  EXPECT_NEAR(c.n.x, 0.6f, 1e-6f);
+  EllipsoidPose<double> Ad, Bd;
+  Ad.x = make_vec3(0.0, 0.0, 0.0);
+  Ad.q = qnormalize(make_quat(1.0, 0.2, -0.3, 0.1));
+  Ad.axes = make_vec3(1.0, 0.2, 0.2);
+  Bd.x = make_vec3(0.5, 0.4, 0.1);
+  Bd.q = qnormalize(make_quat(0.3, 1.0, 0.2, -0.5));
+  Bd.axes = make_vec3(0.6, 0.3, 0.3);
+  const auto cd = ellipsoid_contact(Ad, Bd);
+  ASSERT_EQ(cd.status, STATUS_OK);
+  A.x = make_vec3(0.0f, 0.0f, 0.0f);
+  A.q = make_quat((float) Ad.q.w, (float) Ad.q.x, (float) Ad.q.y, (float) Ad.q.z);
+  A.axes = make_vec3(1.0f, 0.2f, 0.2f);
+  B.x = make_vec3(0.5f, 0.4f, 0.1f);
+  B.q = make_quat((float) Bd.q.w, (float) Bd.q.x, (float) Bd.q.y, (float) Bd.q.z);
+  B.axes = make_vec3(0.6f, 0.3f, 0.3f);
+  c = ellipsoid_contact(A, B);
+  ASSERT_EQ(c.status, STATUS_OK);
+  EXPECT_NEAR(c.W0, cd.W0, 1e-4);
+  EXPECT_NEAR(c.delta, cd.delta, 1e-4 * cd.delta + 1e-5);
+  EXPECT_NEAR(c.n.x, cd.n.x, 1e-3);
+  EXPECT_NEAR(c.n.y, cd.n.y, 1e-3);
+  EXPECT_NEAR(c.n.z, cd.n.z, 1e-3);
+}
