@@ -9,12 +9,21 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
 namespace polydem_test {
+
+// a double as LAMMPS input text, exactly (17 significant digits)
+inline std::string num(double x)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.17g", x);
+  return buf;
+}
 
 struct GasSpec {
   int n_side = 8;          // N = n_side^3

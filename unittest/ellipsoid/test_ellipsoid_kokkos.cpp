@@ -20,17 +20,11 @@
 #include <cstdio>
 
 using polydem_test::Lmp;
+using polydem_test::num;
 
 namespace {
 
 const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
-
-std::string num(double x)
-{
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.17g", x);
-  return buf;
-}
 
 int me()
 {

@@ -16,15 +16,9 @@
 #include <cstdio>
 
 using polydem_test::Lmp;
+using polydem_test::num;
 
 namespace {
-
-std::string num(double x)
-{
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.17g", x);
-  return buf;
-}
 
 LAMMPS_NS::AtomVecPolyhedron *avec_of(Lmp &l)
 {
