@@ -68,8 +68,8 @@ def main():
               f"{dev_s:.3g} (tau* = sqrt(3/2) tau); for tau >= 0.2: {dev2:.3g}, {dev2_s:.3g}; "
               f"fitted alpha*/alpha {slope:.4f} (sqrt(3/2) = 1.2247); T_tr/T_rot over the last quarter "
               f"{sum(last) / len(last):.3f}")
-        ax1.loglog([1 + t for t in tau], ratio, ".", ms=3, label=f"xi = {xi:g}")
-        ax2.plot(tau, trot, "-", label=f"xi = {xi:g}")
+        ax1.loglog([1 + t for t in tau], ratio, ".", ms=3, label=f"xi = {xi:g}, N = {info.get('N', 0):.0f}")
+        ax2.plot(tau, trot, "-", label=f"xi = {xi:g}, N = {info.get('N', 0):.0f}")
     x = [1 + 10 ** (k / 50.0) * 1e-3 for k in range(0, 200)]
     x = [v for v in x if v - 1 <= max(tmax, 1e-3)]
     ax1.loglog(x, [1 / v ** 2 for v in x], "k-", label="Haff 1/(1+tau)^2")
