@@ -199,6 +199,12 @@ void PairPolyhedron::init_style()
     if (avec->shape(t).nfaces() > 128)
       error->all(FLERR, "pair_style polyhedron: shape '{}' has {} faces, more than 128",
                  avec->shape_id(t), avec->shape(t).nfaces());
+  // ellipsoid templates belong to pair_style ellipsoid (mixed contacts not supported)
+  int nell = 0;
+  for (int i = 0; i < atom->nlocal; i++) nell += avec->shape(atom->pshape[i]).is_ellipsoid();
+  MPI_Allreduce(MPI_IN_PLACE, &nell, 1, MPI_INT, MPI_SUM, world);
+  if (nell) error->all(FLERR, "pair_style polyhedron: {} atoms have an ellipsoid shape; "
+                       "use pair_style ellipsoid (mixed contacts are not supported)", nell);
 
   int irequest = neighbor->request(this, instance_me);
   neighbor->requests[irequest]->size = 1;

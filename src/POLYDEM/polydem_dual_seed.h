@@ -34,6 +34,7 @@ constexpr int DUAL_SEED_STRIDE = DUAL_SEED_STRIDE_K;
 inline std::vector<int> build_dual_seed(int nverts, int nfaces, const double *planes,
                                         const int *face_start, const int *face_verts)
 {
+  if (nverts < 4 || nfaces < 4) return {};    // not a polyhedron (e.g. an ellipsoid template)
   // directed edge (u -> w) of face loops -> face
   std::map<std::pair<int, int>, int> edge_face;
   for (int f = 0; f < nfaces; ++f) {

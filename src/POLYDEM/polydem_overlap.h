@@ -176,7 +176,7 @@ polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b, OverlapWorksp
   // is needed to build), else a bounding tetrahedron about the Chebyshev
   // centre of both half-space systems (polarisation point, seed Eq. 4).
   const int *seed = a.view->dual;
-  const bool seeded = seed != nullptr && seed[0] <= w.MAXT;
+  const bool seeded = seed != nullptr && seed[0] >= 4 && seed[0] <= w.MAXT;
   Vec3<T> xc = make_vec3(T(0), T(0), T(0));
   T r = T(0);
   if (!seeded) {

@@ -7,6 +7,7 @@
    the same points runs the same deterministic processing, so the rebuilt
    template equals the original bit for bit.
    Format: "polydem-shape-1 <hull 0|1> <name> <npoints> x y z x y z ..."
+   Ellipsoids: "polydem-ellipsoid-1 <name> a b c" (semi-axes, 17 digits).
 ------------------------------------------------------------------------- */
 
 #include "polydem_shape_record.h"
@@ -20,12 +21,19 @@ namespace polydem {
 
 static const char *RECORD_TAG = "polydem-shape-1";
 
-static std::string make_record(const PolyShapeTemplate &t, bool hull)
+static const char *ELLIPSOID_TAG = "polydem-ellipsoid-1";
+
+static std::string record_name(std::string name)
 {
-  std::string name = t.name();
   for (char &c : name)
     if (c == ' ' || c == '\t' || c == '\n') c = '_';
   if (name.empty()) name = "shape";
+  return name;
+}
+
+static std::string make_record(const PolyShapeTemplate &t, bool hull)
+{
+  const std::string name = record_name(t.name());
   const auto &pts = t.input_points();
   std::string rec = std::string(RECORD_TAG) + " " + (hull ? "1" : "0") + " " + name + " " +
       std::to_string(pts.size());
@@ -56,9 +64,37 @@ std::unique_ptr<PolyShapeTemplate> shape_from_file(const std::string &file, bool
   }
 }
 
+std::unique_ptr<PolyShapeTemplate> shape_ellipsoid(double a, double b, double c,
+                                                   const std::string &name, std::string &record,
+                                                   std::string &err)
+{
+  try {
+    auto t = std::make_unique<PolyShapeTemplate>(
+        PolyShapeTemplate::ellipsoid(a, b, c, record_name(name)));
+    char buf[96];
+    snprintf(buf, sizeof(buf), " %.17g %.17g %.17g", a, b, c);
+    record = std::string(ELLIPSOID_TAG) + " " + t->name() + buf;
+    return t;
+  } catch (std::exception &e) {
+    err = e.what();
+    return nullptr;
+  }
+}
+
 std::unique_ptr<PolyShapeTemplate> shape_from_record(const std::string &record, std::string &err)
 {
   std::istringstream in(record);
+  if (record.rfind(ELLIPSOID_TAG, 0) == 0) {
+    std::string tag, name, tok[3];
+    if (!(in >> tag >> name >> tok[0] >> tok[1] >> tok[2]) || tag != ELLIPSOID_TAG) {
+      err = "not a POLYDEM ellipsoid record";
+      return nullptr;
+    }
+    double ax[3];
+    for (int k = 0; k < 3; k++) ax[k] = std::strtod(tok[k].c_str(), nullptr);
+    std::string rec;
+    return shape_ellipsoid(ax[0], ax[1], ax[2], name, rec, err);
+  }
   std::string tag, name;
   int hull = 0;
   long n = 0;

@@ -21,6 +21,12 @@ std::unique_ptr<PolyShapeTemplate> shape_from_file(const std::string &file, bool
                                                    std::vector<std::string> &warnings,
                                                    std::string &err);
 
+// An ellipsoid template with semi-axes a, b, c. On failure returns nullptr
+// and sets err.
+std::unique_ptr<PolyShapeTemplate> shape_ellipsoid(double a, double b, double c,
+                                                   const std::string &name, std::string &record,
+                                                   std::string &err);
+
 // Rebuild a template from its record, bit-identical to the one recorded.
 std::unique_ptr<PolyShapeTemplate> shape_from_record(const std::string &record,
                                                      std::string &err);

@@ -771,6 +771,25 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   make_float_copy();
 }
 
+PolyShapeTemplate PolyShapeTemplate::ellipsoid(double a, double b, double c,
+                                                const std::string &name)
+{
+  for (double v : {a, b, c})
+    if (!(v > 0.0) || !std::isfinite(v))
+      throw ShapeError(name + ": ellipsoid semi-axes must be positive and finite, got " +
+                       std::to_string(a) + " " + std::to_string(b) + " " + std::to_string(c));
+  PolyShapeTemplate t;
+  t.name_ = name;
+  t.ellipsoid_ = true;
+  t.axes_ = {a, b, c};
+  t.face_start_ = {0};    // no faces, no vertices
+  t.volume_ = 4.0 / 3.0 * M_PI * a * b * c;
+  t.radius_ = std::max(a, std::max(b, c));
+  t.moments_ = {t.volume_ * (b * b + c * c) / 5.0, t.volume_ * (a * a + c * c) / 5.0,
+                t.volume_ * (a * a + b * b) / 5.0};
+  return t;
+}
+
 void PolyShapeTemplate::make_float_copy()
 {
   dual_ = build_dual_seed(nverts(), nfaces(), planes_.data(), face_start_.data(),

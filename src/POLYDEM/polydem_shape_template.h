@@ -53,6 +53,15 @@ class PolyShapeTemplate {
                                        const ShapeOptions &opt = ShapeOptions(),
                                        const std::string &name = "points");
 
+  // An ellipsoid template (ellipsoid seed): semi-axes a, b, c along the
+  // body x, y, z axes, centroid at the origin. Mass properties are analytic
+  // (V = 4/3 pi abc, I_x = V (b^2 + c^2) / 5 per unit density, ...); it has
+  // no vertices or faces. Throws ShapeError for non-positive or non-finite axes.
+  static PolyShapeTemplate ellipsoid(double a, double b, double c, const std::string &name);
+  bool is_ellipsoid() const { return ellipsoid_; }
+  // semi-axes at unit scale (ellipsoids only; zero for polyhedra)
+  const std::array<double, 3> &semi_axes() const { return axes_; }
+
   // Kernel view into this object's storage: valid while the object lives
   // (a move keeps the storage, a copy has its own).
   ShapeView<double> view() const;
@@ -83,7 +92,8 @@ class PolyShapeTemplate {
 
   double volume() const { return volume_; }    // unit scale, length^3
   double radius() const { return radius_; }    // max |vertex| about the centroid
-  // Principal moments per unit density (length^5), ascending.
+  // Principal moments per unit density (length^5), ascending (ellipsoids:
+  // in the order of the body axes).
   const std::array<double, 3> &moments() const { return moments_; }
 
   // Where the template came from: p_input = centroid + R p_body, with R's
@@ -114,6 +124,8 @@ class PolyShapeTemplate {
   std::vector<int> dual_;    // dual triangulation (polydem_dual_seed.h)
   std::vector<float> verts_f_, planes_f_;
 
+  bool ellipsoid_ = false;
+  std::array<double, 3> axes_ = {0.0, 0.0, 0.0};
   double volume_ = 0.0, radius_ = 0.0;
   std::array<double, 3> moments_ = {0.0, 0.0, 0.0};
   Point centroid_ = {0.0, 0.0, 0.0};

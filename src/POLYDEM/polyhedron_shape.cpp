@@ -11,12 +11,14 @@
 #include "polydem_shape_record.h"
 #include "polydem_shape_template.h"
 
+#include <cmath>
 #include <cstring>
 
 using namespace LAMMPS_NS;
 
 /* ----------------------------------------------------------------------
    polyhedron_shape ID file [hull yes|no]
+   polyhedron_shape ID ellipsoid a b c
    Every rank parses the file itself (templates are small); errors are
    identical on all ranks, so error->all is safe.
 ------------------------------------------------------------------------- */
@@ -30,6 +32,33 @@ void PolyhedronShape::command(int narg, char **arg)
   const std::string id = arg[0];
   if (id.empty() || !utils::is_id(id))
     error->all(FLERR, "polyhedron_shape: shape ID '{}' must be alphanumeric or underscore", id);
+  // polyhedron_shape ID ellipsoid a b c
+  if (strcmp(arg[1], "ellipsoid") == 0) {
+    if (narg != 5)
+      error->all(FLERR, "polyhedron_shape {} ellipsoid: expected 3 semi-axes a b c, got {} "
+                 "values", id, narg - 2);
+    double ax[3];
+    for (int k = 0; k < 3; k++) {
+      ax[k] = utils::numeric(FLERR, arg[2 + k], false, lmp);
+      if (!(ax[k] > 0.0) || !std::isfinite(ax[k]))
+        error->all(FLERR, "polyhedron_shape {} ellipsoid: semi-axis {} must be > 0, got '{}'",
+                   id, "abc"[k], arg[2 + k]);
+    }
+    std::string err, record;
+    auto t = polydem::shape_ellipsoid(ax[0], ax[1], ax[2], id, record, err);
+    if (!t) error->all(FLERR, "polyhedron_shape: {}", err);
+    const auto v = t->view();
+    const int index = avec->add_shape(id, std::move(t), record);
+    if (comm->me == 0)
+      utils::logmesg(lmp,
+                     "polyhedron_shape {} (index {}): ellipsoid, semi-axes {:.10g} {:.10g} "
+                     "{:.10g}, volume {:.10g}, principal moments/density {:.10g} {:.10g} "
+                     "{:.10g}\n",
+                     id, index + 1, ax[0], ax[1], ax[2], v.volume, v.inertia[0], v.inertia[1],
+                     v.inertia[2]);
+    return;
+  }
+
   const std::string file = arg[1];
 
   bool hull = false;

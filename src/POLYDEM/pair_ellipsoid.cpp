@@ -1,0 +1,362 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - pair_style ellipsoid
+------------------------------------------------------------------------- */
+
+#include "pair_ellipsoid.h"
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "math_const.h"
+#include "memory.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include "polydem_ellipsoid_force.h"
+#include "polydem_shape_template.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using MathConst::MY_PI;
+
+/* ---------------------------------------------------------------------- */
+
+PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
+    Pair(lmp), kn(nullptr), restitution(nullptr), overlap_warn(0.05), overlap(polydem::OVERLAP_CENTRE),
+    avec(nullptr)
+{
+  single_enable = 0;
+  restartinfo = 1;
+  no_virial_fdotr_compute = 1;
+  centroidstressflag = CENTROID_NOTAVAIL;
+  finitecutflag = 1;
+  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+  // compute pair ellipsoid: [1] collisions started, [2] pair-steps in contact (this run;
+  // a pair with a ghost atom counts 1/2 on each rank when newton_pair is off)
+  nextra = 2;
+  pvector = new double[nextra];
+  pvector[0] = pvector[1] = 0.0;
+}
+
+PairEllipsoid::~PairEllipsoid()
+{
+  if (copymode) return;
+  delete[] pvector;
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    memory->destroy(kn);
+    memory->destroy(restitution);
+  }
+}
+
+void PairEllipsoid::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+  memory->create(kn, n + 1, n + 1, "pair:kn");
+  memory->create(restitution, n + 1, n + 1, "pair:restitution");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) {
+      setflag[i][j] = 0;
+      kn[i][j] = restitution[i][j] = 0.0;
+    }
+}
+
+/* ----------------------------------------------------------------------
+   pair_style ellipsoid [overlap centre|chord] [overlap/warn f]
+------------------------------------------------------------------------- */
+
+void PairEllipsoid::settings(int narg, char **arg)
+{
+  overlap_warn = 0.05;
+  overlap = polydem::OVERLAP_CENTRE;
+  for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "overlap") == 0) {
+      const std::string v = iarg + 1 < narg ? arg[iarg + 1] : "";
+      if (v == "centre") overlap = polydem::OVERLAP_CENTRE;
+      else if (v == "chord") overlap = polydem::OVERLAP_CHORD;
+      else error->all(FLERR, "pair_style ellipsoid: overlap needs 'centre' or 'chord', got '{}'", v);
+    } else if (strcmp(arg[iarg], "overlap/warn") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "pair_style ellipsoid: overlap/warn needs a value");
+      overlap_warn = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(overlap_warn > 0.0) || !(overlap_warn <= 1.0))
+        error->all(FLERR, "pair_style ellipsoid: overlap/warn must be in (0, 1], got '{}'",
+                   arg[iarg + 1]);
+    } else
+      error->all(FLERR, "pair_style ellipsoid: unknown keyword '{}'", arg[iarg]);
+  }
+}
+
+/* ----------------------------------------------------------------------
+   pair_coeff I J kn e : normal stiffness (force/length) and restitution
+------------------------------------------------------------------------- */
+
+void PairEllipsoid::coeff(int narg, char **arg)
+{
+  if (narg != 4)
+    error->all(FLERR, "pair_coeff ellipsoid: expected 'I J kn e', got {} values", narg);
+  if (!allocated) allocate();
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+  const double k = utils::numeric(FLERR, arg[2], false, lmp);
+  const double e = utils::numeric(FLERR, arg[3], false, lmp);
+  if (!(k > 0.0) || !std::isfinite(k))
+    error->all(FLERR, "pair_coeff ellipsoid: stiffness kn must be > 0, got '{}'", arg[2]);
+  if (!(e > 0.0 && e <= 1.0))
+    error->all(FLERR, "pair_coeff ellipsoid: restitution e must be in (0, 1], got '{}'", arg[3]);
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++)
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      kn[i][j] = k;
+      restitution[i][j] = e;
+      setflag[i][j] = 1;
+      count++;
+    }
+  if (count == 0) error->all(FLERR, "Incorrect args for pair coefficients");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairEllipsoid::init_style()
+{
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
+  if (!avec) error->all(FLERR, "pair_style ellipsoid requires atom_style polyhedron");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "pair_style ellipsoid requires ghost velocities: use 'comm_modify vel yes'");
+  // mixed polyhedron-ellipsoid contacts are not supported
+  int npoly = 0, first = -1;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (!avec->shape(atom->pshape[i]).is_ellipsoid()) {
+      if (first < 0) first = atom->pshape[i];
+      npoly++;
+    }
+  int all;
+  MPI_Allreduce(&npoly, &all, 1, MPI_INT, MPI_SUM, world);
+  if (all) {
+    int f = first, gf;
+    MPI_Allreduce(&f, &gf, 1, MPI_INT, MPI_MAX, world);
+    error->all(FLERR, "pair_style ellipsoid: {} atoms have a polyhedron shape (e.g. '{}'); "
+               "define their shape with 'polyhedron_shape ID ellipsoid a b c' or use "
+               "pair_style polyhedron (mixed contacts are not supported)", all,
+               avec->shape_id(gf));
+  }
+
+  int irequest = neighbor->request(this, instance_me);
+  neighbor->requests[irequest]->size = 1;
+
+  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+  check_timestep();
+}
+
+/* ----------------------------------------------------------------------
+   unlike pairs without explicit coefficients: geometric means.
+   Cutoff: twice the largest bounding radius present (size neighbor list).
+------------------------------------------------------------------------- */
+
+double PairEllipsoid::init_one(int i, int j)
+{
+  if (!setflag[i][j]) {
+    if (!setflag[i][i] || !setflag[j][j])
+      error->all(FLERR, "pair_coeff ellipsoid: no coefficients for type {}",
+                 setflag[i][i] ? j : i);
+    kn[i][j] = sqrt(kn[i][i] * kn[j][j]);
+    restitution[i][j] = sqrt(restitution[i][i] * restitution[j][j]);
+  }
+  kn[j][i] = kn[i][j];
+  restitution[j][i] = restitution[i][j];
+  double rmax = 0.0;
+  for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
+  double all;
+  MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return 2.0 * all;
+}
+
+/* ----------------------------------------------------------------------
+   contact time of the lightest like pair: t_c = pi sqrt(m12 / k_n) (seed §4)
+------------------------------------------------------------------------- */
+
+void PairEllipsoid::check_timestep()
+{
+  double tc = 1e300;
+  for (int i = 0; i < atom->nlocal; i++) {
+    const int t = atom->type[i];
+    tc = MIN(tc, MY_PI * sqrt(0.5 * atom->rmass[i] / (kn[t][t] * force->ftm2v)));
+  }
+  double all;
+  MPI_Allreduce(&tc, &all, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (all >= 1e300 || comm->me != 0) return;
+  utils::logmesg(lmp, "pair ellipsoid: contact time {:.6g}, timestep {:.6g} = t_c/{:.4g}\n", all,
+                 update->dt, all / update->dt);
+  if (update->dt > all / 10.0)
+    error->warning(FLERR, "pair ellipsoid: timestep {:.4g} exceeds t_c/10 = {:.4g}: contacts "
+                   "will be poorly resolved", update->dt, all / 10.0);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairEllipsoid::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **omega = atom->omega, **torque = atom->torque, **quat = atom->quat;
+  double *radius = atom->radius, *rmass = atom->rmass, *pscale = atom->pscale;
+  int *pshape = atom->pshape, *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int inum = list->inum;
+  int *ilist = list->ilist, *numneigh = list->numneigh, **firstneigh = list->firstneigh;
+
+  auto pose = [&](int i) {
+    polydem::EllipsoidPose<double> p;
+    const auto &ax = avec->shape(pshape[i]).semi_axes();
+    p.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
+    p.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
+    p.axes = pscale[i] * polydem::make_vec3(ax[0], ax[1], ax[2]);
+    return p;
+  };
+  auto vec = [](const double *a) { return polydem::make_vec3(a[0], a[1], a[2]); };
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const auto A = pose(i);
+    const int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+    for (int jj = 0; jj < jnum; jj++) {
+      const int j = jlist[jj] & NEIGHMASK;
+      const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+      const double radsum = radius[i] + radius[j];
+      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) continue;
+      const auto B = pose(j);
+      const auto c = polydem::ellipsoid_contact(A, B);
+      if (c.status == polydem::STATUS_SEPARATED) continue;
+      if (c.status != polydem::STATUS_OK) {
+        local_counts[c.status == polydem::STATUS_NO_CONVERGENCE ? CNT_NOCONV : CNT_DEGENERATE] +=
+            1.0;
+        continue;
+      }
+      // a pair with a ghost j is seen on two ranks when newton_pair is off
+      const double w = (newton_pair || j < nlocal) ? 1.0 : 0.5;
+      local_counts[CNT_CONTACTS] += w;
+      const double amin = MIN(MIN(MIN(A.axes.x, A.axes.y), MIN(A.axes.z, B.axes.x)),
+                              MIN(B.axes.y, B.axes.z));
+      const int it = type[i], jt = type[j];
+      const double m12 = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      const double gamma = polydem::ellipsoid_damping(kn[it][jt], m12, restitution[it][jt]);
+      const auto cf = polydem::ellipsoid_force(c, overlap, kn[it][jt], gamma, A.x, B.x, vec(v[i]),
+                                               vec(v[j]), vec(omega[i]), vec(omega[j]));
+      if (cf.delta > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
+      if (cf.delta < cf.rate * update->dt) local_counts[CNT_COLLISIONS] += w;
+      f[i][0] += cf.F_A.x;
+      f[i][1] += cf.F_A.y;
+      f[i][2] += cf.F_A.z;
+      torque[i][0] += cf.tau_A.x;
+      torque[i][1] += cf.tau_A.y;
+      torque[i][2] += cf.tau_A.z;
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= cf.F_A.x;
+        f[j][1] -= cf.F_A.y;
+        f[j][2] -= cf.F_A.z;
+        torque[j][0] += cf.tau_B.x;
+        torque[j][1] += cf.tau_B.y;
+        torque[j][2] += cf.tau_B.z;
+      }
+      if (evflag)
+        ev_tally_xyz(i, j, nlocal, newton_pair, cf.energy, 0.0, cf.F_A.x, cf.F_A.y, cf.F_A.z,
+                     delx, dely, delz);
+    }
+  }
+  pvector[0] = local_counts[CNT_COLLISIONS];
+  pvector[1] = local_counts[CNT_CONTACTS];
+  if (neighbor->ago == 0) report_counters();
+}
+
+/* ----------------------------------------------------------------------
+   kernel failures and large overlaps: counted, reported as warnings
+------------------------------------------------------------------------- */
+
+void PairEllipsoid::report_counters()
+{
+  MPI_Allreduce(local_counts, counters, NCOUNT, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return;
+  const char *what[NCOUNT] = {"degenerate contacts (coincident centres or NaN; skipped)",
+                              "contact searches without convergence (skipped)",
+                              "overlaps beyond overlap/warn of the smallest semi-axis", nullptr,
+                              nullptr};
+  for (int k = 0; k < CNT_CONTACTS; k++)
+    if (counters[k] > reported[k]) {
+      error->warning(FLERR, "pair ellipsoid: {:.0f} {} by step {}", counters[k], what[k],
+                     update->ntimestep);
+      reported[k] = counters[k];
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairEllipsoid::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) {
+        fwrite(&kn[i][j], sizeof(double), 1, fp);
+        fwrite(&restitution[i][j], sizeof(double), 1, fp);
+      }
+    }
+}
+
+void PairEllipsoid::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  const int me = comm->me;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        if (me == 0) {
+          utils::sfread(FLERR, &kn[i][j], sizeof(double), 1, fp, nullptr, error);
+          utils::sfread(FLERR, &restitution[i][j], sizeof(double), 1, fp, nullptr, error);
+        }
+        MPI_Bcast(&kn[i][j], 1, MPI_DOUBLE, 0, world);
+        MPI_Bcast(&restitution[i][j], 1, MPI_DOUBLE, 0, world);
+      }
+    }
+}
+
+void PairEllipsoid::write_restart_settings(FILE *fp)
+{
+  fwrite(&overlap_warn, sizeof(double), 1, fp);
+  fwrite(&overlap, sizeof(int), 1, fp);
+}
+
+void PairEllipsoid::read_restart_settings(FILE *fp)
+{
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &overlap, sizeof(int), 1, fp, nullptr, error);
+  }
+  MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&overlap, 1, MPI_INT, 0, world);
+}
+
+void *PairEllipsoid::extract(const char *str, int &dim)
+{
+  dim = 2;
+  if (strcmp(str, "kn") == 0) return (void *) kn;
+  if (strcmp(str, "restitution") == 0) return (void *) restitution;
+  dim = 1;
+  if (strcmp(str, "counters") == 0) return (void *) counters;
+  return nullptr;
+}

@@ -1,0 +1,59 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - pair_style ellipsoid: exact algebraic contact between rigid
+   ellipsoids of atom_style polyhedron (ellipsoid seed §2-4): characteristic
+   quartic classification, shrink-to-touch contact point and normal, overlap
+   chord, linear spring + restitution damping, frictionless. Physics in
+   polydem_ellipsoid.h and polydem_ellipsoid_force.h.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(ellipsoid,PairEllipsoid);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_ELLIPSOID_H
+#define LMP_PAIR_ELLIPSOID_H
+
+#include "pair.h"
+
+namespace LAMMPS_NS {
+
+class PairEllipsoid : public Pair {
+ public:
+  PairEllipsoid(class LAMMPS *);
+  ~PairEllipsoid() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void write_restart_settings(FILE *) override;
+  void read_restart_settings(FILE *) override;
+  void *extract(const char *, int &) override;
+
+  // counters since the start of the run (global after report_counters)
+  // CNT_COLLISIONS: contacts in their first step (delta < (d delta/dt) dt), i.e.
+  // collisions started; CNT_CONTACTS: pair-steps in contact
+  enum { CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, CNT_COLLISIONS, NCOUNT };
+  double counters[NCOUNT];
+
+ protected:
+  double **kn, **restitution;    // per type pair
+  double overlap_warn;           // warn for delta > overlap_warn * smallest semi-axis
+  int overlap;                   // polydem::OVERLAP_CENTRE or OVERLAP_CHORD
+  class AtomVecPolyhedron *avec;
+  double local_counts[NCOUNT];
+  double reported[NCOUNT];
+
+  void allocate();
+  void report_counters();
+  void check_timestep();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

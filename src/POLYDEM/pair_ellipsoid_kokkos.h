@@ -1,0 +1,50 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - pair_style ellipsoid/kk: pair ellipsoid on the device. One
+   thread per entry of LAMMPS's Kokkos half "size" neighbor list runs the
+   same kernels as the plain style (polydem_ellipsoid.h,
+   polydem_ellipsoid_force.h) over its neighbors (bounded by the list);
+   forces and torques are accumulated with atomics. No contact history.
+------------------------------------------------------------------------- */
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(ellipsoid/kk,PairEllipsoidKokkos<LMPDeviceType>);
+PairStyle(ellipsoid/kk/device,PairEllipsoidKokkos<LMPDeviceType>);
+PairStyle(ellipsoid/kk/host,PairEllipsoidKokkos<LMPHostType>);
+// clang-format on
+#else
+
+#ifndef LMP_PAIR_ELLIPSOID_KOKKOS_H
+#define LMP_PAIR_ELLIPSOID_KOKKOS_H
+
+#include "kokkos_type.h"
+#include "pair_ellipsoid.h"
+
+namespace LAMMPS_NS {
+
+template <class DeviceType> class PairEllipsoidKokkos : public PairEllipsoid {
+ public:
+  typedef DeviceType device_type;
+  typedef ArrayTypes<DeviceType> AT;
+
+  PairEllipsoidKokkos(class LAMMPS *);
+  ~PairEllipsoidKokkos() override;
+  void compute(int, int) override;
+  void init_style() override;
+
+ protected:
+  class AtomVecPolyhedronKokkos *avecKK;
+  int shape_version;
+  Kokkos::View<double *[3], DeviceType> d_axes;    // semi-axes per template (unit scale)
+  Kokkos::View<double **, DeviceType> d_kn, d_en;   // per type pair
+  int params_dirty;
+  DAT::tdual_efloat_1d k_eatom;
+  DAT::tdual_virial_array k_vatom;
+
+  void update_device_data();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,101 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - normal contact force between two ellipsoids (ellipsoid seed
+   §3.2 Eqs. 23-24, §4): linear spring on an overlap delta plus viscous
+   damping from the restitution coefficient and the reduced mass.
+   Frictionless (the seed's model). Host/device.
+
+   Two overlap measures (pair_style ellipsoid keyword 'overlap'):
+   - chord:  the seed's force F_A = -(k_n delta + gamma_n v_n) n at C with
+             delta the normal chord through C (polydem_ellipsoid.h). Not the
+             gradient of 1/2 k_n delta^2: an elastic gas drifts in energy
+             (about 1e-3 of the collision energy per collision, measured).
+   - centre: delta = r (1/W0 - 1), r = |x_B - x_A|: how far the centres must
+             separate along their line to touch (r/W0 is the contact distance,
+             W0 being proportional to r at fixed direction and orientations).
+             Equal to the chord for spheres. The force is the exact gradient of
+             1/2 k_n delta^2 (W0^2 differentiated by the envelope theorem), so
+             elastic contacts conserve energy; it acts at C along n plus a
+             central part of relative size (1 - W0). Damping is the Rayleigh
+             force -gamma_n (d delta/dt) grad delta.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_ELLIPSOID_FORCE_H
+#define POLYDEM_ELLIPSOID_FORCE_H
+
+#include "polydem_ellipsoid.h"
+
+namespace polydem {
+
+enum EllipsoidOverlap : int { OVERLAP_CENTRE = 0, OVERLAP_CHORD = 1 };
+
+// gamma_n = sqrt(4 k_n m12 / (1 + (pi / ln e_n)^2)) (seed §4); 0 for e_n = 1.
+template <typename T> POLYDEM_FN T ellipsoid_damping(T kn, T m12, T en)
+{
+  if (!(en < T(1))) return T(0);
+  const T r = T(3.14159265358979323846) / log(en);
+  return sqrt(T(4) * kn * m12 / (T(1) + r * r));
+}
+
+template <typename T> struct EllipsoidForce {
+  Vec3<T> F_A;      // force on A (B gets -F_A)
+  Vec3<T> tau_A;    // torque on A about its centre
+  Vec3<T> tau_B;    // torque on B about its centre
+  T energy;         // elastic energy 1/2 k_n delta^2
+  T delta;          // overlap used
+  T rate;           // d delta / dt (chord: approach speed along n)
+};
+
+// Gradient of delta = r (1/W0 - 1) with respect to x_B: J = (1/W0 - 1) u + P,
+// with P = -(r / (2 W0^3)) gB acting at C (rotation of B: (C - x_B) x P).
+template <typename T>
+POLYDEM_FN void centre_overlap(const EllipsoidContact<T> &c, const Vec3<T> &xA,
+                               const Vec3<T> &xB, T &delta, Vec3<T> &J, Vec3<T> &P)
+{
+  const Vec3<T> d = xB - xA;
+  const T r = norm(d);
+  const T iw = T(1) / c.W0;
+  delta = r * (iw - T(1));
+  P = (-T(0.5) * r * iw * iw * iw) * c.gB;
+  J = ((iw - T(1)) / r) * d + P;
+}
+
+// F_A = -k_n delta n - gamma_n v_n n (Eq. 23) or its conservative form (see
+// header); torques l x F with l = C - x (Eq. 24).
+template <typename T>
+POLYDEM_FN EllipsoidForce<T> ellipsoid_force(const EllipsoidContact<T> &c, int overlap, T kn,
+                                            T gamma, const Vec3<T> &xA, const Vec3<T> &xB,
+                                            const Vec3<T> &vA, const Vec3<T> &vB,
+                                            const Vec3<T> &wA, const Vec3<T> &wB)
+{
+  const Vec3<T> lA = c.c - xA, lB = c.c - xB;
+  // velocity of B's material point at C relative to A's
+  const Vec3<T> vrel = (vB + cross(wB, lB)) - (vA + cross(wA, lA));
+  EllipsoidForce<T> f;
+  if (overlap == OVERLAP_CHORD) {
+    const T vn = -dot(vrel, c.n);    // approach speed
+    f.delta = c.delta;
+    f.rate = vn;
+    f.F_A = (-(kn * c.delta + gamma * vn)) * c.n;
+    f.tau_A = cross(lA, f.F_A);
+    f.tau_B = cross(lB, -f.F_A);
+  } else {
+    T delta;
+    Vec3<T> J, P;
+    centre_overlap(c, xA, xB, delta, J, P);
+    // d delta/dt = J.(v_B - v_A) + P.(omega terms at C)
+    const Vec3<T> d = xB - xA;
+    const T rate = ((T(1) / c.W0 - T(1)) / norm(d)) * dot(d, vB - vA) + dot(P, vrel);
+    const T s = -(kn * delta + gamma * rate);    // force on B = s J
+    f.delta = delta;
+    f.rate = rate;
+    f.F_A = (-s) * J;
+    f.tau_B = cross(lB, s * P);
+    f.tau_A = cross(lA, (-s) * P);
+  }
+  f.energy = T(0.5) * kn * f.delta * f.delta;
+  return f;
+}
+
+}    // namespace polydem
+
+#endif
