@@ -234,6 +234,13 @@ void FixWallMesh::init()
 {
   avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "fix wall/mesh requires atom_style polyhedron");
+  int nell = 0;    // the clip kernel needs faces: ellipsoid templates have none
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) nell += avec->shape(atom->pshape[i]).is_ellipsoid();
+  MPI_Allreduce(MPI_IN_PLACE, &nell, 1, MPI_INT, MPI_SUM, world);
+  if (nell)
+    error->all(FLERR, "fix wall/mesh: {} atoms of its group have an ellipsoid shape; mesh walls "
+               "support polyhedra only", nell);
   int dim = 0;
   double *E = nullptr, *nu = nullptr, **e = nullptr, **mu = nullptr;
   if (force->pair) {
