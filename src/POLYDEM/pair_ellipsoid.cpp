@@ -29,7 +29,7 @@ using MathConst::MY_PI;
 
 PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
     Pair(lmp), kn(nullptr), restitution(nullptr), overlap_warn(0.05), overlap(polydem::OVERLAP_CENTRE),
-    avec(nullptr)
+    damping_mass(polydem::DAMPING_REDUCED), avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -72,19 +72,25 @@ void PairEllipsoid::allocate()
 }
 
 /* ----------------------------------------------------------------------
-   pair_style ellipsoid [overlap centre|chord] [overlap/warn f]
+   pair_style ellipsoid [overlap centre|chord] [damping reduced|contact] [overlap/warn f]
 ------------------------------------------------------------------------- */
 
 void PairEllipsoid::settings(int narg, char **arg)
 {
   overlap_warn = 0.05;
   overlap = polydem::OVERLAP_CENTRE;
+  damping_mass = polydem::DAMPING_REDUCED;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (strcmp(arg[iarg], "overlap") == 0) {
       const std::string v = iarg + 1 < narg ? arg[iarg + 1] : "";
       if (v == "centre") overlap = polydem::OVERLAP_CENTRE;
       else if (v == "chord") overlap = polydem::OVERLAP_CHORD;
       else error->all(FLERR, "pair_style ellipsoid: overlap needs 'centre' or 'chord', got '{}'", v);
+    } else if (strcmp(arg[iarg], "damping") == 0) {
+      const std::string v = iarg + 1 < narg ? arg[iarg + 1] : "";
+      if (v == "reduced") damping_mass = polydem::DAMPING_REDUCED;
+      else if (v == "contact") damping_mass = polydem::DAMPING_CONTACT;
+      else error->all(FLERR, "pair_style ellipsoid: damping needs 'reduced' or 'contact', got '{}'", v);
     } else if (strcmp(arg[iarg], "overlap/warn") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "pair_style ellipsoid: overlap/warn needs a value");
       overlap_warn = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -250,8 +256,10 @@ void PairEllipsoid::compute(int eflag, int vflag)
       const double amin = MIN(MIN(MIN(A.axes.x, A.axes.y), MIN(A.axes.z, B.axes.x)),
                               MIN(B.axes.y, B.axes.z));
       const int it = type[i], jt = type[j];
-      const double m12 = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      const double gamma = polydem::ellipsoid_damping(kn[it][jt], m12, restitution[it][jt]);
+      const double meff = damping_mass == polydem::DAMPING_CONTACT
+          ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass[i], rmass[j])
+          : rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      const double gamma = polydem::ellipsoid_damping(kn[it][jt], meff, restitution[it][jt]);
       const auto cf = polydem::ellipsoid_force(c, overlap, kn[it][jt], gamma, A.x, B.x, vec(v[i]),
                                                vec(v[j]), vec(omega[i]), vec(omega[j]));
       if (cf.delta > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
@@ -339,6 +347,7 @@ void PairEllipsoid::write_restart_settings(FILE *fp)
 {
   fwrite(&overlap_warn, sizeof(double), 1, fp);
   fwrite(&overlap, sizeof(int), 1, fp);
+  fwrite(&damping_mass, sizeof(int), 1, fp);
 }
 
 void PairEllipsoid::read_restart_settings(FILE *fp)
@@ -346,9 +355,11 @@ void PairEllipsoid::read_restart_settings(FILE *fp)
   if (comm->me == 0) {
     utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &overlap, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &damping_mass, sizeof(int), 1, fp, nullptr, error);
   }
   MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&overlap, 1, MPI_INT, 0, world);
+  MPI_Bcast(&damping_mass, 1, MPI_INT, 0, world);
 }
 
 void *PairEllipsoid::extract(const char *str, int &dim)

@@ -71,7 +71,7 @@ template <class DeviceType> struct EllContactFunctor {
   Kokkos::View<double **, DeviceType> kn, en;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
-  int nlocal, newton_pair, overlap;
+  int nlocal, newton_pair, overlap, damping_mass;
   int eflag_global, eflag_atom, vflag_global, vflag_atom;
   double dt, overlap_warn;
 
@@ -111,8 +111,10 @@ template <class DeviceType> struct EllContactFunctor {
       for (int k = 0; k < 5; k++)
         if (ax[k] < amin) amin = ax[k];
       const int it = type(i), jt = type(j);
-      const double m12 = rmass(i) * rmass(j) / (rmass(i) + rmass(j));
-      const double gamma = polydem::ellipsoid_damping(kn(it, jt), m12, en(it, jt));
+      const double meff = damping_mass == polydem::DAMPING_CONTACT
+          ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass(i), rmass(j))
+          : rmass(i) * rmass(j) / (rmass(i) + rmass(j));
+      const double gamma = polydem::ellipsoid_damping(kn(it, jt), meff, en(it, jt));
       const auto cf = polydem::ellipsoid_force(
           c, overlap, kn(it, jt), gamma, A.x, B.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
           polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
@@ -293,6 +295,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   fn.nlocal = atom->nlocal;
   fn.newton_pair = force->newton_pair;
   fn.overlap = overlap;
+  fn.damping_mass = damping_mass;
   fn.eflag_global = eflag_global;
   fn.eflag_atom = eflag_atom;
   fn.vflag_global = vflag_global;

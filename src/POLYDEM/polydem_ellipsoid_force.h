@@ -27,6 +27,8 @@
 namespace polydem {
 
 enum EllipsoidOverlap : int { OVERLAP_CENTRE = 0, OVERLAP_CHORD = 1 };
+// pair_style ellipsoid keyword 'damping': the mass in gamma_n
+enum EllipsoidDampingMass : int { DAMPING_REDUCED = 0, DAMPING_CONTACT = 1 };
 
 // gamma_n = sqrt(4 k_n m12 / (1 + (pi / ln e_n)^2)) (seed §4); 0 for e_n = 1.
 template <typename T> POLYDEM_FN T ellipsoid_damping(T kn, T m12, T en)
@@ -57,6 +59,35 @@ POLYDEM_FN void centre_overlap(const EllipsoidContact<T> &c, const Vec3<T> &xA,
   delta = r * (iw - T(1));
   P = (-T(0.5) * r * iw * iw * iw) * c.gB;
   J = ((iw - T(1)) / r) * d + P;
+}
+
+// Effective mass of the contact, m_eff = 1 / (grad(delta)^T M^-1 grad(delta)),
+// M the mass matrix of both bodies (inertia of a solid ellipsoid of mass m:
+// I_x = m (b^2 + c^2) / 5 and cyclic). The contact is a 1-D oscillator
+// m_eff delta'' = -(k_n delta + gamma_n delta'), so gamma_n from m_eff gives every
+// collision the restitution e_n; gamma_n from m12 over-damps eccentric impacts
+// (m_eff < m12 when the force has a lever arm). Equals m12 for spheres.
+template <typename T>
+POLYDEM_FN T ellipsoid_contact_mass(const EllipsoidContact<T> &c, int overlap,
+                                    const EllipsoidPose<T> &A, const EllipsoidPose<T> &B,
+                                    T mA, T mB)
+{
+  Vec3<T> J = c.n, P = c.n;    // translational and lever (force at C) parts
+  if (overlap != OVERLAP_CHORD) {
+    T delta;
+    centre_overlap(c, A.x, B.x, delta, J, P);
+  }
+  T im = norm2(J) * (T(1) / mA + T(1) / mB);
+  const EllipsoidPose<T> *body[2] = {&A, &B};
+  const T mass[2] = {mA, mB};
+  for (int k = 0; k < 2; ++k) {
+    const EllipsoidPose<T> &e = *body[k];
+    const Vec3<T> g = qrotate_inv(e.q, cross(c.c - e.x, P));    // body frame
+    const T a2 = e.axes.x * e.axes.x, b2 = e.axes.y * e.axes.y, c2 = e.axes.z * e.axes.z;
+    const T f = T(5) / mass[k];
+    im += f * (g.x * g.x / (b2 + c2) + g.y * g.y / (a2 + c2) + g.z * g.z / (a2 + b2));
+  }
+  return T(1) / im;
 }
 
 // F_A = -k_n delta n - gamma_n v_n n (Eq. 23) or its conservative form (see

@@ -133,7 +133,8 @@ void compare(const std::vector<double> &a, const std::vector<double> &b, Lmp &la
 // /kk (Serial) equals plain to 1e-12 over 2200 steps (both on the same ranks)
 TEST(EllipsoidKokkos, MatchesPlain)
 {
-  for (std::string ov : {"centre", "chord"}) {
+  // overlap (and damping) settings of pair_style ellipsoid
+  for (std::string ov : {"centre", "chord", "centre damping contact", "chord damping contact"}) {
     Lmp plain, kk(KK);
     plain.cmds(setup(ov));
     kk.cmds(setup(ov));
@@ -156,8 +157,8 @@ TEST(EllipsoidKokkos, RanksAgree)
   for (bool usekk : {false, true}) {
     Lmp multi(usekk ? KK : std::vector<std::string>{}, MPI_COMM_WORLD);
     Lmp single(usekk ? KK : std::vector<std::string>{}, MPI_COMM_SELF);
-    multi.cmds(setup("centre"));
-    single.cmds(setup("centre"));
+    multi.cmds(setup("centre damping contact"));
+    single.cmds(setup("centre damping contact"));
     multi.cmd("run 2100");
     single.cmd("run 2100");
     const auto a = gather(multi, MPI_COMM_WORLD), b = gather(single, MPI_COMM_SELF);
