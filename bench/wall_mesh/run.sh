@@ -1,23 +1,33 @@
 #!/bin/bash
 # fix wall/mesh scale benchmark (issue 5 acceptance 4): the same 0.3 m x 0.3 m
-# floor as 10,082 and as 150,152 triangles, 225 dodecahedra resting and
-# sliding on it. Prints wall and CPU time per particle-step of the second run
-# (1000 steps, all in contact), where the fix is > 99 % of the time.
+# floor as 10,082 and as 150,152 triangles (flat: make_floor.py; gently curved,
+# radius 5 m, no two facets coplanar: make_bowl.py), 225 dodecahedra resting
+# and sliding on it, with coplanar merging (default) and without (merge no).
+# Prints wall and CPU time per particle-step of the second run (1000 steps,
+# all in contact), where the fix is > 99 % of the time.
 #   bash run.sh [path/to/lmp] [repeats]
 set -euo pipefail
-lmp=${1:-../../build/lmp}
+lmp=$(realpath "${1:-../../build/lmp}")
 reps=${2:-2}
 cd "$(dirname "$0")"
 [ -f floor10k.stl ] || python3 make_floor.py floor10k.stl 71
 [ -f floor150k.stl ] || python3 make_floor.py floor150k.stl 274
+[ -f bowl10k.stl ] || python3 make_bowl.py bowl10k.stl 71 0.3 5.0
+[ -f bowl150k.stl ] || python3 make_bowl.py bowl150k.stl 274 0.3 5.0
 for r in $(seq "$reps"); do
-  for m in floor10k floor150k; do
-    "$lmp" -in in.floor -var mesh $m.stl -var pot ../../potentials -log log.$m -screen none
-    awk -v m=$m '/^Loop time/ {loop = $4; steps = $9; atoms = $12}
+  for c in "floor10k 1e-9" "floor150k 1e-9" "floor10k no" "floor150k no" "bowl10k 1e-9" "bowl150k 1e-9"; do
+    set -- $c
+    m=$1; merge=$2
+    lift=0.0095
+    [[ $m == bowl* ]] && lift=0.0140    # rim of the bowl 4.5 mm above its centre
+    "$lmp" -in in.floor -var mesh $m.stl -var merge $merge -var lift $lift -var pot ../../potentials \
+      -log log.$m.$merge -screen none
+    awk -v m="$m merge $merge" '/^Loop time/ {loop = $4; steps = $9; atoms = $12}
                  /CPU use/ {cpu = $1 + 0}
-                 /^Modify/ {mod = $6}
-                 /^fix wall\/mesh/ {tri = $6}
-                 END {printf "%-10s %7d triangles: %.2f us/particle-step wall, %.2f us CPU (%.0f%% CPU), fix %.1f%%\n",
-                      m, tri, 1e6 * loop / (steps * atoms), 1e6 * loop * cpu / 100 / (steps * atoms), cpu, mod}' log.$m
+                 /^Modify/ {mod = $NF}
+                 /triangles read/ {tri = $7}
+                 /coplanar regions/ {after = $10}
+                 END {printf "%-22s %7d triangles (%d used): %.2f us/particle-step wall, %.2f us CPU (%.0f%% CPU), fix %.1f%%\n",
+                      m, tri, after ? after : tri, 1e6 * loop / (steps * atoms), 1e6 * loop * cpu / 100 / (steps * atoms), cpu, mod}' log.$m.$merge
   done
 done

@@ -19,7 +19,9 @@
 #include "polydem_shape_template.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -32,13 +34,13 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 ------------------------------------------------------------------------- */
 
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), binsize(0.0), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0), wall_mu(-1.0),
-    core(1.0e-4), patch_angle(20.0), movestyle(MOVE_NONE), omega(0.0), elapsed(0.0),
+    Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0), wall_mu(-1.0),
+    core(1.0e-4), patch_angle(20.0), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0),
     hist(nullptr), reduced(0), avec(nullptr)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
-  for (int k = 0; k < 3; k++) vel[k] = origin[k] = axis[k] = 0.0;
+  for (int k = 0; k < 3; k++) vel[k] = origin[k] = axis[k] = amp[k] = 0.0;
 
   scalar_flag = 1;
   extscalar = 1;
@@ -127,6 +129,16 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       if (!(binsize > 0.0) || !std::isfinite(binsize))
         error->all(FLERR, "fix wall/mesh: bin must be > 0, got '{}'", arg[iarg + 1]);
       iarg += 2;
+    } else if (kw == "merge") {
+      need(iarg, 1, "no or a tolerance");
+      if (strcmp(arg[iarg + 1], "no") == 0) merge_tol = -1.0;
+      else {
+        merge_tol = num(iarg + 1);
+        if (!(merge_tol >= 0.0 && merge_tol < 1e-3))
+          error->all(FLERR, "fix wall/mesh: merge must be 'no' or a tolerance in [0, 1e-3), "
+                     "got '{}'", arg[iarg + 1]);
+      }
+      iarg += 2;
     } else if (kw == "move") {
       need(iarg, 1, "none, translate or rotate");
       const std::string m = arg[iarg + 1];
@@ -138,6 +150,18 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
         movestyle = MOVE_TRANSLATE;
         for (int k = 0; k < 3; k++) vel[k] = num(iarg + 2 + k);
         iarg += 5;
+      } else if (m == "wiggle") {
+        need(iarg + 1, 4, "Ax Ay Az period");
+        movestyle = MOVE_WIGGLE;
+        for (int k = 0; k < 3; k++) amp[k] = num(iarg + 2 + k);
+        period = num(iarg + 5);
+        if (!(period > 0.0) || !std::isfinite(period))
+          error->all(FLERR, "fix wall/mesh: move wiggle period must be > 0, got '{}'", arg[iarg + 5]);
+        for (int k = 0; k < 3; k++)
+          if (!std::isfinite(amp[k]))
+            error->all(FLERR, "fix wall/mesh: move wiggle amplitude must be finite, got '{}'",
+                       arg[iarg + 2 + k]);
+        iarg += 6;
       } else if (m == "rotate") {
         need(iarg + 1, 8, "ox oy oz ax ay az omega|rpm value");
         movestyle = MOVE_ROTATE;
@@ -154,7 +178,8 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
         for (int k = 0; k < 3; k++) axis[k] /= l;
         iarg += 10;
       } else
-        error->all(FLERR, "fix wall/mesh: unknown move style '{}' (none, translate, rotate)", m);
+        error->all(FLERR, "fix wall/mesh: unknown move style '{}' (none, translate, rotate, wiggle)",
+                   m);
     } else
       error->all(FLERR, "fix wall/mesh: unknown keyword '{}'", kw);
   }
@@ -201,6 +226,21 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     if (mesh.nduplicate > 0)
       error->warning(FLERR, "fix wall/mesh: {}: {} duplicate triangles dropped", file,
                      mesh.nduplicate);
+  }
+  // coplanar merging (same on every rank: deterministic)
+  if (merge_tol >= 0.0) {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (size_t k = 0; k < mesh.tri.size(); k++) {
+      lo[k % 3] = MIN(lo[k % 3], mesh.tri[k]);
+      hi[k % 3] = MAX(hi[k % 3], mesh.tri[k]);
+    }
+    const double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                             (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    merged = polydem::merge_coplanar(mesh.tri, merge_tol * diag);
+    if (comm->me == 0 && merged.after != merged.before)
+      utils::logmesg(lmp, "fix wall/mesh {}: {} coplanar regions re-triangulated, {} -> {} "
+                     "triangles ({} regions with holes kept)\n", id, merged.merged_regions,
+                     merged.before, merged.after, merged.kept_holes + merged.kept_failed);
   }
 
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
@@ -272,7 +312,7 @@ void FixWallMesh::init()
   build_grid();
 }
 
-// bin edge: user value, else max(r_max / 2, twice the mean triangle edge)
+// bin edge: user value, else max(r_max / 2, twice the median triangle edge)
 // (r_max: largest bounding radius of the group): a query then scans little
 // beyond the sphere's box, and a bin holds a few triangles
 void FixWallMesh::build_grid()
@@ -283,15 +323,17 @@ void FixWallMesh::build_grid()
     for (int i = 0; i < atom->nlocal; i++)
       if (atom->mask[i] & groupbit) rmax = MAX(rmax, atom->radius[i]);
     MPI_Allreduce(MPI_IN_PLACE, &rmax, 1, MPI_DOUBLE, MPI_MAX, world);
-    double edge = 0.0;
+    // median edge: robust when merged regions make a few very large triangles
+    std::vector<double> edges;
     const int nt = mesh.ntri();
     for (int t = 0; t < nt; t++)
       for (int e = 0; e < 3; e++) {
         const double *p = &mesh.tri[9 * t + 3 * e], *q = &mesh.tri[9 * t + 3 * ((e + 1) % 3)];
-        edge += sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                     (p[2] - q[2]) * (p[2] - q[2]));
+        edges.push_back(sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                             (p[2] - q[2]) * (p[2] - q[2])));
       }
-    edge /= 3.0 * nt;
+    std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
+    const double edge = edges[edges.size() / 2];
     h = MAX(0.5 * rmax, 2.0 * edge);
   }
   if (!grid.start.empty() && grid.h == h) return;
@@ -328,6 +370,11 @@ polydem::MeshPose<double> FixWallMesh::mesh_pose() const
   if (movestyle == MOVE_TRANSLATE) {
     mp.vw = make_vec3(vel[0], vel[1], vel[2]);
     mp.d = elapsed * mp.vw;
+  } else if (movestyle == MOVE_WIGGLE) {
+    // d = A sin(2 pi t / T), v = A (2 pi / T) cos(2 pi t / T)
+    const double w = 2.0 * MY_PI / period;
+    mp.d = sin(w * elapsed) * make_vec3(amp[0], amp[1], amp[2]);
+    mp.vw = (w * cos(w * elapsed)) * make_vec3(amp[0], amp[1], amp[2]);
   } else if (movestyle == MOVE_ROTATE) {
     const double ph = 0.5 * omega * elapsed;
     mp.q = polydem::make_quat(cos(ph), sin(ph) * axis[0], sin(ph) * axis[1], sin(ph) * axis[2]);

@@ -51,7 +51,7 @@ class FixWallMesh : public Fix {
   void restart(char *) override;
   double memory_usage() override;
 
-  enum { MOVE_NONE, MOVE_TRANSLATE, MOVE_ROTATE };
+  enum { MOVE_NONE, MOVE_TRANSLATE, MOVE_ROTATE, MOVE_WIGGLE };
   // vector: force on the mesh (3), torque on the mesh about its axis point
   // (3), contacts, triangles touched
   enum { NVEC = 8 };
@@ -61,10 +61,13 @@ class FixWallMesh : public Fix {
   polydem::StlMesh mesh;
   polydem::MeshGrid grid;
   double binsize;    // user bin edge (0: automatic)
+  double merge_tol;  // coplanar merging tolerance / bounding-box diagonal (< 0: off)
+  polydem::MergeStats merged;
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
   double core, patch_angle, cosmax;
   int movestyle;
   double vel[3], origin[3], axis[3], omega;
+  double amp[3], period;    // move wiggle
   double elapsed;    // time since the fix was defined (mesh motion)
 
   double **hist;     // per atom: WALL_HIST_SIZE values

@@ -63,8 +63,36 @@ POLYDEM_FN void mesh_tri_bins(const MeshGridView<T> &g, int t, int *blo, int *bh
   }
 }
 
-// Does the sphere (c, r) reach triangle t's plane and its bounding box?
-// Conservative cheap reject before the clipping kernel.
+// Squared distance from p to the triangle (a, b, c): closest point by
+// Voronoi regions of the vertices, edges and face (Ericson, Real-Time
+// Collision Detection, 5.1.5; written here from the geometry).
+template <typename T>
+POLYDEM_FN T point_triangle_dist2(const Vec3<T> &p, const Vec3<T> &a, const Vec3<T> &b,
+                                  const Vec3<T> &c)
+{
+  const Vec3<T> ab = b - a, ac = c - a, ap = p - a;
+  const T d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= T(0) && d2 <= T(0)) return norm2(ap);
+  const Vec3<T> bp = p - b;
+  const T d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= T(0) && d4 <= d3) return norm2(bp);
+  const T vc = d1 * d4 - d3 * d2;
+  if (vc <= T(0) && d1 >= T(0) && d3 <= T(0)) return norm2(ap - (d1 / (d1 - d3)) * ab);
+  const Vec3<T> cp = p - c;
+  const T d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= T(0) && d5 <= d6) return norm2(cp);
+  const T vb = d5 * d2 - d1 * d6;
+  if (vb <= T(0) && d2 >= T(0) && d6 <= T(0)) return norm2(ap - (d2 / (d2 - d6)) * ac);
+  const T va = d3 * d6 - d5 * d4;
+  if (va <= T(0) && (d4 - d3) >= T(0) && (d5 - d6) >= T(0))
+    return norm2(bp - ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b));
+  const T den = T(1) / (va + vb + vc);
+  return norm2(ap - (vb * den) * ab - (vc * den) * ac);
+}
+
+// Does the sphere (c, r) reach triangle t? Plane and box first (cheap),
+// then the exact distance to the triangle, so that on a fine or curved mesh
+// only the triangles under the sphere's cap reach the clipping kernel.
 template <typename T>
 POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c, T r)
 {
@@ -73,7 +101,9 @@ POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c,
   if (!(d < r) || !(d > -r)) return false;
   for (int k = 0; k < 3; ++k)
     if (c[k] + r < b[k] || c[k] - r > b[3 + k]) return false;
-  return true;
+  const T *q = g.tri + 9 * t;
+  return point_triangle_dist2(c, make_vec3(q[0], q[1], q[2]), make_vec3(q[3], q[4], q[5]),
+                              make_vec3(q[6], q[7], q[8])) < r * r;
 }
 
 // Calls f(t) once for every triangle t near the sphere (c, r).

@@ -193,3 +193,146 @@ TEST(MeshGrid, BinCountCapped)
   EXPECT_LE((long) g.n[0] * g.n[1] * g.n[2], 1000);
   EXPECT_EQ(g.start.back(), (int) g.items.size());
 }
+
+// Coplanar merging (fix wall/mesh keyword merge)
+namespace {
+double total_area(const Tris &t, double *nz_min = nullptr)
+{
+  double a = 0.0, nz = 1.0;
+  for (size_t k = 0; k < t.size(); k += 9) {
+    const double e1[3] = {t[k + 3] - t[k], t[k + 4] - t[k + 1], t[k + 5] - t[k + 2]};
+    const double e2[3] = {t[k + 6] - t[k], t[k + 7] - t[k + 1], t[k + 8] - t[k + 2]};
+    const double c[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                         e1[0] * e2[1] - e1[1] * e2[0]};
+    const double l = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    a += 0.5 * l;
+    nz = std::fmin(nz, c[2] / l);
+  }
+  if (nz_min) *nz_min = nz;
+  return a;
+}
+}    // namespace
+
+// an irregular flat floor (jittered interior vertices, alternating
+// diagonals) becomes the two triangles of its square; area and facing kept
+TEST(MergeCoplanar, FlatFloorBecomesTwoTriangles)
+{
+  Tris t = flat(0, 3, -1, 1, 0, 12, 8, true, 0.35, 11);
+  const double a0 = total_area(t);
+  const MergeStats st = merge_coplanar(t, 1e-12);
+  double nz = 0.0;
+  EXPECT_EQ(st.before, 192);
+  EXPECT_EQ(st.after, 2);
+  EXPECT_EQ((int) t.size(), 18);
+  EXPECT_NEAR(total_area(t, &nz), a0, 1e-12 * a0);
+  EXPECT_EQ(nz, 1.0);
+}
+
+// a closed box with subdivided faces: each face merges on its own (12
+// triangles), the sharp edges are kept; a cylinder mantle (24 sectors, 10
+// rings) merges along the axis only (one quad per sector)
+TEST(MergeCoplanar, BoxAndCylinder)
+{
+  Tris box;
+  // six faces of [0,1]^3 from a 5 x 4 flat grid: (u, v, 0) -> face frame, outward normals
+  const Tris f = flat(0, 1, 0, 1, 0, 5, 4, true, 0.3, 2);
+  const int map[6][3] = {{0, 1, 2}, {1, 0, 2}, {1, 2, 0}, {2, 1, 0}, {2, 0, 1}, {0, 2, 1}};
+  for (int face = 0; face < 6; face++)
+    for (size_t k = 0; k < f.size(); k += 9)
+      for (int v = 0; v < 3; v++) {
+        // reverse the vertex order on the faces whose frame is left-handed
+        const int vv = (face % 2 == 0) ? v : 2 - v;
+        const double u[3] = {f[k + 3 * vv], f[k + 3 * vv + 1], face < 3 ? 0.0 : 1.0};
+        double p[3];
+        for (int d = 0; d < 3; d++) p[map[face][d]] = u[d];
+        for (int d = 0; d < 3; d++) box.push_back(p[d]);
+      }
+  const double a0 = total_area(box);
+  const int n0 = (int) box.size() / 9;
+  const MergeStats st = merge_coplanar(box, 1e-12);
+  EXPECT_EQ(st.after, 12) << "from " << n0;
+  EXPECT_NEAR(total_area(box), a0, 1e-12 * a0);
+
+  Tris cyl;
+  const int ns = 24, nr = 10;
+  auto P = [&](int s, int r, double *p) {
+    p[0] = std::cos(2 * M_PI * s / ns);
+    p[1] = std::sin(2 * M_PI * s / ns);
+    p[2] = 0.1 * r;
+  };
+  for (int s = 0; s < ns; s++)
+    for (int r = 0; r < nr; r++) {
+      double a[3], b[3], c[3], d[3];
+      P(s, r, a);
+      P(s + 1, r, b);
+      P(s, r + 1, c);
+      P(s + 1, r + 1, d);
+      for (const double *q : {a, b, d, a, d, c})
+        for (int k = 0; k < 3; k++) cyl.push_back(q[k]);
+    }
+  const double c0 = total_area(cyl);
+  const MergeStats sc = merge_coplanar(cyl, 1e-12);
+  EXPECT_EQ(sc.after, 2 * ns);
+  EXPECT_NEAR(total_area(cyl), c0, 1e-12 * c0);
+}
+
+// a region with a hole is kept as read; a tolerance below the vertices'
+// distance from the plane keeps them as read too
+TEST(MergeCoplanar, HolesAndTolerance)
+{
+  const Tris full = flat(0, 6, 0, 6, 0, 6, 6);
+  Tris holed;
+  for (size_t k = 0; k < full.size(); k += 9) {
+    const double cx = (full[k] + full[k + 3] + full[k + 6]) / 3.0;
+    const double cy = (full[k + 1] + full[k + 4] + full[k + 7]) / 3.0;
+    if (cx > 2 && cx < 4 && cy > 2 && cy < 4) continue;
+    holed.insert(holed.end(), full.begin() + (long) k, full.begin() + (long) k + 9);
+  }
+  const int n = (int) holed.size() / 9;
+  const MergeStats st = merge_coplanar(holed, 1e-12);
+  EXPECT_EQ(st.after, n);
+  EXPECT_EQ(st.kept_holes, 1);
+
+  Tris bumpy = flat(0, 3, -1, 1, 0, 12, 8, true, 0.35, 11);
+  for (size_t k = 2; k < bumpy.size(); k += 3)
+    if (bumpy[k - 2] > 0 && bumpy[k - 2] < 3 && bumpy[k - 1] > -1 && bumpy[k - 1] < 1)
+      bumpy[k] = 1e-10 * std::sin(1e3 * bumpy[k - 2] + 7 * bumpy[k - 1]);    // interior z noise
+  Tris strict = bumpy;
+  EXPECT_GT(merge_coplanar(strict, 1e-13).after, 150);
+  EXPECT_EQ(merge_coplanar(bumpy, 1e-9).after, 2);
+}
+
+// exact point-triangle distance (used by the grid's near test) against an
+// independent construction: projection inside the triangle, else the
+// nearest of the three edges (segments); random triangles incl. slivers
+TEST(MeshGrid, PointTriangleDistance)
+{
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  auto seg2 = [](const Vec3<double> &p, const Vec3<double> &a, const Vec3<double> &b) {
+    const Vec3<double> ab = b - a;
+    double s = dot(p - a, ab) / norm2(ab);
+    s = s < 0 ? 0 : (s > 1 ? 1 : s);
+    return norm2(p - (a + s * ab));
+  };
+  double worst = 0.0;
+  for (int trial = 0; trial < 200000; trial++) {
+    Vec3<double> a = make_vec3(u(rng), u(rng), u(rng)), b = make_vec3(u(rng), u(rng), u(rng)),
+                 c = make_vec3(u(rng), u(rng), u(rng));
+    if (trial % 4 == 0) c = a + (0.5 + 0.3 * u(rng)) * (b - a) + 1e-4 * make_vec3(u(rng), u(rng), u(rng));
+    const Vec3<double> p = make_vec3(2 * u(rng), 2 * u(rng), 2 * u(rng));
+    Vec3<double> n = cross(b - a, c - a);
+    const double nn = norm2(n);
+    if (!(nn > 1e-20)) continue;
+    const double h = dot(p - a, n) / nn;
+    const Vec3<double> q = p - h * n;    // projection on the plane
+    const double w1 = dot(cross(b - a, q - a), n), w2 = dot(cross(c - b, q - b), n),
+                 w3 = dot(cross(a - c, q - c), n);
+    double ref;
+    if (w1 >= 0 && w2 >= 0 && w3 >= 0) ref = h * h * nn;
+    else ref = std::fmin(seg2(p, a, b), std::fmin(seg2(p, b, c), seg2(p, c, a)));
+    const double got = point_triangle_dist2(p, a, b, c);
+    worst = std::fmax(worst, std::fabs(got - ref) / (1.0 + ref));
+  }
+  EXPECT_LT(worst, 1e-12);
+}

@@ -48,11 +48,16 @@ double wprime(double K, double V, double V0)
 struct Sweep {
   double max_fn_err = 0, max_ft_err = 0;    // relative to the full-contact values
   int nsamples = 0;
+  double ffull = 0;                         // full-contact normal force
+  std::vector<double> fx, fz;               // force on the mesh, every step
 };
 
 // Cuboid face down on the wall z = 0 (wall x in [0, 3L], y in [-L, L]),
 // moved by fix move at speed U along x from x = -0.4 L to 3.4 L.
-Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int steps)
+// fixargs: extra fix wall/mesh keywords ("merge no": the triangulation as
+// written, which is what the mesh-independence test is about)
+Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int steps,
+            const std::string &fixargs = "merge no")
 {
   const std::string stl = tmpdir() + "/" + name + ".stl";
   write_ascii(stl, tris);
@@ -65,7 +70,7 @@ Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int 
           "create_atoms 1 single " + num(x0) + " 0.001 " + num(L / 2 - DELTA),
           "polyhedron_set group all scale 1 density " + num(RHO), "pair_style polyhedron",
           "pair_coeff * * " + num(E) + " " + num(NU) + " 1.0 " + num(MU),
-          "fix w all wall/mesh " + stl, "fix m all move linear " + num(U) + " 0 0",
+          "fix w all wall/mesh " + stl + " " + fixargs, "fix m all move linear " + num(U) + " 0 0",
           "fix o all ave/time 1 1 1 f_w[1] f_w[3] file " + out + " format \" %.16g\"", "timestep " + num(dt),
           "thermo 1000", "run " + std::to_string(steps)});
   // analytic: V = A delta, A = L * (overlap of [x-L/2, x+L/2] with [0, 3L])
@@ -77,6 +82,7 @@ Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int 
   std::ifstream in(out);
   std::string line;
   Sweep s;
+  s.ffull = Ffull;
   // analytic Cundall-Strack spring (flat wall, constant speed) in the
   // contact model's incremental form: a growing area keeps the stored force
   double shear = 0.0, Aold = 0.0;
@@ -86,6 +92,8 @@ Sweep sweep(const Tris &tris, const std::string &name, double U, double dt, int 
     long step;
     double fx, fz;
     ls >> step >> fx >> fz;    // force on the mesh
+    s.fx.push_back(fx);
+    s.fz.push_back(fz);
     const double x = x0 + U * dt * step;
     const double ov = std::fmax(0.0, std::fmin(x + L / 2, 3 * L) - std::fmax(x - L / 2, 0.0));
     const double A = L * ov;
@@ -140,6 +148,74 @@ TEST(WallMesh, MeshIndependenceFlatWall)
     EXPECT_LT(s.max_fn_err, 0.01) << c.name;
     EXPECT_LT(s.max_ft_err, 0.01) << c.name;
   }
+}
+
+// Coplanar merging at load (default 'merge 1e-9'): the irregular and the fan
+// triangulations become a few large triangles, and the force on the sweeping
+// cuboid is the same as with the file's triangulation at every step (to
+// round-off: 1e-12 of the full-contact force).
+TEST(WallMesh, MergedMeshGivesTheSameForces)
+{
+  const double W = 3 * L;
+  for (auto &c : std::vector<std::pair<std::string, Tris>>{
+           {"merge_irregular", flat(0, W, -L, L, 0, 12, 8, true, 0.35, 11)},
+           {"merge_fan", fan(0, W, -L, L, 0, 7, 0.37 * W, 0.21 * L)}}) {
+    const Sweep a = sweep(c.second, c.first, 5.0, 1.0e-5, 1900, "merge no");
+    const Sweep b = sweep(c.second, c.first, 5.0, 1.0e-5, 1900, "");
+    ASSERT_EQ(a.fx.size(), b.fx.size());
+    double dmax = 0.0;
+    for (size_t k = 0; k < a.fx.size(); k++)
+      dmax = std::fmax(dmax, std::fmax(std::fabs(a.fx[k] - b.fx[k]), std::fabs(a.fz[k] - b.fz[k])));
+    std::printf("[ wall     ] %-16s %zu triangles: merged vs as read, max |dF| = %.3g of full "
+                "contact\n", c.first.c_str(), c.second.size() / 9, dmax / a.ffull);
+    EXPECT_LT(dmax, 1e-12 * a.ffull) << c.first;
+    EXPECT_LT(b.max_fn_err, 0.01);
+  }
+}
+
+// move wiggle: a cube resting (gravity, friction 0.8) on a floor that
+// oscillates along x with amplitude A = 1 mm and period 0.2 s (peak
+// acceleration A (2 pi/T)^2 = 1 m/s^2 < mu g): the cube sticks and follows
+// x_w(t) = A sin(2 pi t / T). It first slips by about v_w(0)^2/(2 mu g) =
+// 0.06 mm while it catches up with the floor's initial velocity, so over the
+// second period x - <x> is compared with x_w: within 2 % of A (the
+// tangential spring's compliance is far smaller).
+TEST(WallMesh, WiggleCarriesAStickingCube)
+{
+  const std::string stl = tmpdir() + "/wiggle_floor.stl";
+  write_ascii(stl, flat(-0.05, 0.05, -0.05, 0.05, 0.0, 4, 4, true));
+  const double A = 1e-3, T = 0.2, dt = 2e-5;
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
+          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
+          "create_atoms 1 single 0 0 " + num(L / 2 - 1e-9),
+          "polyhedron_set group all scale 1 density " + num(RHO), "pair_style polyhedron",
+          "pair_coeff * * " + num(E) + " " + num(NU) + " 0.5 " + num(MU),
+          "fix w all wall/mesh " + stl + " move wiggle " + num(A) + " 0 0 " + num(T),
+          "fix g all gravity 9.81 vector 0 0 -1", "fix nve all nve/polyhedron",
+          "timestep " + num(dt), "thermo 0", "run 0"});
+  const int per = (int) std::lround(T / dt);
+  l.cmd("run " + std::to_string(per));
+  std::vector<double> x, xw;
+  for (int k = 1; k <= 20; k++) {
+    l.cmd("run " + std::to_string(per / 20) + " pre no post no");
+    const double t = (per + k * (per / 20)) * dt;
+    x.push_back(l.lmp->atom->x[0][0]);
+    xw.push_back(A * std::sin(2 * PI * t / T));
+  }
+  double mean = 0.0, worst = 0.0;
+  for (double v : x) mean += v / x.size();
+  for (size_t k = 0; k < x.size(); k++) worst = std::fmax(worst, std::fabs(x[k] - mean - xw[k]));
+  std::printf("[ wall     ] wiggle: max |x - <x> - A sin(2 pi t/T)| = %.3g A over the second "
+              "period (offset <x> - x0 = %.3g A)\n", worst / A, mean / A);
+  EXPECT_LT(worst, 0.02 * A);
+  EXPECT_NEAR(l.lmp->atom->x[0][2], L / 2, 1e-6);    // still resting on the floor
+  // bad input
+  Lmp b;
+  b.cmds({"units si", "atom_style polyhedron", "region box block -1 1 -1 1 -1 1", "create_box 1 box"});
+  EXPECT_NE(b.error_of("fix w all wall/mesh " + stl + " move wiggle 1 0 0 0").find(
+                "move wiggle period must be > 0"), std::string::npos);
 }
 
 namespace {
