@@ -239,8 +239,9 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     merged = polydem::merge_coplanar(mesh.tri, merge_tol * diag);
     if (comm->me == 0 && merged.after != merged.before)
       utils::logmesg(lmp, "fix wall/mesh {}: {} coplanar regions re-triangulated, {} -> {} "
-                     "triangles ({} regions with holes kept)\n", id, merged.merged_regions,
-                     merged.before, merged.after, merged.kept_holes + merged.kept_failed);
+                     "triangles ({} holes bridged, {} regions kept as read)\n", id,
+                     merged.merged_regions, merged.before, merged.after, merged.bridged_holes,
+                     merged.kept_holes + merged.kept_failed);
   }
 
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;

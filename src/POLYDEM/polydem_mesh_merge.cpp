@@ -8,8 +8,9 @@
    is triangulated. A region of edge-connected coplanar triangles can then be
    replaced by a coarser triangulation of its outline without changing any
    force (to round-off); the work per particle then follows the geometry,
-   not the facet count of the file. Regions with holes, pinched outlines or
-   a triangulation whose area does not match are kept as read.
+   not the facet count of the file. Holes are joined to the outer outline
+   by bridge edges before ear clipping. Pinched outlines and triangulations
+   whose area does not match are kept as read.
 ------------------------------------------------------------------------- */
 
 #include "polydem_stl.h"
@@ -39,14 +40,19 @@ namespace {
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
   }
 
-  // Ear clipping of a simple counter-clockwise polygon (2-D points p, 3-D
-  // points q); appends triangles (3-D) to out. False if no ear is found
-  // (numerically degenerate outline).
-  bool ear_clip(std::vector<std::array<double, 2>> p, std::vector<V3> q, double eps2,
-                std::vector<double> &out)
+  // Ear clipping of a counter-clockwise polygon (2-D points p, 3-D points q,
+  // vertex ids id: a polygon with bridged holes visits some vertices twice,
+  // and a copy of an ear's own vertex does not block the ear). Appends the
+  // triangles (3-D) to out; false if no ear is found (degenerate outline).
+  bool ear_clip(const std::vector<std::array<double, 2>> &p, const std::vector<V3> &q,
+                const std::vector<int> &id, double eps2, std::vector<double> &out)
   {
     std::vector<int> idx(p.size());
     for (size_t i = 0; i < idx.size(); i++) idx[i] = (int) i;
+    auto emit = [&](int a, int b, int c) {
+      for (const int v : {a, b, c})
+        for (int d = 0; d < 3; d++) out.push_back(q[v][d]);
+    };
     while (idx.size() > 3) {
       const int n = (int) idx.size();
       bool found = false;
@@ -57,23 +63,90 @@ namespace {
         bool empty = true;
         for (int m = 0; m < n && empty; m++) {
           const int j = idx[m];
-          if (j == ia || j == ib || j == ic) continue;
+          if (id[j] == id[ia] || id[j] == id[ib] || id[j] == id[ic]) continue;
           const double *x = p[j].data();
           // inside or on the closed triangle: not an ear
           if (orient(a, b, x) >= -eps2 && orient(b, c, x) >= -eps2 && orient(c, a, x) >= -eps2)
             empty = false;
         }
         if (!empty) continue;
-        for (const int v : {ia, ib, ic})
-          for (int d = 0; d < 3; d++) out.push_back(q[v][d]);
+        emit(ia, ib, ic);
         idx.erase(idx.begin() + k);
         found = true;
       }
       if (!found) return false;
     }
-    for (const int v : idx)
-      for (int d = 0; d < 3; d++) out.push_back(q[v][d]);
+    emit(idx[0], idx[1], idx[2]);
     return true;
+  }
+
+  // Do the closed segments pq and ab share a point? (exact orientation tests)
+  bool segments_touch(const double *p, const double *q, const double *a, const double *b)
+  {
+    const double o1 = orient(p, q, a), o2 = orient(p, q, b), o3 = orient(a, b, p),
+                 o4 = orient(a, b, q);
+    auto on = [](const double *u, const double *v, const double *w) {    // w on segment uv
+      return std::min(u[0], v[0]) <= w[0] && w[0] <= std::max(u[0], v[0]) &&
+             std::min(u[1], v[1]) <= w[1] && w[1] <= std::max(u[1], v[1]);
+    };
+    if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
+      return true;
+    return (o1 == 0 && on(p, q, a)) || (o2 == 0 && on(p, q, b)) || (o3 == 0 && on(a, b, p)) ||
+           (o4 == 0 && on(a, b, q));
+  }
+
+  // Splice hole h (clockwise) into the counter-clockwise polygon outer by a
+  // bridge from the hole's vertex M of largest u to the nearest vertex P of
+  // outer that M sees: the segment MP touches no edge of outer, of h or of
+  // the holes still to come, except at its own ends, and leaves P inside the
+  // corner of that copy of P (a vertex used by an earlier bridge appears
+  // several times). Lists hold indices into the 2-D points pt. O(n^2) per
+  // hole. False if no vertex is visible (degenerate input).
+  bool bridge_hole(std::vector<int> &outer, const std::vector<int> &h,
+                   const std::vector<std::vector<int>> &later,
+                   const std::vector<std::array<double, 2>> &pt)
+  {
+    size_t mi = 0;
+    for (size_t i = 1; i < h.size(); i++)
+      if (pt[h[i]][0] > pt[h[mi]][0] ||
+          (pt[h[i]][0] == pt[h[mi]][0] && pt[h[i]][1] > pt[h[mi]][1]))
+        mi = i;
+    const double *M = pt[h[mi]].data();
+    const int no = (int) outer.size();
+    std::vector<std::pair<double, int>> cand;
+    for (int i = 0; i < no; i++) {
+      const double du = pt[outer[i]][0] - M[0], dv = pt[outer[i]][1] - M[1];
+      cand.emplace_back(du * du + dv * dv, i);
+    }
+    std::sort(cand.begin(), cand.end());
+    auto blocked_by = [&](const std::vector<int> &loop, const double *P, int skipA, int skipB) {
+      const int n = (int) loop.size();
+      for (int e = 0; e < n; e++) {
+        const int ia = loop[e], ib = loop[(e + 1) % n];
+        if (ia == skipA || ib == skipA || ia == skipB || ib == skipB) continue;
+        if (segments_touch(M, P, pt[ia].data(), pt[ib].data())) return true;
+      }
+      return false;
+    };
+    for (const auto &c : cand) {
+      const int i = c.second;
+      const double *a = pt[outer[(i + no - 1) % no]].data(), *P = pt[outer[i]].data(),
+                   *b = pt[outer[(i + 1) % no]].data();
+      const bool convex = orient(a, P, b) > 0;
+      const bool l1 = orient(a, P, M) > 0, l2 = orient(P, b, M) > 0;
+      if (!(convex ? (l1 && l2) : (l1 || l2))) continue;
+      if (blocked_by(outer, P, outer[i], -1) || blocked_by(h, P, h[mi], -1)) continue;
+      bool free = true;
+      for (const auto &l : later) free = free && !blocked_by(l, P, -1, -1);
+      if (!free) continue;
+      std::vector<int> merged(outer.begin(), outer.begin() + i + 1);
+      for (size_t k = 0; k <= h.size(); k++) merged.push_back(h[(mi + k) % h.size()]);
+      merged.push_back(outer[i]);
+      merged.insert(merged.end(), outer.begin() + i + 1, outer.end());
+      outer.swap(merged);
+      return true;
+    }
+    return false;
   }
 
 }    // namespace
@@ -166,39 +239,49 @@ MergeStats merge_coplanar(std::vector<double> &tri, double tol)
         if (!next.emplace(a, b).second) simple = false;    // pinched outline
       }
     }
-    std::vector<int> loop;
-    if (simple && !next.empty()) {
-      const int first = next.begin()->first;
-      int v = first;
-      do {
-        loop.push_back(v);
-        const auto it = next.find(v);
-        if (it == next.end() || loop.size() > next.size()) {
-          simple = false;
-          break;
-        }
-        v = it->second;
-      } while (v != first);
-      if (loop.size() != next.size()) simple = false;    // holes: several loops
+    // loops of the outline (one outer, counter-clockwise; holes clockwise)
+    std::vector<std::vector<int>> loops;
+    {
+      std::map<int, int> rest = next;
+      while (simple && !rest.empty()) {
+        std::vector<int> loop;
+        const int first = rest.begin()->first;
+        int v = first;
+        do {
+          loop.push_back(v);
+          const auto it = rest.find(v);
+          if (it == rest.end()) {
+            simple = false;
+            break;
+          }
+          v = it->second;
+          rest.erase(it);
+        } while (v != first);
+        loops.push_back(loop);
+      }
     }
-    if (!simple || loop.size() < 3 || loop.size() > 4096) {    // ear clipping is O(n^2)
+    size_t total = 0;
+    for (const auto &l : loops) total += l.size();
+    if (!simple || total > 4096) {    // pinched; ear clipping is O(n^2)
       st.kept_holes++;
       keep();
       continue;
     }
     // drop outline vertices on the line of their neighbours (within tol)
-    bool changed = true;
-    while (changed && loop.size() > 3) {
-      changed = false;
-      for (size_t i = 0; i < loop.size() && loop.size() > 3; i++) {
-        const V3 &a = vert[loop[(i + loop.size() - 1) % loop.size()]], &b = vert[loop[i]],
-                 &c = vert[loop[(i + 1) % loop.size()]];
-        const V3 ac = sub(c, a), ab = sub(b, a);
-        const double l2 = dt(ac, ac);
-        const V3 x = crs(ab, ac);
-        if (l2 > 0.0 && dt(x, x) <= tol * tol * l2 && dt(ab, ac) > 0.0 && dt(ab, ab) < l2) {
-          loop.erase(loop.begin() + (long) i);
-          changed = true;
+    for (auto &loop : loops) {
+      bool changed = true;
+      while (changed && loop.size() > 3) {
+        changed = false;
+        for (size_t i = 0; i < loop.size() && loop.size() > 3; i++) {
+          const V3 &a = vert[loop[(i + loop.size() - 1) % loop.size()]], &b = vert[loop[i]],
+                   &c = vert[loop[(i + 1) % loop.size()]];
+          const V3 ac = sub(c, a), ab = sub(b, a);
+          const double l2 = dt(ac, ac);
+          const V3 x = crs(ab, ac);
+          if (l2 > 0.0 && dt(x, x) <= tol * tol * l2 && dt(ab, ac) > 0.0 && dt(ab, ab) < l2) {
+            loop.erase(loop.begin() + (long) i);
+            changed = true;
+          }
         }
       }
     }
@@ -207,17 +290,64 @@ MergeStats merge_coplanar(std::vector<double> &tri, double tol)
     const double l1 = std::sqrt(dt(e1, e1));
     e1 = {e1[0] / l1, e1[1] / l1, e1[2] / l1};
     const V3 e2 = crs(n, e1);
+    std::map<int, int> local;    // vertex id -> index into pt
+    std::vector<std::array<double, 2>> pt;
+    std::vector<int> ptid;
+    for (const auto &loop : loops)
+      for (const int v : loop)
+        if (local.emplace(v, (int) pt.size()).second) {
+          pt.push_back({dt(vert[v], e1), dt(vert[v], e2)});
+          ptid.push_back(v);
+        }
+    // the outer loop has the largest signed area; the others must be holes
+    int outer_k = -1;
+    double amax = 0.0;
+    std::vector<double> sarea(loops.size(), 0.0);
+    for (size_t k = 0; k < loops.size(); k++) {
+      const auto &l = loops[k];
+      for (size_t i = 0; i < l.size(); i++) {
+        const auto &a = pt[local[l[i]]], &b = pt[local[l[(i + 1) % l.size()]]];
+        sarea[k] += 0.5 * (a[0] * b[1] - a[1] * b[0]);
+      }
+      if (sarea[k] > amax) {
+        amax = sarea[k];
+        outer_k = (int) k;
+      }
+    }
+    bool ok = outer_k >= 0 && loops[outer_k].size() >= 3;
+    std::vector<int> poly;    // indices into pt
+    if (ok)
+      for (const int v : loops[outer_k]) poly.push_back(local[v]);
+    std::vector<std::pair<double, int>> holes;
+    for (size_t k = 0; ok && k < loops.size(); k++) {
+      if ((int) k == outer_k) continue;
+      if (!(sarea[k] < 0.0) || loops[k].size() < 3) ok = false;
+      double mx = -1e300;
+      for (const int v : loops[k]) mx = std::max(mx, pt[local[v]][0]);
+      holes.emplace_back(-mx, (int) k);
+    }
+    std::sort(holes.begin(), holes.end());    // largest u first
+    std::vector<std::vector<int>> hl;
+    for (const auto &hk : holes) {
+      hl.emplace_back();
+      for (const int v : loops[hk.second]) hl.back().push_back(local[v]);
+    }
+    for (size_t k = 0; ok && k < hl.size(); k++)
+      ok = bridge_hole(poly, hl[k], std::vector<std::vector<int>>(hl.begin() + (long) k + 1, hl.end()),
+                       pt);
+    double ext = 0.0;
+    for (const auto &a : pt)
+      for (const auto &b : pt) ext = std::max(ext, std::fabs(a[0] - b[0]) + std::fabs(a[1] - b[1]));
     std::vector<std::array<double, 2>> p;
     std::vector<V3> q;
-    double ext = 0.0;
-    for (const int v : loop) {
-      q.push_back(vert[v]);
-      p.push_back({dt(vert[v], e1), dt(vert[v], e2)});
+    std::vector<int> qid;
+    for (const int i : poly) {
+      p.push_back(pt[i]);
+      q.push_back(vert[ptid[i]]);
+      qid.push_back(ptid[i]);
     }
-    for (const auto &a : p)
-      for (const auto &b : p) ext = std::max(ext, std::fabs(a[0] - b[0]) + std::fabs(a[1] - b[1]));
     std::vector<double> tris;
-    const bool ok = ear_clip(p, q, 1e-14 * ext * ext, tris);
+    ok = ok && ear_clip(p, q, qid, 1e-14 * ext * ext, tris);
     double narea = 0.0;
     for (size_t t = 0; ok && t < tris.size() / 9; t++) {
       const V3 a = {tris[9 * t], tris[9 * t + 1], tris[9 * t + 2]};
@@ -233,6 +363,7 @@ MergeStats merge_coplanar(std::vector<double> &tri, double tol)
       continue;
     }
     st.merged_regions++;
+    st.bridged_holes += (int) loops.size() - 1;
     out.insert(out.end(), tris.begin(), tris.end());
   }
   tri.swap(out);

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
 #include <random>
 #include <set>
@@ -276,21 +277,62 @@ TEST(MergeCoplanar, BoxAndCylinder)
   EXPECT_NEAR(total_area(cyl), c0, 1e-12 * c0);
 }
 
-// a region with a hole is kept as read; a tolerance below the vertices'
-// distance from the plane keeps them as read too
-TEST(MergeCoplanar, HolesAndTolerance)
+// holes are bridged into the outline: a 6 x 6 plate with a 2 x 2 hole
+// (silo bottom with its outlet) becomes 8 triangles, two holes 14; area,
+// facing and the hole (no triangle covers its centre) are kept. A pinched
+// region (two squares touching at a corner) is kept as read. A tolerance
+// below the vertices' distance from the plane keeps them as read too.
+TEST(MergeCoplanar, HolesPinchesAndTolerance)
 {
-  const Tris full = flat(0, 6, 0, 6, 0, 6, 6);
-  Tris holed;
-  for (size_t k = 0; k < full.size(); k += 9) {
-    const double cx = (full[k] + full[k + 3] + full[k + 6]) / 3.0;
-    const double cy = (full[k + 1] + full[k + 4] + full[k + 7]) / 3.0;
-    if (cx > 2 && cx < 4 && cy > 2 && cy < 4) continue;
-    holed.insert(holed.end(), full.begin() + (long) k, full.begin() + (long) k + 9);
-  }
-  const int n = (int) holed.size() / 9;
-  const MergeStats st = merge_coplanar(holed, 1e-12);
-  EXPECT_EQ(st.after, n);
+  auto cut = [](const Tris &full, std::vector<std::array<double, 4>> boxes) {
+    Tris out;
+    for (size_t k = 0; k < full.size(); k += 9) {
+      const double cx = (full[k] + full[k + 3] + full[k + 6]) / 3.0;
+      const double cy = (full[k + 1] + full[k + 4] + full[k + 7]) / 3.0;
+      bool in = false;
+      for (const auto &b : boxes) in = in || (cx > b[0] && cx < b[1] && cy > b[2] && cy < b[3]);
+      if (!in) out.insert(out.end(), full.begin() + (long) k, full.begin() + (long) k + 9);
+    }
+    return out;
+  };
+  auto covers = [](const Tris &t, double x, double y) {
+    for (size_t k = 0; k < t.size(); k += 9) {
+      const double *a = &t[k], *b = &t[k + 3], *c = &t[k + 6];
+      auto o = [](const double *p, const double *q, double px, double py) {
+        return (q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0]);
+      };
+      if (o(a, b, x, y) > 0 && o(b, c, x, y) > 0 && o(c, a, x, y) > 0) return true;
+    }
+    return false;
+  };
+  const Tris full = flat(0, 6, 0, 6, 0, 6, 6, true);
+  Tris holed = cut(full, {{2, 4, 2, 4}});
+  const double a1 = total_area(holed);
+  MergeStats st = merge_coplanar(holed, 1e-12);
+  double nz = 0.0;
+  EXPECT_EQ(st.after, 8);
+  EXPECT_EQ(st.bridged_holes, 1);
+  EXPECT_NEAR(total_area(holed, &nz), a1, 1e-12 * a1);
+  EXPECT_GT(nz, 0.0);
+  EXPECT_FALSE(covers(holed, 3.1, 2.9));
+  EXPECT_TRUE(covers(holed, 0.7, 1.3));
+
+  Tris two = cut(flat(0, 8, 0, 6, 0, 8, 6, true), {{1, 3, 1, 3}, {5, 7, 2, 5}});
+  const double a2 = total_area(two);
+  st = merge_coplanar(two, 1e-12);
+  EXPECT_EQ(st.bridged_holes, 2);
+  EXPECT_EQ(st.after, 14);
+  EXPECT_NEAR(total_area(two), a2, 1e-12 * a2);
+  EXPECT_FALSE(covers(two, 2.1, 1.9));
+  EXPECT_FALSE(covers(two, 6.1, 3.4));
+
+  // 3 x 3 cells without the centre and the corner cell (2, 2): the hole and
+  // the notch meet at the vertex (2, 2), so the outline is pinched there
+  Tris pinched = cut(flat(0, 3, 0, 3, 0, 3, 3), {{1, 2, 1, 2}, {2, 3, 2, 3}});
+  const int np = (int) pinched.size() / 9;
+  EXPECT_EQ(np, 14);
+  st = merge_coplanar(pinched, 1e-12);
+  EXPECT_EQ(st.after, np);
   EXPECT_EQ(st.kept_holes, 1);
 
   Tris bumpy = flat(0, 3, -1, 1, 0, 12, 8, true, 0.35, 11);
@@ -335,4 +377,63 @@ TEST(MeshGrid, PointTriangleDistance)
     worst = std::fmax(worst, std::fabs(got - ref) / (1.0 + ref));
   }
   EXPECT_LT(worst, 1e-12);
+}
+
+// fuzz: plates of 10 x 8 cells (regular or jittered) with 1-6 random
+// single-cell holes, no two holes touching each other or the border: every
+// region merges with all its holes bridged, the area is kept to 1e-12 and
+// no triangle covers a hole's centre
+TEST(MergeCoplanar, RandomHolesFuzz)
+{
+  std::mt19937 rng(17);
+  int merged = 0, cases = 0;
+  for (int trial = 0; trial < 300; trial++) {
+    const int nx = 10, ny = 8;
+    const double jit = (trial % 2) ? 0.2 : 0.0;
+    const Tris full = flat(0, nx, 0, ny, 0, nx, ny, trial % 3 == 0, jit, (unsigned) trial + 1);
+    std::vector<std::pair<int, int>> holes;
+    const int want = 1 + (int) (rng() % 6);
+    for (int tries = 0; tries < 200 && (int) holes.size() < want; tries++) {
+      const int i = 1 + (int) (rng() % (nx - 2)), j = 1 + (int) (rng() % (ny - 2));
+      bool ok = true;
+      for (auto &h : holes) ok = ok && (std::abs(h.first - i) > 1 || std::abs(h.second - j) > 1);
+      if (ok) holes.emplace_back(i, j);
+    }
+    // cells of the (possibly jittered) grid: triangles of cell (i, j) are 2 (j nx + i) + {0, 1}
+    Tris t;
+    for (size_t k = 0; k < full.size() / 9; k++) {
+      const int cell = (int) k / 2, i = cell % nx, j = cell / nx;
+      bool hole = false;
+      for (auto &h : holes) hole = hole || (h.first == i && h.second == j);
+      if (!hole) t.insert(t.end(), full.begin() + 9 * (long) k, full.begin() + 9 * (long) k + 9);
+    }
+    const double a0 = total_area(t);
+    const MergeStats st = merge_coplanar(t, 1e-12);
+    cases++;
+    EXPECT_NEAR(total_area(t), a0, 1e-12 * a0) << "trial " << trial;
+    if (st.merged_regions != 1) std::printf("trial %d jitter %g holes %zu: kept %d failed %d\n", trial, jit, holes.size(), st.kept_holes, st.kept_failed);
+    if (st.merged_regions == 1) {
+      merged++;
+      EXPECT_EQ(st.bridged_holes, (int) holes.size()) << "trial " << trial;
+    }
+    // hole centres (regular grid: exact; jittered: the centroid of the cell's first triangle pair)
+    for (auto &h : holes) {
+      const size_t k = 9 * 2 * (size_t) (h.second * nx + h.first);
+      double cx = 0, cy = 0;
+      for (int v = 0; v < 6; v++) {
+        cx += full[k + 3 * v] / 6.0;
+        cy += full[k + 3 * v + 1] / 6.0;
+      }
+      for (size_t m = 0; m < t.size(); m += 9) {
+        const double *a = &t[m], *b = &t[m + 3], *c = &t[m + 6];
+        auto o = [](const double *p, const double *q, double px, double py) {
+          return (q[0] - p[0]) * (py - p[1]) - (q[1] - p[1]) * (px - p[0]);
+        };
+        EXPECT_FALSE(o(a, b, cx, cy) > 0 && o(b, c, cx, cy) > 0 && o(c, a, cx, cy) > 0)
+            << "trial " << trial << " hole " << h.first << " " << h.second;
+      }
+    }
+  }
+  std::printf("[ merge    ] %d of %d plates with holes re-triangulated\n", merged, cases);
+  EXPECT_EQ(merged, cases);
 }
