@@ -1,8 +1,11 @@
 #!/bin/bash
-# Runs the three elongations of the seed (xi = 1.15, 2, 3) one after the other
-# on one core; N = nside^3 (default 8: N = 512). Usage: run_hcs.sh LMP [nside]
+# The runs of README.md (issue 6, acceptance 3): xi = 2 and 3 with N = 4096
+# (about 70 CPU minutes each here), xi = 1.15 with N = 512 and a long warm-up
+# (rotation of a nearly spherical body equilibrates slowly), one after the
+# other on one core; then the plot. Usage: run_hcs.sh [LMP]
+set -e
 LMP=${1:-../../build/lmp}
-NSIDE=${2:-8}
-for xi in 2.0 3.0 1.15; do
-  $LMP -in in.hcs -var xi $xi -var nside $NSIDE -log log.hcs_xi${xi}_N$((NSIDE**3)) -screen none -nocite
-done
+$LMP -in in.hcs -var xi 2.0 -var nside 16 -var cool 1950000 -log log.hcs_xi2.0_N4096 -screen none -nocite
+$LMP -in in.hcs -var xi 3.0 -var nside 16 -var cool 1450000 -log log.hcs_xi3.0_N4096 -screen none -nocite
+$LMP -in in.hcs -var xi 1.15 -var nside 8 -var warm 200000 -var cool 2200000 -log log.hcs_xi1.15_N512 -screen none -nocite
+/usr/bin/python3 plot_hcs.py log.hcs_xi1.15_N512 log.hcs_xi2.0_N4096 log.hcs_xi3.0_N4096
