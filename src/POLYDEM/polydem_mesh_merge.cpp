@@ -262,28 +262,49 @@ MergeStats merge_coplanar(std::vector<double> &tri, double tol)
     }
     size_t total = 0;
     for (const auto &l : loops) total += l.size();
-    if (!simple || total > 4096) {    // pinched; ear clipping is O(n^2)
+    if (!simple || total > (1u << 20)) {    // pinched (or absurdly long)
       st.kept_holes++;
       keep();
       continue;
     }
-    // drop outline vertices on the line of their neighbours (within tol)
+    // drop outline vertices on the line of their neighbours (within tol), in
+    // one sweep per loop (a stack) plus the wrap-around
+    auto collinear = [&](int ia, int ib, int ic) {
+      const V3 &a = vert[ia], &b = vert[ib], &c = vert[ic];
+      const V3 ac = sub(c, a), ab = sub(b, a);
+      const double l2 = dt(ac, ac);
+      const V3 x = crs(ab, ac);
+      return l2 > 0.0 && dt(x, x) <= tol * tol * l2 && dt(ab, ac) > 0.0 && dt(ab, ab) < l2;
+    };
+    total = 0;
     for (auto &loop : loops) {
+      std::vector<int> kept;
+      for (const int v : loop) {
+        kept.push_back(v);
+        while (kept.size() >= 3 &&
+               collinear(kept[kept.size() - 3], kept[kept.size() - 2], kept.back()))
+          kept.erase(kept.end() - 2);
+      }
       bool changed = true;
-      while (changed && loop.size() > 3) {
+      while (changed && kept.size() > 3) {
         changed = false;
-        for (size_t i = 0; i < loop.size() && loop.size() > 3; i++) {
-          const V3 &a = vert[loop[(i + loop.size() - 1) % loop.size()]], &b = vert[loop[i]],
-                   &c = vert[loop[(i + 1) % loop.size()]];
-          const V3 ac = sub(c, a), ab = sub(b, a);
-          const double l2 = dt(ac, ac);
-          const V3 x = crs(ab, ac);
-          if (l2 > 0.0 && dt(x, x) <= tol * tol * l2 && dt(ab, ac) > 0.0 && dt(ab, ab) < l2) {
-            loop.erase(loop.begin() + (long) i);
-            changed = true;
-          }
+        const size_t m = kept.size();
+        if (collinear(kept[m - 2], kept[m - 1], kept[0])) {
+          kept.pop_back();
+          changed = true;
+        } else if (collinear(kept[m - 1], kept[0], kept[1])) {
+          kept.erase(kept.begin());
+          changed = true;
         }
       }
+      loop.swap(kept);
+      total += loop.size();
+    }
+    // ear clipping and bridging are O(n^2) (O(n^3) at worst): bounded
+    if (total > 2048 || loops.size() > 256) {
+      st.kept_holes++;
+      keep();
+      continue;
     }
     // 2-D coordinates in the plane (e1, e2, n right-handed: outline counter-clockwise)
     V3 e1 = std::fabs(n[0]) < 0.9 ? crs(n, V3{1, 0, 0}) : crs(n, V3{0, 1, 0});

@@ -49,7 +49,8 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf);
 // edges) is replaced by an ear-clipping triangulation of its outline, with
 // outline vertices within tol of the line of their neighbours dropped;
 // holes are joined to the outer outline by bridge edges. Pinched outlines,
-// outlines of more than 4096 vertices, and any triangulation whose area
+// outlines of more than 2048 vertices (after the collinear ones are dropped)
+// or 256 loops, and any triangulation whose area
 // differs from the region's by more than 1e-9, are kept as read. The wall
 // contact of a flat patch does not depend on its triangulation, so forces
 // are unchanged (to round-off, and to tol where vertices were not exactly
@@ -59,7 +60,7 @@ struct MergeStats {
   int regions = 0;              // regions of >= 3 triangles
   int merged_regions = 0;       // re-triangulated
   int bridged_holes = 0;        // holes joined to their region's outline
-  int kept_holes = 0;           // kept: pinched or > 4096-vertex outline
+  int kept_holes = 0;           // kept: pinched, > 2048 outline vertices or > 256 loops
   int kept_failed = 0;          // kept: ear clipping or area check failed
 };
 MergeStats merge_coplanar(std::vector<double> &tri, double tol);

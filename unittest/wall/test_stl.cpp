@@ -335,6 +335,30 @@ TEST(MergeCoplanar, HolesPinchesAndTolerance)
   EXPECT_EQ(st.after, np);
   EXPECT_EQ(st.kept_holes, 1);
 
+  // a disc fanned from its centre with 3000 rim vertices: the outline is too
+  // long for ear clipping (> 2048 vertices), kept as read; 300 rim vertices merge
+  for (int nrim : {3000, 300}) {
+    Tris disc;
+    std::vector<double> cx(nrim), cy(nrim);    // rim vertices, shared exactly by neighbours
+    for (int k = 0; k < nrim; k++) {
+      cx[k] = std::cos(2 * M_PI * k / nrim);
+      cy[k] = std::sin(2 * M_PI * k / nrim);
+    }
+    for (int k = 0; k < nrim; k++) {
+      const int l = (k + 1) % nrim;
+      for (double v : {0.0, 0.0, 0.0, cx[k], cy[k], 0.0, cx[l], cy[l], 0.0}) disc.push_back(v);
+    }
+    const double ad = total_area(disc);
+    const MergeStats sd = merge_coplanar(disc, 1e-12);
+    EXPECT_NEAR(total_area(disc), ad, 1e-12 * ad);
+    if (nrim > 2048) {
+      EXPECT_EQ(sd.after, nrim);
+      EXPECT_EQ(sd.kept_holes, 1);
+    } else {
+      EXPECT_EQ(sd.after, nrim - 2);
+    }
+  }
+
   Tris bumpy = flat(0, 3, -1, 1, 0, 12, 8, true, 0.35, 11);
   for (size_t k = 2; k < bumpy.size(); k += 3)
     if (bumpy[k - 2] > 0 && bumpy[k - 2] < 3 && bumpy[k - 1] > -1 && bumpy[k - 1] < 1)
