@@ -13,7 +13,8 @@ decays within a few collision times and would otherwise offset the whole curve. 
 in.hcs, E_tr(t) is the average over each output interval (100 samples), compared with Haff's
 law at the interval's mid-time. The total kinetic energy (E_tr + E_rot)/(E_tr + E_rot)(0) is
 analysed the same way (no split noise: it tests the cooling law itself).
-Prints, per run: Gamma0 of Eq. 28 against the measured collision rate, the largest relative
+Logs of the same xi and N (different seeds) are averaged into one ensemble curve.
+Prints, per run or ensemble: Gamma0 of Eq. 28 against the measured collision rate, the largest relative
 deviations from Haff's law for tau <= 5, the fitted alpha*/alpha, and T_tr/T_rot.
 Usage: plot_hcs.py [log files...]  (default: all log.hcs_xi*); writes hcs.png
 """
@@ -90,16 +91,41 @@ def deviation(tau, ratio, lo=0.0, hi=5.0):
     return dev, slope
 
 
-def main():
-    files = sys.argv[1:] or sorted(glob.glob("log.hcs_xi*"))
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    tmax = 0.0
+def ensembles(files):
+    """Runs grouped by (xi, N): independent seeds of the same state. Per group, the
+    interval-averaged curves are averaged over the runs at equal interval index (tau differs
+    between seeds only through T(0), by ~0.1 %, and is averaged too)."""
+    groups = {}
     for path in files:
         info, first, rows = read(path)
         if len(rows) < 2:
             continue
+        groups.setdefault((info["xi"], info["N"]), []).append((path, info, first, rows))
+    out = []
+    for key in sorted(groups):
+        runs = groups[key]
+        res = [analyse(info, first, rows) for _, info, first, rows in runs]
+        n = min(len(r[1]) for r in res)
+        k = len(res)
+        mean = lambda j: [sum(r[j][i] for r in res) / k for i in range(n)]
+        g28 = sum(r[0] for r in res) / k
+        trot0 = sum(r[5] for r in res) / k
+        info = dict(runs[0][1])
+        info["Gamma0"] = sum(r[1]["Gamma0"] for r in runs) / k
+        out.append((", ".join(r[0] for r in runs), k, info,
+                    (g28, mean(1), mean(2), mean(3), mean(4), trot0)))
+    return out
+
+
+def main():
+    files = sys.argv[1:] or sorted(glob.glob("log.hcs_xi*"))
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
+    tmax = 0.0
+    for path, nruns, info, res in ensembles(files):
         xi = info["xi"]
-        g28, tau, etr, ekin, trot, trot0 = analyse(info, first, rows)
+        g28, tau, etr, ekin, trot, trot0 = res
+        if nruns > 1:
+            path = f"ensemble of {nruns} seeds ({path})"
         tmax = max(tmax, tau[-1])
         dev_tr, slope_tr = deviation(tau, etr)
         dev_kin, slope_kin = deviation(tau, ekin)
@@ -110,7 +136,7 @@ def main():
               f"{tau[-1]:.3g}; tau <= 5: max |E_tr/E_tr(0) / Haff - 1| {dev_tr:.4f} (alpha*/alpha "
               f"{slope_tr:.4f}), max |E_kin/E_kin(0) / Haff - 1| {dev_kin:.4f} (alpha*/alpha "
               f"{slope_kin:.4f}); T_tr/T_rot at t0 {trot0:.3f}, last quarter {sum(last) / len(last):.3f}")
-        lab = f"xi = {xi:g}, N = {info['N']:.0f}"
+        lab = f"xi = {xi:g}, N = {info['N']:.0f}" + (f", {nruns} seeds" if nruns > 1 else "")
         ax1.loglog([1 + t for t in tau], etr, ".", ms=3, label=lab + " E_tr")
         ax2.plot(tau, trot, "-", lw=0.8, label=lab)
     x = [1 + 10 ** (k / 50.0) * 1e-3 for k in range(0, 200)]

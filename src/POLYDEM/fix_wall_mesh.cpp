@@ -36,7 +36,8 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0), wall_mu(-1.0),
     core(1.0e-4), patch_angle(20.0), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0),
-    hist(nullptr), reduced(0), avec(nullptr)
+    hist(nullptr), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
+    near_builds_all(0), near_overflows_all(0), near_builds_run(0)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
@@ -128,6 +129,20 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       binsize = num(iarg + 1);
       if (!(binsize > 0.0) || !std::isfinite(binsize))
         error->all(FLERR, "fix wall/mesh: bin must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "cache") {
+      need(iarg, 1, "entries per particle (0: off)");
+      const double c = num(iarg + 1);
+      if (!(c >= 0.0 && c <= 100000.0) || c != floor(c))
+        error->all(FLERR, "fix wall/mesh: cache must be an integer in [0, 100000], got '{}'",
+                   arg[iarg + 1]);
+      near_cap = (int) c;
+      iarg += 2;
+    } else if (kw == "cache/skin") {
+      need(iarg, 1, "skin / particle bounding radius");
+      near_skin = num(iarg + 1);
+      if (!(near_skin > 0.0 && near_skin <= 1.0))
+        error->all(FLERR, "fix wall/mesh: cache/skin must be in (0, 1], got '{}'", arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "merge") {
       need(iarg, 1, "no or a tolerance");
@@ -245,7 +260,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
   }
 
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
-  for (int k = 0; k < 3; k++) counts_local[k] = counts_reported[k] = 0.0;
+  for (int k = 0; k < 4; k++) counts_local[k] = counts_reported[k] = 0.0;
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -440,6 +455,18 @@ void FixWallMesh::compute_forces(bool update)
   const auto g = grid_view();
   if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
   polydem::WallPatches<double> P;
+  // near lists index local atoms: stale after exchange/sort (reneighboring)
+  // and at setup (anything may have changed between runs)
+  const bool stale = !update || neighbor->ago == 0;
+  if (near_cap > 0 && (stale || (int) near_count.size() < nlocal)) {
+    const size_t n = std::max<size_t>(nlocal, near_count.size());
+    near_ref.resize(13 * n);
+    near_tri.resize((size_t) near_cap * n);
+    near_gap.resize((size_t) near_cap * n);
+    near_count.assign(n, polydem::NEAR_REBUILD);
+  }
+  polydem::WallNear<double> nl;
+  nl.cap = near_cap;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const auto sv = avec->shape(atom->pshape[i]).view();
@@ -447,10 +474,23 @@ void FixWallMesh::compute_forces(bool update)
     pose.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
     pose.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
     pose.s = atom->pscale[i];
+    polydem::WallNear<double> *pn = nullptr;
+    if (near_cap > 0) {
+      nl.ref = &near_ref[13 * (size_t) i];
+      nl.count = &near_count[i];
+      nl.tri = &near_tri[(size_t) near_cap * i];
+      nl.gap = &near_gap[(size_t) near_cap * i];
+      nl.skin = near_skin * sv.radius * pose.s;
+      pn = &nl;
+    }
     const auto wf = polydem::wall_particle(
         sv, pose, mp, g, params(i, update), tdtab[atom->type[i]], cosmax,
         polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
-        polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]), hist[i], update, *ws, P);
+        polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]), hist[i], update, *ws, P, pn);
+    if (pn) {
+      near_builds += nl.built;
+      if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) counts_local[3] += 1;
+    }
     counts_local[0] += P.noverflow;
     counts_local[1] += P.ndegenerate;
     counts_local[2] += P.nmerged;
@@ -468,13 +508,16 @@ void FixWallMesh::compute_forces(bool update)
 // kernel failures are counted and reported (collectively) as warnings
 void FixWallMesh::report_counts()
 {
-  double all[3];
-  MPI_Allreduce(counts_local, all, 3, MPI_DOUBLE, MPI_SUM, world);
+  double all[4];
+  MPI_Allreduce(counts_local, all, 4, MPI_DOUBLE, MPI_SUM, world);
   if (comm->me != 0) return;
-  const char *what[3] = {"clip workspace overflows (triangle skipped)",
-                         "degenerate particle-triangle contacts (NaN; triangle skipped)",
-                         "facets joined to the closest of the 4 contact patches"};
-  for (int k = 0; k < 3; k++)
+  const std::string what[4] = {
+      "clip workspace overflows (triangle skipped)",
+      "degenerate particle-triangle contacts (NaN; triangle skipped)",
+      "facets joined to the closest of the 4 contact patches",
+      fmt::format("near-list overflows (more than cache = {} triangles within reach; those "
+                  "particles query the grid every step: same forces, slower)", near_cap)};
+  for (int k = 0; k < 4; k++)
     if (all[k] > counts_reported[k]) {
       error->warning(FLERR, "fix wall/mesh {}: {:.0f} {} by step {}", id, all[k], what[k],
                      update->ntimestep);
@@ -571,10 +614,37 @@ void FixWallMesh::restart(char *buf)
                (int) list[1], file, mesh.ntri());
 }
 
+/* ----------------------------------------------------------------------
+   near-list statistics of the run (log), for choosing cache and cache/skin
+------------------------------------------------------------------------- */
+
+void FixWallMesh::post_run()
+{
+  bigint mine[2] = {near_builds, (bigint) counts_local[3]}, all[2];
+  MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
+  const bigint run_builds = all[0] - near_builds_run;
+  near_builds_all = all[0];
+  near_overflows_all = all[1];
+  near_builds_run = all[0];
+  if (comm->me == 0 && near_cap > 0)
+    utils::logmesg(lmp, "fix wall/mesh {}: {} near lists built in this run, {} overflows so far "
+                   "(cache {}, cache/skin {})\n", id, run_builds, all[1], near_cap, near_skin);
+}
+
+void *FixWallMesh::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "near_builds") == 0) return &near_builds_all;
+  if (strcmp(name, "near_overflows") == 0) return &near_overflows_all;
+  return nullptr;
+}
+
 double FixWallMesh::memory_usage()
 {
   double bytes = (double) atom->nmax * NH * sizeof(double);
   bytes += mesh.tri.size() * sizeof(double);
   bytes += (grid.start.size() + grid.items.size()) * sizeof(int);
+  bytes += near_ref.size() * sizeof(double) + (near_count.size() + near_tri.size()) * sizeof(int) +
+      near_gap.size() * sizeof(float);
   return bytes;
 }

@@ -50,6 +50,8 @@ class FixWallMesh : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
   double memory_usage() override;
+  void post_run() override;
+  void *extract(const char *, int &) override;
 
   enum { MOVE_NONE, MOVE_TRANSLATE, MOVE_ROTATE, MOVE_WIGGLE };
   // vector: force on the mesh (3), torque on the mesh about its axis point
@@ -76,9 +78,19 @@ class FixWallMesh : public Fix {
   std::vector<polydem::WallDamping<double>> tdtab;    // zeta(e, contact shape)
   double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
   int reduced;
-  double counts_local[3], counts_reported[3];
+  double counts_local[4], counts_reported[4];    // + near-list overflows
   class AtomVecPolyhedron *avec;
   std::unique_ptr<polydem::WallWorkspace<double>> ws;
+  // near lists (keyword cache): entries per particle, skin / bounding radius;
+  // per local atom, valid until the next reneighboring (plain fix; /kk has its own)
+  int near_cap;
+  double near_skin;
+  std::vector<double> near_ref;
+  std::vector<int> near_count, near_tri;
+  std::vector<float> near_gap;
+  bigint near_builds;    // lists built (statistics, this rank)
+  bigint near_builds_all, near_overflows_all;    // all ranks, since the fix was defined (post_run)
+  bigint near_builds_run;    // near_builds at the start of the run
 
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;

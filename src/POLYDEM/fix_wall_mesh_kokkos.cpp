@@ -24,7 +24,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 namespace {
 
 typedef polydem::WallWorkspace<double> WallWorkspace;
-constexpr int NSUM = 12;
+constexpr int NSUM = 14;    // + near-list overflows, builds
 
 // device copy of a host vector (at least one element)
 template <class V, class S> void upload(V &d, const std::vector<S> &h, const char *name)
@@ -57,6 +57,12 @@ template <class DeviceType> struct WallMeshKernel {
   Kokkos::View<double *[6], DeviceType> mat;
   Kokkos::View<polydem::WallDamping<double> *, DeviceType> dtab;
   Kokkos::View<char *, DeviceType> workspace;
+  Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> near_ref;
+  Kokkos::View<int *, DeviceType> near_count;
+  Kokkos::View<int **, Kokkos::LayoutRight, DeviceType> near_tri;
+  Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> near_gap;
+  int near_cap;
+  double near_skin;
   polydem::MeshGridView<double> grid;
   polydem::MeshPose<double> mp;
   double cosmax, core, dt;
@@ -89,9 +95,25 @@ template <class DeviceType> struct WallMeshKernel {
     double h[NH];
     for (int k = 0; k < NH; k++) h[k] = hist(i, k);
     polydem::WallPatches<double> P;
+    polydem::WallNear<double> nl;
+    polydem::WallNear<double> *pn = nullptr;
+    if (near_cap > 0) {
+      nl.ref = &near_ref(i, 0);
+      nl.count = &near_count(i);
+      nl.tri = &near_tri(i, 0);
+      nl.gap = &near_gap(i, 0);
+      nl.cap = near_cap;
+      nl.skin = near_skin * sv.radius * s;
+      nl.built = 0;
+      pn = &nl;
+    }
     const auto wf = polydem::wall_particle(
         sv, pose, mp, grid, p, dtab(t), cosmax, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
-        polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P);
+        polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P, pn);
+    if (pn) {
+      sum[12] += (nl.built && near_count(i) == polydem::NEAR_OVERFLOW) ? 1.0 : 0.0;
+      sum[13] += nl.built;
+    }
     for (int k = 0; k < NH; k++) hist(i, k) = h[k];
     f(i, 0) += wf.f.x;
     f(i, 1) += wf.f.y;
@@ -256,7 +278,29 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
         (size_t) nslots * sizeof(WallWorkspace));
   }
 
+  // near lists of local atoms: stale after reneighboring and at setup
+  const bool stale = !stepping || neighbor->ago == 0;
+  if (near_cap > 0 && (stale || (int) d_near_count.extent(0) < nlocal)) {
+    const int n = std::max<int>(std::max(1, nlocal), d_near_count.extent(0));
+    if ((int) d_near_count.extent(0) < n) {
+      d_near_ref = decltype(d_near_ref)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
+                                                          "wall/mesh/kk:near_ref"), n, 13);
+      d_near_count = decltype(d_near_count)("wall/mesh/kk:near_count", n);
+      d_near_tri = decltype(d_near_tri)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
+                                                          "wall/mesh/kk:near_tri"), n, near_cap);
+      d_near_gap = decltype(d_near_gap)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
+                                                          "wall/mesh/kk:near_gap"), n, near_cap);
+    }
+    Kokkos::deep_copy(d_near_count, polydem::NEAR_REBUILD);
+  }
+
   WallMeshKernel<DeviceType> k;
+  k.near_ref = d_near_ref;
+  k.near_count = d_near_count;
+  k.near_tri = d_near_tri;
+  k.near_gap = d_near_gap;
+  k.near_cap = near_cap;
+  k.near_skin = near_skin;
   k.x = atomKK->k_x.view<DeviceType>();
   k.v = atomKK->k_v.view<DeviceType>();
   k.omega = atomKK->k_omega.view<DeviceType>();
@@ -301,6 +345,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   for (int m = 0; m < NVEC; m++) local[m] = total[m];
   local[NVEC] = total[8];
   for (int m = 0; m < 3; m++) counts_local[m] += total[9 + m];
+  counts_local[3] += total[12];
+  near_builds += (bigint) total[13];
   if (stepping && neighbor->ago == 0) report_counts();
 }
 

@@ -63,6 +63,11 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   Kokkos::View<double *[6], DeviceType> d_mat;
   Kokkos::View<polydem::WallDamping<double> *, DeviceType> d_dtab;
   Kokkos::View<char *, DeviceType> d_workspace;
+  // near lists (keyword cache), per local atom
+  Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> d_near_ref;
+  Kokkos::View<int *, DeviceType> d_near_count;
+  Kokkos::View<int **, Kokkos::LayoutRight, DeviceType> d_near_tri;
+  Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> d_near_gap;
   int nslots;
 
   void compute_forces(bool update) override;

@@ -216,6 +216,14 @@ namespace gjk_detail {
     return best;
   }
 
+  // closest point of the simplex w[0..n-1] (n = 2, 3, 4) to the origin; reduces it
+  template <typename T> POLYDEM_FN Vec3<T> closest_simplex(Vec3<T> *w, int &n)
+  {
+    if (n == 2) return closest_segment(w, n);
+    if (n == 3) return closest_triangle(w, n);
+    return closest_tetra(w, n);
+  }
+
 }    // namespace gjk_detail
 
 // GJK (seed Algorithm I, distance form). Reports STATUS_OK (intersecting) if
@@ -265,12 +273,7 @@ gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b, T tol_rel = T(1000
       return res;
     }
     w[n++] = sp;
-    if (n == 2)
-      v = gjk_detail::closest_segment(w, n);
-    else if (n == 3)
-      v = gjk_detail::closest_triangle(w, n);
-    else
-      v = gjk_detail::closest_tetra(w, n);
+    v = gjk_detail::closest_simplex(w, n);
     if (n == 4) {    // origin enclosed by the simplex
       res.status = STATUS_OK;
       return res;
@@ -283,6 +286,53 @@ gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b, T tol_rel = T(1000
   }
   res.distance = sqrt(norm2(v));
   return res;
+}
+
+// Certified lower bound of the distance between the convex hulls of the point
+// sets A (na points, xyz) and B (nb points), by GJK on A - B: every support
+// point s of A - B in direction -v gives the separating plane v . p >= v . s,
+// so (v . s)/|v| bounds the distance from below whatever the convergence.
+// Returns 0 if the hulls overlap or touch (within tol [length]); stops early
+// once the bound exceeds stop, or is within 1e-3 of |v| (the upper bound).
+// Bounded: at most GJK_MAX_ITER iterations.
+template <typename T> POLYDEM_FN Vec3<T> support_of_points(const T *P, int np, const Vec3<T> &d)
+{
+  int best = 0;
+  T bd = P[0] * d.x + P[1] * d.y + P[2] * d.z;
+  for (int i = 1; i < np; ++i) {
+    const T e = P[3 * i] * d.x + P[3 * i + 1] * d.y + P[3 * i + 2] * d.z;
+    if (e > bd) {
+      bd = e;
+      best = i;
+    }
+  }
+  return make_vec3(P[3 * best], P[3 * best + 1], P[3 * best + 2]);
+}
+
+template <typename T>
+POLYDEM_FN T hull_gap_lower_bound(const T *A, int na, const T *B, int nb, T tol, T stop)
+{
+  Vec3<T> w[4];
+  int n = 0;
+  Vec3<T> v = make_vec3(A[0] - B[0], A[1] - B[1], A[2] - B[2]);
+  if (!(norm2(v) > tol * tol)) v = make_vec3(T(1), T(0), T(0));
+  v = support_of_points(A, na, -v) - support_of_points(B, nb, v);
+  w[n++] = v;
+  T lb = T(0);
+  for (int it = 0; it < GJK_MAX_ITER; ++it) {
+    const T vv = norm2(v);
+    if (!(vv > tol * tol)) return T(0);    // touching (or NaN)
+    const Vec3<T> sp = support_of_points(A, na, -v) - support_of_points(B, nb, v);
+    const T vn = sqrt(vv);
+    const T b = dot(v, sp) / vn;
+    if (b > lb) lb = b;
+    if (lb > stop || vn - lb <= T(1e-3) * vn) return lb;
+    w[n++] = sp;
+    v = gjk_detail::closest_simplex(w, n);
+    if (n == 4) return T(0);    // origin enclosed: the hulls overlap
+    if (!(norm2(v) < vv)) return lb;    // no progress (round-off)
+  }
+  return lb;
 }
 
 }    // namespace polydem

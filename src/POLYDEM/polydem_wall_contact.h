@@ -71,6 +71,32 @@ struct WallWorkspace {
   T hu[MAXH], hv[MAXH], pu[MAXH], pv[MAXH], qu[MAXH], qv[MAXH];
 };
 
+// Near list of one particle (cache, keyword 'cache'): a Verlet list of
+// particle-triangle pairs in the mesh frame. Built with the particle's pose
+// at reference (x_ref, R_ref): every triangle within r + skin of the centre,
+// each with a certified lower bound g_t of the distance from the particle to
+// the part of the triangle's prism behind its plane that lies within that
+// sphere (hull_gap_lower_bound), kept if g_t <= skin. While every point of
+// the particle has moved by at most m = |x - x_ref| + r |R R_ref^T - I|_2
+// <= skin (|R R_ref^T - I|_2 = sqrt(3 - tr R R_ref^T)), a triangle with
+// g_t > m cannot meet the particle's volume, so only the triangles with
+// g_t <= m are examined; the others are skipped without reading the mesh.
+// The candidates, and so the forces, are those of the full grid query (to
+// round-off; finish() sorts them, so the order does not depend on the path).
+// The lists index local atoms: the fix invalidates them when atoms move
+// between ranks or are sorted (reneighboring) and at setup.
+template <typename T> struct WallNear {
+  T *ref;        // 13: x_ref (3), R_ref row-major (9), mesh frame; the list's skin
+  int *count;    // entries; NEAR_REBUILD: build now; NEAR_OVERFLOW: no list until invalidated
+  int *tri;      // cap triangle indices
+  float *gap;    // cap lower bounds g_t [length], rounded down
+  int cap;
+  T skin;        // [length]; a list that does not fit is built with skin/4, then skin/16
+  int built;     // out: 1 if the list was (re)built by this call
+};
+constexpr int NEAR_REBUILD = -1;
+constexpr int NEAR_OVERFLOW = -2;
+
 template <typename T, int MF, int ME> struct WallAccumulate {
   const PosedShape<T> *a;
   const MeshGridView<T> *g;
@@ -182,6 +208,14 @@ template <typename T, int MF, int ME> struct WallAccumulate {
   POLYDEM_FN void finish()
   {
     const T L = posed_radius(*a);
+    // candidates by triangle index: the grouping below, and so the patches,
+    // do not depend on the order in which the grid or the near list gave them
+    for (int c = 1; c < ws->ncand; ++c) {
+      const int t = ws->cand[c];
+      int k = c;
+      for (; k > 0 && ws->cand[k - 1] > t; --k) ws->cand[k] = ws->cand[k - 1];
+      ws->cand[k] = t;
+    }
     for (int c = 0; c < ws->ncand; ++c) ws->cflag[c] = 0;
     for (int c = 0; c < ws->ncand; ++c) {
       if (ws->cflag[c]) continue;
@@ -376,10 +410,128 @@ template <typename T, int MF, int ME> struct WallAccumulate {
   }
 };
 
-// Patches of posed particle a (mesh frame) against the mesh; r: bounding radius.
+// Certified lower bound of the distance from the particle (posed vertices
+// ws.verts, centre c) to the part of triangle t's prism behind its plane
+// that lies within the sphere (c, reach). The plane alone bounds it when the
+// particle is in front of it; else GJK against the prism truncated at the
+// sphere's deepest point behind the plane.
+template <typename T, int MF, int ME>
+POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace<T, MF, ME> &ws,
+                            int nv, const Vec3<T> &c, T reach, T stop)
+{
+  const T *pl = g.plane + 4 * t;
+  T hmin = T(1e300);
+  for (int i = 0; i < nv; ++i) {
+    const T h = pl[0] * ws.verts[3 * i] + pl[1] * ws.verts[3 * i + 1] +
+        pl[2] * ws.verts[3 * i + 2] - pl[3];
+    hmin = h < hmin ? h : hmin;
+  }
+  if (hmin > T(0)) return hmin;
+  const T depth = reach - (pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3]);
+  T B[18];
+  const T *q = g.tri + 9 * t;
+  for (int v = 0; v < 3; ++v)
+    for (int k = 0; k < 3; ++k) {
+      B[3 * v + k] = q[3 * v + k];
+      B[9 + 3 * v + k] = q[3 * v + k] - depth * pl[k];
+    }
+  return hull_gap_lower_bound(ws.verts, nv, B, 6, T(1e-12) * reach, stop);
+}
+
+// grid visitor of a near-list build: keeps (t, g_t) for g_t <= skin (overflow: stops)
+template <typename T, int MF, int ME> struct WallNearBuild {
+  const MeshGridView<T> *g;
+  const WallWorkspace<T, MF, ME> *ws;
+  WallNear<T> *near;
+  Vec3<T> c;
+  T reach, skin;
+  int nv, n;
+  bool overflow;
+  POLYDEM_FN void operator()(int t)
+  {
+    if (overflow) return;
+    const T gap = wall_prism_gap(*g, t, *ws, nv, c, reach, skin);
+    if (!(gap <= skin)) return;
+    if (n == near->cap) {
+      overflow = true;
+      return;
+    }
+    near->tri[n] = t;
+    near->gap[n] = float(gap * T(1 - 1e-6));    // float rounding is < 1e-7 relative
+    n++;
+  }
+};
+
+// Visits the candidate triangles of a through its near list (rebuilt when
+// the motion bound exceeds the skin). False if the list cannot be used (it
+// overflowed, or the pose is not finite): the caller queries the grid.
+template <typename T, int MF, int ME>
+POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g,
+                                WallWorkspace<T, MF, ME> &ws, WallNear<T> &near,
+                                WallAccumulate<T, MF, ME> &acc)
+{
+  near.built = 0;
+  if (*near.count == NEAR_OVERFLOW) return false;
+  const T r = posed_radius(a);
+  if (!(norm2(a.x) < T(1e300)) || !(r > T(0))) return false;
+  T amax = fabs(a.x.x) > fabs(a.x.y) ? fabs(a.x.x) : fabs(a.x.y);
+  amax = fabs(a.x.z) > amax ? fabs(a.x.z) : amax;
+  // round-off of the motion bound and of the gaps [length]
+  const T slack = T(1e-7) * r + T(1e-13) * amax;
+  T m = T(0);
+  if (*near.count >= 0) {
+    const T *ref = near.ref;
+    T tr = T(0);
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) tr += a.R.m[i][k] * ref[3 + 3 * i + k];
+    const T rot = T(3) - tr;
+    m = norm(a.x - make_vec3(ref[0], ref[1], ref[2])) + r * sqrt(rot > T(0) ? rot : T(0)) + slack;
+    if (!(m <= ref[12])) *near.count = NEAR_REBUILD;
+  }
+  if (*near.count == NEAR_REBUILD) {
+    // a list that does not fit is built again with a 4x smaller skin (at
+    // most twice): a particle on a fine mesh keeps a short list, rebuilt
+    // more often, instead of querying the grid every step
+    WallNearBuild<T, MF, ME> b;
+    b.g = &g;
+    b.ws = &ws;
+    b.near = &near;
+    b.c = a.x;
+    b.nv = a.view->nverts;
+    b.skin = near.skin;
+    near.built = 1;
+    for (int attempt = 0; attempt < 3; ++attempt, b.skin *= T(0.25)) {
+      b.reach = r + b.skin;
+      b.n = 0;
+      b.overflow = false;
+      mesh_for_each_near(g, a.x, b.reach, b);
+      if (!b.overflow) break;
+    }
+    if (b.overflow) {
+      *near.count = NEAR_OVERFLOW;
+      return false;
+    }
+    near.ref[12] = b.skin;
+    *near.count = b.n;
+    near.ref[0] = a.x.x;
+    near.ref[1] = a.x.y;
+    near.ref[2] = a.x.z;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) near.ref[3 + 3 * i + k] = a.R.m[i][k];
+    m = slack;
+  }
+  const int n = *near.count;
+  for (int e = 0; e < n; ++e)
+    if (T(near.gap[e]) <= m && mesh_tri_near(g, near.tri[e], a.x, r)) acc(near.tri[e]);
+  return true;
+}
+
+// Patches of posed particle a (mesh frame) against the mesh; r: bounding
+// radius. near: the particle's near list, or nullptr for the grid query.
 template <typename T, int MF, int ME>
 POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T cosmax,
-                             WallWorkspace<T, MF, ME> &ws, WallPatches<T> &out)
+                             WallWorkspace<T, MF, ME> &ws, WallPatches<T> &out,
+                             WallNear<T> *near = nullptr)
 {
   out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = 0;
   const ShapeView<T> &sv = *a.view;
@@ -402,7 +554,8 @@ POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T
   acc.cosmax = cosmax;
   ws.ncand = 0;
   ws.pvalid = 0;
-  mesh_for_each_near(g, a.x, posed_radius(a), acc);
+  if (!(near && near->cap > 0 && wall_near_visit(a, g, ws, *near, acc)))
+    mesh_for_each_near(g, a.x, posed_radius(a), acc);
   acc.finish();
 }
 
@@ -612,14 +765,15 @@ POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab
                                       const ContactParams<T> &p, const WallDamping<T> &damp,
                                       T cosmax, const Vec3<T> &v, const Vec3<T> &w, T *hist,
                                       bool update,
-                                      WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P)
+                                      WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P,
+                                      WallNear<T> *near = nullptr)
 {
   Pose<T> pm;
   pm.x = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
   pm.q = qmul(qconj(mp.q), lab.q);
   pm.s = lab.s;
   const PosedShape<T> a = make_posed(sv, pm);
-  wall_patches(a, g, cosmax, ws, P);
+  wall_patches(a, g, cosmax, ws, P, near);
   // inverse principal moments: I = rho s^5 I_unit, rho = m / (s^3 V_unit)
   const T rho = p.meff / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
   const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),

@@ -23,9 +23,11 @@ struct Snapshot {
   std::map<long, std::vector<double>> atoms;    // f, torque, x, v, wall history
   std::vector<double> vec;                      // the fix's global vector + scalar
   double max_contacts = 0.0;                    // wall contacts, most seen every 50 steps
+  double max_contacts2 = 0.0;                   // same, second mesh
 };
 
-Snapshot run(const std::vector<std::string> &extra, const std::string &fixargs)
+Snapshot run(const std::vector<std::string> &extra, const std::string &fixargs,
+             const std::string &fix2args = "")
 {
   const std::string data = scene_data(tmpdir() + "/kk.data", 3, 0.06, 21);
   Lmp l(extra);
@@ -35,11 +37,14 @@ Snapshot run(const std::vector<std::string> &extra, const std::string &fixargs)
       if (c == "neighbor 0.002 bin") c = "newton off";    // with -pk newton off
   l.cmds(cmds);
   l.cmds({"neighbor 0.002 bin", "fix w all wall/mesh " + fixargs});
+  if (!fix2args.empty()) l.cmd("fix w2 all wall/mesh " + fix2args);
   Snapshot s;
   auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
-  for (int k = 0; k < 10; k++) {    // 500 steps; the most wall contacts seen at the ends
-    l.cmd("run 50");
+  auto *fix2 = fix2args.empty() ? nullptr : l.lmp->modify->fix[l.lmp->modify->find_fix("w2")];
+  for (int k = 0; k < 50; k++) {    // 500 steps; the most wall contacts seen at the ends
+    l.cmd("run 10");
     s.max_contacts = std::fmax(s.max_contacts, fix->compute_vector(6));
+    if (fix2) s.max_contacts2 = std::fmax(s.max_contacts2, fix2->compute_vector(6));
   }
   auto *a = l.lmp->atom;
   for (int i = 0; i < a->nlocal; i++) {
@@ -89,4 +94,14 @@ TEST(WallKokkos, KkEqualsPlain)
     compare(p, k, move.c_str());
     EXPECT_GE(p.max_contacts, 1.0);    // the wall was touched during the run
   }
+  // and a curved floor (4,608 facets, none coplanar, near lists on by
+  // default) under the particles, inside the box
+  const std::string curved = tmpdir() + "/kk_bowl.stl";
+  write_binary(curved, bowl(0, 0.06, 0, 0.06, 0.0003, 0.3, 48));
+  const std::string args = box + " friction 0.6 restitution 0.4";
+  const std::string args2 = curved + " friction 0.5 restitution 0.5";
+  const Snapshot p = run({}, args, args2), k = run(KK, args, args2);
+  compare(p, k, "box and curved floor");
+  std::printf("[ wall     ] curved floor: up to %g contacts\n", p.max_contacts2);
+  EXPECT_GE(p.max_contacts2, 5.0);    // the curved floor was touched
 }

@@ -86,6 +86,18 @@ inline Tris flat(double x0, double x1, double y0, double y1, double z, int nx, i
   return t;
 }
 
+// Curved floor: the jittered flat mesh lifted onto the paraboloid
+// z = z0 + ((x - cx)^2 + (y - cy)^2) / (2 Rc), facing up (no two facets coplanar).
+inline Tris bowl(double x0, double x1, double y0, double y1, double z0, double Rc, int n,
+                 unsigned seed = 5)
+{
+  Tris t = flat(x0, x1, y0, y1, 0.0, n, n, true, 0.2, seed);
+  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+  for (size_t k = 0; k < t.size(); k += 3)
+    t[k + 2] = z0 + ((t[k] - cx) * (t[k] - cx) + (t[k + 1] - cy) * (t[k + 1] - cy)) / (2.0 * Rc);
+  return t;
+}
+
 // Fan triangulation of the same rectangle around an off-centre point:
 // long thin triangles meeting at one vertex (a strongly irregular mesh).
 inline Tris fan(double x0, double x1, double y0, double y1, double z, int nside, double cx,
