@@ -2,7 +2,8 @@
 # fix wall/mesh scale benchmark (issue 5 acceptance 4): the same 0.3 m x 0.3 m
 # floor as 10,082 and as 150,152 triangles (flat: make_floor.py; gently curved,
 # radius 5 m, no two facets coplanar: make_bowl.py), 225 dodecahedra resting
-# and sliding on it, with coplanar merging (default) and without (merge no).
+# and sliding on it, with coplanar merging (default) and without (merge no),
+# and on the curved floor with near lists (cache 128, default) and without (cache 0).
 # Prints wall and CPU time per particle-step of the second run (1000 steps,
 # all in contact), where the fix is > 99 % of the time.
 #   bash run.sh [path/to/lmp] [repeats]
@@ -15,19 +16,20 @@ cd "$(dirname "$0")"
 [ -f bowl10k.stl ] || python3 make_bowl.py bowl10k.stl 71 0.3 5.0
 [ -f bowl150k.stl ] || python3 make_bowl.py bowl150k.stl 274 0.3 5.0
 for r in $(seq "$reps"); do
-  for c in "floor10k 1e-9" "floor150k 1e-9" "floor10k no" "floor150k no" "bowl10k 1e-9" "bowl150k 1e-9"; do
+  for c in "floor10k 1e-9 128" "floor150k 1e-9 128" "floor10k no 128" "floor150k no 128" \
+           "bowl10k 1e-9 0" "bowl150k 1e-9 0" "bowl10k 1e-9 128" "bowl150k 1e-9 128"; do
     set -- $c
-    m=$1; merge=$2
+    m=$1; merge=$2; cache=$3
     lift=0.0095
     [[ $m == bowl* ]] && lift=0.0140    # rim of the bowl 4.5 mm above its centre
-    "$lmp" -in in.floor -var mesh $m.stl -var merge $merge -var lift $lift -var pot ../../potentials \
-      -log log.$m.$merge -screen none
-    awk -v m="$m merge $merge" '/^Loop time/ {loop = $4; steps = $9; atoms = $12}
+    "$lmp" -in in.floor -var mesh $m.stl -var merge $merge -var cache $cache -var lift $lift \
+      -var pot ../../potentials -log log.$m.$merge.c$cache -screen none
+    awk -v m="$m merge $merge cache $cache" '/^Loop time/ {loop = $4; steps = $9; atoms = $12}
                  /CPU use/ {cpu = $1 + 0}
                  /^Modify/ {mod = $NF}
                  /triangles read/ {tri = $7}
                  /coplanar regions/ {after = $10}
-                 END {printf "%-22s %7d triangles (%d used): %.2f us/particle-step wall, %.2f us CPU (%.0f%% CPU), fix %.1f%%\n",
-                      m, tri, after ? after : tri, 1e6 * loop / (steps * atoms), 1e6 * loop * cpu / 100 / (steps * atoms), cpu, mod}' log.$m.$merge
+                 END {printf "%-32s %7d triangles (%d used): %.2f us/particle-step wall, %.2f us CPU (%.0f%% CPU), fix %.1f%%\n",
+                      m, tri, after ? after : tri, 1e6 * loop / (steps * atoms), 1e6 * loop * cpu / 100 / (steps * atoms), cpu, mod}' log.$m.$merge.c$cache
   done
 done

@@ -8,9 +8,12 @@
 #include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_dummy.h"
+#include "fix_neigh_history.h"
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
+#include "modify.h"
 #include "neigh_list.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -25,11 +28,14 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
+static constexpr int SIZE_HISTORY = 3;    // tangential displacement s
+
 /* ---------------------------------------------------------------------- */
 
 PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
     Pair(lmp), kn(nullptr), restitution(nullptr), overlap_warn(0.05), overlap(polydem::OVERLAP_CENTRE),
-    damping_mass(polydem::DAMPING_REDUCED), avec(nullptr)
+    damping_mass(polydem::DAMPING_REDUCED), friction(nullptr), kt_ratio(2.0 / 7.0), gt_ratio(0.5),
+    use_history(0), fix_dummy(nullptr), fix_history(nullptr), avec(nullptr)
 {
   single_enable = 0;
   restartinfo = 1;
@@ -42,17 +48,31 @@ PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
   nextra = 2;
   pvector = new double[nextra];
   pvector[0] = pvector[1] = 0.0;
+  nondefault_history_transfer = 0;
+
+  // placeholder so that a history fix (friction) keeps its place in the fix list
+  history_id = 0;
+  while (modify->find_fix("NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id)) >= 0 ||
+         modify->find_fix("NEIGH_HISTORY_ELL" + std::to_string(history_id)) >= 0)
+    history_id++;
+  fix_dummy = (FixDummy *) modify->add_fix("NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id) +
+                                           " all DUMMY");
 }
 
 PairEllipsoid::~PairEllipsoid()
 {
   if (copymode) return;
   delete[] pvector;
+  if (!fix_history)
+    modify->delete_fix("NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id));
+  else
+    modify->delete_fix("NEIGH_HISTORY_ELL" + std::to_string(history_id));
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
     memory->destroy(kn);
     memory->destroy(restitution);
+    memory->destroy(friction);
   }
 }
 
@@ -64,15 +84,17 @@ void PairEllipsoid::allocate()
   memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
   memory->create(kn, n + 1, n + 1, "pair:kn");
   memory->create(restitution, n + 1, n + 1, "pair:restitution");
+  memory->create(friction, n + 1, n + 1, "pair:friction");
   for (int i = 0; i <= n; i++)
     for (int j = 0; j <= n; j++) {
       setflag[i][j] = 0;
-      kn[i][j] = restitution[i][j] = 0.0;
+      kn[i][j] = restitution[i][j] = friction[i][j] = 0.0;
     }
 }
 
 /* ----------------------------------------------------------------------
    pair_style ellipsoid [overlap centre|chord] [damping reduced|contact] [overlap/warn f]
+                        [tangential kt/kn gammat/gamman]
 ------------------------------------------------------------------------- */
 
 void PairEllipsoid::settings(int narg, char **arg)
@@ -80,6 +102,8 @@ void PairEllipsoid::settings(int narg, char **arg)
   overlap_warn = 0.05;
   overlap = polydem::OVERLAP_CENTRE;
   damping_mass = polydem::DAMPING_REDUCED;
+  kt_ratio = 2.0 / 7.0;
+  gt_ratio = 0.5;
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (strcmp(arg[iarg], "overlap") == 0) {
       const std::string v = iarg + 1 < narg ? arg[iarg + 1] : "";
@@ -97,19 +121,32 @@ void PairEllipsoid::settings(int narg, char **arg)
       if (!(overlap_warn > 0.0) || !(overlap_warn <= 1.0))
         error->all(FLERR, "pair_style ellipsoid: overlap/warn must be in (0, 1], got '{}'",
                    arg[iarg + 1]);
+    } else if (strcmp(arg[iarg], "tangential") == 0) {
+      if (iarg + 2 >= narg)
+        error->all(FLERR, "pair_style ellipsoid: tangential needs 2 values: kt/kn gammat/gamman");
+      kt_ratio = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      gt_ratio = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      if (!(kt_ratio > 0.0) || !std::isfinite(kt_ratio))
+        error->all(FLERR, "pair_style ellipsoid: tangential kt/kn must be > 0, got '{}'",
+                   arg[iarg + 1]);
+      if (!(gt_ratio >= 0.0) || !std::isfinite(gt_ratio))
+        error->all(FLERR, "pair_style ellipsoid: tangential gammat/gamman must be >= 0, got '{}'",
+                   arg[iarg + 2]);
+      iarg++;
     } else
       error->all(FLERR, "pair_style ellipsoid: unknown keyword '{}'", arg[iarg]);
   }
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J kn e : normal stiffness (force/length) and restitution
+   pair_coeff I J kn e [mu] : normal stiffness (force/length), restitution,
+   Coulomb friction (default 0: frictionless, the seed's model)
 ------------------------------------------------------------------------- */
 
 void PairEllipsoid::coeff(int narg, char **arg)
 {
-  if (narg != 4)
-    error->all(FLERR, "pair_coeff ellipsoid: expected 'I J kn e', got {} values", narg);
+  if (narg != 4 && narg != 5)
+    error->all(FLERR, "pair_coeff ellipsoid: expected 'I J kn e [mu]', got {} values", narg);
   if (!allocated) allocate();
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
@@ -120,11 +157,15 @@ void PairEllipsoid::coeff(int narg, char **arg)
     error->all(FLERR, "pair_coeff ellipsoid: stiffness kn must be > 0, got '{}'", arg[2]);
   if (!(e > 0.0 && e <= 1.0))
     error->all(FLERR, "pair_coeff ellipsoid: restitution e must be in (0, 1], got '{}'", arg[3]);
+  const double mu = narg == 5 ? utils::numeric(FLERR, arg[4], false, lmp) : 0.0;
+  if (!(mu >= 0.0) || !std::isfinite(mu))
+    error->all(FLERR, "pair_coeff ellipsoid: friction mu must be >= 0, got '{}'", arg[4]);
   int count = 0;
   for (int i = ilo; i <= ihi; i++)
     for (int j = MAX(jlo, i); j <= jhi; j++) {
       kn[i][j] = k;
       restitution[i][j] = e;
+      friction[i][j] = mu;
       setflag[i][j] = 1;
       count++;
     }
@@ -160,8 +201,32 @@ void PairEllipsoid::init_style()
   int irequest = neighbor->request(this, instance_me);
   neighbor->requests[irequest]->size = 1;
 
+  // friction: per-pair tangential history (kept once created, e.g. from a restart)
+  use_history = friction_used() || fix_history != nullptr;
+  if (use_history) {
+    neighbor->requests[irequest]->history = 1;
+    if (fix_history == nullptr) {
+      auto cmd = fmt::format("NEIGH_HISTORY_ELL{} all NEIGH_HISTORY {}", history_id, SIZE_HISTORY);
+      fix_history = (FixNeighHistory *) modify->replace_fix(
+          "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), cmd, 1);
+      fix_history->pair = this;
+    }
+    int ifix = modify->find_fix("NEIGH_HISTORY_ELL" + std::to_string(history_id));
+    if (ifix < 0) error->all(FLERR, "pair_style ellipsoid: history fix not found");
+    fix_history = (FixNeighHistory *) modify->fix[ifix];
+  }
+
   for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
   check_timestep();
+}
+
+// some type pair has friction (all ranks agree: coefficients are global)
+int PairEllipsoid::friction_used() const
+{
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && friction[i][j] > 0.0) return 1;
+  return 0;
 }
 
 /* ----------------------------------------------------------------------
@@ -177,9 +242,11 @@ double PairEllipsoid::init_one(int i, int j)
                  setflag[i][i] ? j : i);
     kn[i][j] = sqrt(kn[i][i] * kn[j][j]);
     restitution[i][j] = sqrt(restitution[i][i] * restitution[j][j]);
+    friction[i][j] = sqrt(friction[i][i] * friction[j][j]);
   }
   kn[j][i] = kn[i][j];
   restitution[j][i] = restitution[i][j];
+  friction[j][i] = friction[i][j];
   double rmax = 0.0;
   for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
   double all;
@@ -231,23 +298,38 @@ void PairEllipsoid::compute(int eflag, int vflag)
     return p;
   };
   auto vec = [](const double *a) { return polydem::make_vec3(a[0], a[1], a[2]); };
+  int **firsttouch = use_history ? fix_history->firstflag : nullptr;
+  double **firstshear = use_history ? fix_history->firstvalue : nullptr;
+  const bool update_history = update->setupflag == 0;
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const auto A = pose(i);
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
+    int *touch = use_history ? firsttouch[i] : nullptr;
+    double *allshear = use_history ? firstshear[i] : nullptr;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
+      // no contact: the pair's tangential history ends
+      auto release = [&]() {
+        if (!use_history) return;
+        touch[jj] = 0;
+        for (int k = 0; k < SIZE_HISTORY; k++) allshear[SIZE_HISTORY * jj + k] = 0.0;
+      };
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const double radsum = radius[i] + radius[j];
-      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) continue;
+      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) {
+        release();
+        continue;
+      }
       const auto B = pose(j);
       const auto c = polydem::ellipsoid_contact(A, B);
-      if (c.status == polydem::STATUS_SEPARATED) continue;
       if (c.status != polydem::STATUS_OK) {
-        local_counts[c.status == polydem::STATUS_NO_CONVERGENCE ? CNT_NOCONV : CNT_DEGENERATE] +=
-            1.0;
+        if (c.status != polydem::STATUS_SEPARATED)
+          local_counts[c.status == polydem::STATUS_NO_CONVERGENCE ? CNT_NOCONV : CNT_DEGENERATE] +=
+              1.0;
+        release();
         continue;
       }
       // a pair with a ghost j is seen on two ranks when newton_pair is off
@@ -260,8 +342,16 @@ void PairEllipsoid::compute(int eflag, int vflag)
           ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass[i], rmass[j])
           : rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
       const double gamma = polydem::ellipsoid_damping(kn[it][jt], meff, restitution[it][jt]);
-      const auto cf = polydem::ellipsoid_force(c, overlap, kn[it][jt], gamma, A.x, B.x, vec(v[i]),
-                                               vec(v[j]), vec(omega[i]), vec(omega[j]));
+      auto cf = polydem::ellipsoid_force(c, overlap, kn[it][jt], gamma, A.x, B.x, vec(v[i]),
+                                         vec(v[j]), vec(omega[i]), vec(omega[j]));
+      if (use_history) {
+        touch[jj] = 1;
+        if (friction[it][jt] > 0.0)
+          polydem::ellipsoid_friction(c, cf, kt_ratio * kn[it][jt], gt_ratio * gamma,
+                                      friction[it][jt], A.x, B.x, vec(v[i]), vec(v[j]),
+                                      vec(omega[i]), vec(omega[j]), update->dt,
+                                      &allshear[SIZE_HISTORY * jj], update_history);
+      }
       if (cf.delta > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
       if (cf.delta < cf.rate * update->dt) local_counts[CNT_COLLISIONS] += w;
       f[i][0] += cf.F_A.x;
@@ -319,6 +409,7 @@ void PairEllipsoid::write_restart(FILE *fp)
       if (setflag[i][j]) {
         fwrite(&kn[i][j], sizeof(double), 1, fp);
         fwrite(&restitution[i][j], sizeof(double), 1, fp);
+        fwrite(&friction[i][j], sizeof(double), 1, fp);
       }
     }
 }
@@ -336,9 +427,11 @@ void PairEllipsoid::read_restart(FILE *fp)
         if (me == 0) {
           utils::sfread(FLERR, &kn[i][j], sizeof(double), 1, fp, nullptr, error);
           utils::sfread(FLERR, &restitution[i][j], sizeof(double), 1, fp, nullptr, error);
+          utils::sfread(FLERR, &friction[i][j], sizeof(double), 1, fp, nullptr, error);
         }
         MPI_Bcast(&kn[i][j], 1, MPI_DOUBLE, 0, world);
         MPI_Bcast(&restitution[i][j], 1, MPI_DOUBLE, 0, world);
+        MPI_Bcast(&friction[i][j], 1, MPI_DOUBLE, 0, world);
       }
     }
 }
@@ -348,6 +441,8 @@ void PairEllipsoid::write_restart_settings(FILE *fp)
   fwrite(&overlap_warn, sizeof(double), 1, fp);
   fwrite(&overlap, sizeof(int), 1, fp);
   fwrite(&damping_mass, sizeof(int), 1, fp);
+  fwrite(&kt_ratio, sizeof(double), 1, fp);
+  fwrite(&gt_ratio, sizeof(double), 1, fp);
 }
 
 void PairEllipsoid::read_restart_settings(FILE *fp)
@@ -356,10 +451,14 @@ void PairEllipsoid::read_restart_settings(FILE *fp)
     utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &overlap, sizeof(int), 1, fp, nullptr, error);
     utils::sfread(FLERR, &damping_mass, sizeof(int), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &kt_ratio, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &gt_ratio, sizeof(double), 1, fp, nullptr, error);
   }
   MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&overlap, 1, MPI_INT, 0, world);
   MPI_Bcast(&damping_mass, 1, MPI_INT, 0, world);
+  MPI_Bcast(&kt_ratio, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&gt_ratio, 1, MPI_DOUBLE, 0, world);
 }
 
 void *PairEllipsoid::extract(const char *str, int &dim)
@@ -367,6 +466,7 @@ void *PairEllipsoid::extract(const char *str, int &dim)
   dim = 2;
   if (strcmp(str, "kn") == 0) return (void *) kn;
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
+  if (strcmp(str, "friction") == 0) return (void *) friction;
   dim = 1;
   if (strcmp(str, "counters") == 0) return (void *) counters;
   return nullptr;

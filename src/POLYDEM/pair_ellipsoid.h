@@ -2,7 +2,8 @@
    POLYDEM - pair_style ellipsoid: exact algebraic contact between rigid
    ellipsoids of atom_style polyhedron (ellipsoid seed §2-4): characteristic
    quartic classification, shrink-to-touch contact point and normal, overlap
-   chord, linear spring + restitution damping, frictionless. Physics in
+   chord, linear spring + restitution damping, optional Cundall-Strack
+   friction with per-pair history. Physics in
    polydem_ellipsoid.h and polydem_ellipsoid_force.h.
 ------------------------------------------------------------------------- */
 
@@ -42,6 +43,12 @@ class PairEllipsoid : public Pair {
 
  protected:
   double **kn, **restitution;    // per type pair
+  double **friction;             // per type pair: Coulomb mu (0: frictionless)
+  double kt_ratio, gt_ratio;     // k_t / k_n, gamma_t / gamma_n (keyword tangential)
+  int use_history;               // some mu > 0: per-pair tangential history
+  class FixDummy *fix_dummy;
+  class FixNeighHistory *fix_history;
+  int history_id;                // suffix of the history fix ID
   double overlap_warn;           // warn for delta > overlap_warn * smallest semi-axis
   int overlap;                   // polydem::OVERLAP_CENTRE or OVERLAP_CHORD
   int damping_mass;              // polydem::DAMPING_REDUCED or DAMPING_CONTACT
@@ -50,6 +57,7 @@ class PairEllipsoid : public Pair {
   double reported[NCOUNT];
 
   void allocate();
+  int friction_used() const;
   void report_counters();
   void check_timestep();
 };

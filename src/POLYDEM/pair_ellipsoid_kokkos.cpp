@@ -207,6 +207,10 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
     error->all(FLERR,
                "pair_style ellipsoid/kk requires newton pair off: use "
                "'-pk kokkos newton off' or 'package kokkos newton off' (default on GPUs)");
+  if (friction_used())
+    error->all(FLERR, "pair_style ellipsoid/kk: friction (pair_coeff mu > 0) is not available "
+               "in the Kokkos style yet; use the plain pair_style ellipsoid (-sf kk off for this "
+               "style: 'suffix off' before pair_style)");
   PairEllipsoid::init_style();
   int irequest = neighbor->nrequest - 1;
   neighbor->requests[irequest]->kokkos_host = std::is_same<DeviceType, LMPHostType>::value &&

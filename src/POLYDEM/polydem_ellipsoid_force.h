@@ -2,7 +2,7 @@
    POLYDEM - normal contact force between two ellipsoids (ellipsoid seed
    §3.2 Eqs. 23-24, §4): linear spring on an overlap delta plus viscous
    damping from the restitution coefficient and the reduced mass.
-   Frictionless (the seed's model). Host/device.
+   Frictionless as in the seed, or with Cundall-Strack friction (below). Host/device.
 
    Two overlap measures (pair_style ellipsoid keyword 'overlap'):
    - chord:  the seed's force F_A = -(k_n delta + gamma_n v_n) n at C with
@@ -125,6 +125,47 @@ POLYDEM_FN EllipsoidForce<T> ellipsoid_force(const EllipsoidContact<T> &c, int o
   }
   f.energy = T(0.5) * kn * f.delta * f.delta;
   return f;
+}
+
+// Tangential friction (pair_coeff ... mu > 0; off in the seed): a Cundall-Strack
+// spring on the tangential displacement s of B's material point at C relative to
+// A's, kept per pair (neighbor history, antisymmetric in A and B). Each step s is
+// turned into the current tangent plane (its length kept) and, when update,
+// incremented by v_t dt; F_t (on B) = -k_t s - gamma_t v_t, capped at mu F_n with
+// F_n = max(0, F_B . n) the normal force; on slip s = -(F_t + gamma_t v_t) / k_t.
+// Torques l x F_t (Eq. 24); the spring's 1/2 k_t |s|^2 joins the pair energy.
+template <typename T>
+POLYDEM_FN void ellipsoid_friction(const EllipsoidContact<T> &c, EllipsoidForce<T> &f, T kt,
+                                   T gammat, T mu, const Vec3<T> &xA, const Vec3<T> &xB,
+                                   const Vec3<T> &vA, const Vec3<T> &vB, const Vec3<T> &wA,
+                                   const Vec3<T> &wB, T dt, T *hist, bool update)
+{
+  const Vec3<T> n = c.n, lA = c.c - xA, lB = c.c - xB;
+  const Vec3<T> vrel = (vB + cross(wB, lB)) - (vA + cross(wA, lA));
+  const Vec3<T> vt = vrel - dot(vrel, n) * n;
+  Vec3<T> s = make_vec3(hist[0], hist[1], hist[2]);
+  const T s2 = norm2(s);
+  s = s - dot(s, n) * n;
+  const T p2 = norm2(s);
+  s = p2 > T(0) ? sqrt(s2 / p2) * s : make_vec3(T(0), T(0), T(0));
+  if (update) s = s + dt * vt;
+  Vec3<T> Ft = (-kt) * s - gammat * vt;
+  const T Fn = -dot(f.F_A, n);
+  const T cap = mu * (Fn > T(0) ? Fn : T(0));
+  const T ft = norm(Ft);
+  if (ft > cap) {
+    Ft = ft > T(0) ? (cap / ft) * Ft : Ft;
+    s = (T(-1) / kt) * (Ft + gammat * vt);
+  }
+  f.F_A = f.F_A - Ft;
+  f.tau_A = f.tau_A + cross(lA, -Ft);
+  f.tau_B = f.tau_B + cross(lB, Ft);
+  f.energy += T(0.5) * kt * norm2(s);
+  if (update) {
+    hist[0] = s.x;
+    hist[1] = s.y;
+    hist[2] = s.z;
+  }
 }
 
 }    // namespace polydem
