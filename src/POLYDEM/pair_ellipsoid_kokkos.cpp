@@ -12,12 +12,14 @@
 #include "force.h"
 #include "kokkos.h"
 #include "memory_kokkos.h"
+#include "modify.h"
 #include "neigh_list_kokkos.h"
 #include "neigh_request.h"
 #include "neighbor.h"
 #include "update.h"
 
 #include "polydem_ellipsoid_force.h"
+#include "polydem_history_kokkos.h"
 #include "polydem_kokkos_masks.h"
 #include "polydem_shape_template.h"
 
@@ -68,7 +70,17 @@ template <class DeviceType> struct EllContactFunctor {
   typename AT::t_int_1d_randomread ilist, numneigh;
   typename AT::t_neighbors_2d neighbors;
   Kokkos::View<double *[3], DeviceType> axes;
-  Kokkos::View<double **, DeviceType> kn, en;
+  Kokkos::View<double **, DeviceType> kn, en, mu;
+  // friction (use_history): per-pair tangential displacement, stored as the
+  // displacement of the lower-tag atom's point relative to the other's (the
+  // Kokkos history fix copies it to the partner unchanged; see
+  // pair_polyhedron_kokkos.cpp); partner counts at reneighboring
+  typename AT::t_tagint_1d_randomread tag;
+  typename AT::t_int_2d firsttouch;
+  typename AT::t_float_2d firstshear;
+  Kokkos::View<int *, DeviceType> npartner;
+  int use_history, shearupdate, count_partners;
+  double kt_ratio, gt_ratio;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
   int nlocal, newton_pair, overlap, damping_mass;
@@ -86,6 +98,14 @@ template <class DeviceType> struct EllContactFunctor {
     return p;
   }
 
+  // no contact: the pair's tangential history ends
+  KOKKOS_INLINE_FUNCTION void release(int i, int jj) const
+  {
+    if (!use_history) return;
+    firsttouch(i, jj) = 0;
+    for (int k = 0; k < 3; k++) firstshear(i, 3 * jj + k) = 0.0;
+  }
+
   KOKKOS_INLINE_FUNCTION void operator()(const int ii, EllReduce &red) const
   {
     const int i = ilist(ii);
@@ -93,15 +113,23 @@ template <class DeviceType> struct EllContactFunctor {
     const int jnum = numneigh(i);
     for (int jj = 0; jj < jnum; jj++) {
       const int j = neighbors(i, jj) & NEIGHMASK;
+      if (count_partners) {
+        Kokkos::atomic_increment(&npartner(i));
+        if (j < nlocal) Kokkos::atomic_increment(&npartner(j));
+      }
       const double delx = x(i, 0) - x(j, 0), dely = x(i, 1) - x(j, 1), delz = x(i, 2) - x(j, 2);
       const double radsum = radius(i) + radius(j);
-      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) continue;
+      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) {
+        release(i, jj);
+        continue;
+      }
       const auto B = pose(j);
       const auto c = polydem::ellipsoid_contact(A, B);
-      if (c.status == polydem::STATUS_SEPARATED) continue;
       if (c.status != polydem::STATUS_OK) {
-        red.cnt[c.status == polydem::STATUS_NO_CONVERGENCE ? PairEllipsoid::CNT_NOCONV
-                                                           : PairEllipsoid::CNT_DEGENERATE] += 1.0;
+        if (c.status != polydem::STATUS_SEPARATED)
+          red.cnt[c.status == polydem::STATUS_NO_CONVERGENCE ? PairEllipsoid::CNT_NOCONV
+                                                             : PairEllipsoid::CNT_DEGENERATE] += 1.0;
+        release(i, jj);
         continue;
       }
       const double w = (newton_pair || j < nlocal) ? 1.0 : 0.5;    // ghost pairs: 2 ranks
@@ -115,11 +143,23 @@ template <class DeviceType> struct EllContactFunctor {
           ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass(i), rmass(j))
           : rmass(i) * rmass(j) / (rmass(i) + rmass(j));
       const double gamma = polydem::ellipsoid_damping(kn(it, jt), meff, en(it, jt));
-      const auto cf = polydem::ellipsoid_force(
-          c, overlap, kn(it, jt), gamma, A.x, B.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
-          polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
-          polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)),
-          polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2)));
+      const auto vi = polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2));
+      const auto vj = polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2));
+      const auto wi = polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2));
+      const auto wj = polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2));
+      auto cf = polydem::ellipsoid_force(c, overlap, kn(it, jt), gamma, A.x, B.x, vi, vj, wi, wj);
+      if (use_history) {
+        firsttouch(i, jj) = 1;
+        if (mu(it, jt) > 0.0) {
+          const double sign = tag(i) < tag(j) ? 1.0 : -1.0;    // exact: as the plain style
+          double hist[3];
+          for (int k = 0; k < 3; k++) hist[k] = sign * firstshear(i, 3 * jj + k);
+          polydem::ellipsoid_friction(c, cf, kt_ratio * kn(it, jt), gt_ratio * gamma, mu(it, jt),
+                                      A.x, B.x, vi, vj, wi, wj, dt, hist, shearupdate != 0);
+          if (shearupdate)
+            for (int k = 0; k < 3; k++) firstshear(i, 3 * jj + k) = sign * hist[k];
+        }
+      }
       if (cf.delta > overlap_warn * amin) red.cnt[PairEllipsoid::CNT_BIGOVERLAP] += 1.0;
       if (cf.delta < cf.rate * dt) red.cnt[PairEllipsoid::CNT_COLLISIONS] += w;
 
@@ -180,7 +220,7 @@ PairEllipsoidKokkos<DeviceType>::PairEllipsoidKokkos(LAMMPS *lmp) :
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
   execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
-  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | MASK_MASK |
+  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | MASK_MASK | TAG_MASK |
       ENERGY_MASK | VIRIAL_MASK | RMASS_MASK | RADIUS_MASK | POLYDEM_ALL_MASK;
   datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
 }
@@ -207,10 +247,14 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
     error->all(FLERR,
                "pair_style ellipsoid/kk requires newton pair off: use "
                "'-pk kokkos newton off' or 'package kokkos newton off' (default on GPUs)");
-  if (friction_used())
-    error->all(FLERR, "pair_style ellipsoid/kk: friction (pair_coeff mu > 0) is not available "
-               "in the Kokkos style yet; use the plain pair_style ellipsoid (-sf kk off for this "
-               "style: 'suffix off' before pair_style)");
+  // friction: the Kokkos history fix takes the placeholder's place before
+  // the plain init_style (which would otherwise create a plain one)
+  if (friction_used() && fix_history == nullptr) {
+    fix_history = polydem_kk::create_history_fix<DeviceType>(
+        modify, "NEIGH_HISTORY_ELL" + std::to_string(history_id),
+        "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), 3, execution_space == Device);
+    fix_history->pair = this;
+  }
   PairEllipsoid::init_style();
   int irequest = neighbor->nrequest - 1;
   neighbor->requests[irequest]->kokkos_host = std::is_same<DeviceType, LMPHostType>::value &&
@@ -241,15 +285,19 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::update_device_
     const int n = atom->ntypes;
     d_kn = Kokkos::View<double **, DeviceType>("ellipsoid/kk:kn", n + 1, n + 1);
     d_en = Kokkos::View<double **, DeviceType>("ellipsoid/kk:en", n + 1, n + 1);
+    d_mu = Kokkos::View<double **, DeviceType>("ellipsoid/kk:mu", n + 1, n + 1);
+    auto hm = Kokkos::create_mirror_view(d_mu);
     auto hk = Kokkos::create_mirror_view(d_kn);
     auto he = Kokkos::create_mirror_view(d_en);
     for (int i = 1; i <= n; i++)
       for (int j = 1; j <= n; j++) {
         hk(i, j) = kn[i][j];
         he(i, j) = restitution[i][j];
+        hm(i, j) = friction[i][j];
       }
     Kokkos::deep_copy(d_kn, hk);
     Kokkos::deep_copy(d_en, he);
+    Kokkos::deep_copy(d_mu, hm);
     params_dirty = 0;
   }
 }
@@ -294,6 +342,26 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   fn.axes = d_axes;
   fn.kn = d_kn;
   fn.en = d_en;
+  fn.mu = d_mu;
+  fn.use_history = use_history;
+  fn.kt_ratio = kt_ratio;
+  fn.gt_ratio = gt_ratio;
+  fn.shearupdate = update->setupflag ? 0 : 1;
+  fn.count_partners = 0;
+  const int nlocal = atom->nlocal;
+  if (use_history) {
+    auto *fh = (FixNeighHistoryKokkos<DeviceType> *) fix_history;
+    fn.tag = atomKK->k_tag.view<DeviceType>();
+    fn.firsttouch = fh->k_firstflag.template view<DeviceType>();
+    fn.firstshear = fh->k_firstvalue.template view<DeviceType>();
+    fn.count_partners = neighbor->ago == 0;
+    if (fn.count_partners) {
+      if ((int) d_npartner.extent(0) < nlocal)
+        d_npartner = Kokkos::View<int *, DeviceType>("ellipsoid/kk:npartner", atom->nmax);
+      Kokkos::deep_copy(d_npartner, 0);
+    }
+    fn.npartner = d_npartner;
+  }
   if (eflag_atom) fn.eatom = k_eatom.template view<DeviceType>();
   if (vflag_atom) fn.vatom = k_vatom.template view<DeviceType>();
   fn.nlocal = atom->nlocal;
@@ -310,6 +378,8 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   EllReduce red;
   Kokkos::parallel_reduce(
       Kokkos::RangePolicy<typename DeviceType::execution_space>(0, list->inum), fn, red);
+  if (fn.count_partners)
+    polydem_kk::ensure_partners<DeviceType>(fix_history, d_npartner, nlocal, atom->nmax, world);
   if (eflag_global) eng_vdwl += red.evdwl;
   if (vflag_global)
     for (int k = 0; k < 6; k++) virial[k] += red.v[k];

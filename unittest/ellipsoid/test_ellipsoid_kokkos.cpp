@@ -33,7 +33,8 @@ int me()
   return r;
 }
 
-std::vector<std::string> setup(const std::string &overlap)
+// mu: "" (frictionless) or " 0.5" (pair_coeff friction, per-pair history)
+std::vector<std::string> setup(const std::string &overlap, const std::string &mu = "")
 {
   polydem_test::GasSpec g;
   g.n_side = 6;
@@ -50,7 +51,7 @@ std::vector<std::string> setup(const std::string &overlap)
           "comm_modify vel yes", "newton off",
           "polyhedron_shape e ellipsoid " + num(g.xi * b) + " " + num(b) + " " + num(b),
           "read_data " + data, "pair_style ellipsoid overlap " + overlap,
-          "pair_coeff * * 1e8 0.9", "neighbor " + num(0.2 * b) + " bin",
+          "pair_coeff * * 1e8 0.9" + mu, "neighbor " + num(0.2 * b) + " bin",
           "neigh_modify every 1 delay 0 check yes", "fix 1 all nve/polyhedron",
           "compute cp all pair ellipsoid", "thermo_style custom step pe press c_cp[1] c_cp[2]",
           "thermo 50", "timestep " + num(tc / 50.0)};
@@ -134,17 +135,20 @@ void compare(const std::vector<double> &a, const std::vector<double> &b, Lmp &la
 TEST(EllipsoidKokkos, MatchesPlain)
 {
   // overlap (and damping) settings of pair_style ellipsoid
-  for (std::string ov : {"centre", "chord", "centre damping contact", "chord damping contact"}) {
+  for (std::string ovmu : {"centre", "chord", "centre damping contact", "chord damping contact",
+                           "centre damping contact| 0.5", "chord| 0.3"}) {
+    const size_t bar = ovmu.find('|');
+    const std::string ov = ovmu.substr(0, bar), mu = bar == std::string::npos ? "" : ovmu.substr(bar + 1);
     Lmp plain, kk(KK);
-    plain.cmds(setup(ov));
-    kk.cmds(setup(ov));
+    plain.cmds(setup(ov, mu));
+    kk.cmds(setup(ov, mu));
     ASSERT_EQ(std::string(kk.lmp->force->pair_style), "ellipsoid/kk");
     // the lattice needs about 1500 steps before the first collisions
     for (int r = 0; r < 3; r++) {
       plain.cmd(r == 0 ? "run 2000" : "run 100");
       kk.cmd(r == 0 ? "run 2000" : "run 100");
       const auto a = gather(kk, MPI_COMM_WORLD), b = gather(plain, MPI_COMM_WORLD);
-      compare(a, b, kk, plain, ("kk vs plain, overlap " + ov).c_str());
+      compare(a, b, kk, plain, ("kk vs plain, overlap " + ov + ", mu" + mu).c_str());
     }
     EXPECT_GT(pairvec(plain, 1), 20.0) << "no contacts: the test tests nothing";
   }
@@ -154,18 +158,20 @@ TEST(EllipsoidKokkos, MatchesPlain)
 // plain and /kk, 2100 steps (collisions from about step 1500)
 TEST(EllipsoidKokkos, RanksAgree)
 {
-  for (bool usekk : {false, true}) {
+  for (int variant = 0; variant < 4; variant++) {
+    const bool usekk = variant % 2;
+    const std::string mu = variant < 2 ? "" : " 0.5";    // friction: histories migrate
     Lmp multi(usekk ? KK : std::vector<std::string>{}, MPI_COMM_WORLD);
     Lmp single(usekk ? KK : std::vector<std::string>{}, MPI_COMM_SELF);
-    multi.cmds(setup("centre damping contact"));
-    single.cmds(setup("centre damping contact"));
+    multi.cmds(setup("centre damping contact", mu));
+    single.cmds(setup("centre damping contact", mu));
     multi.cmd("run 2100");
     single.cmd("run 2100");
     const auto a = gather(multi, MPI_COMM_WORLD), b = gather(single, MPI_COMM_SELF);
     int np;
     MPI_Comm_size(MPI_COMM_WORLD, &np);
     compare(a, b, multi, single,
-            (std::string(usekk ? "kk" : "plain") + ", " + std::to_string(np) + " vs 1 rank")
+            (std::string(usekk ? "kk" : "plain") + ", mu" + mu + ", " + std::to_string(np) + " vs 1 rank")
                 .c_str());
     EXPECT_GT(pairvec(single, 1), 20.0);
   }

@@ -1,0 +1,143 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - per-pair contact history for the Kokkos pair styles
+   (pair_style polyhedron/kk, ellipsoid/kk): a FixNeighHistoryKokkos with
+   working copy_arrays and restart, registered at run time, and the
+   partner-capacity bookkeeping its LAMMPS 29Sep2021 version needs.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_HISTORY_KOKKOS_H
+#define POLYDEM_HISTORY_KOKKOS_H
+
+#include "atom.h"
+#include "fix_neigh_history_kokkos.h"
+#include "modify.h"
+
+#include <mpi.h>
+
+#include <string>
+#include <vector>
+
+namespace polydem_kk {
+
+using namespace LAMMPS_NS;
+
+template <class DeviceType> struct HistoryMaxFunctor {
+  typedef DeviceType device_type;
+  typedef int value_type;
+  Kokkos::View<int *, DeviceType> npartner;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, int &m) const
+  {
+    if (npartner(i) > m) m = npartner(i);
+  }
+  KOKKOS_INLINE_FUNCTION void join(volatile int &dst, const volatile int &src) const
+  {
+    if (src > dst) dst = src;
+  }
+  KOKKOS_INLINE_FUNCTION void init(int &m) const { m = 0; }
+};
+
+/* ----------------------------------------------------------------------
+   FixNeighHistoryKokkos of LAMMPS 29Sep2021 with a complete copy_arrays:
+   the original copies one value per partner instead of dnum, which loses
+   the history whenever atoms are sorted or leave a rank (AtomVec::copy).
+   Registered at run time under its own name (no style file needed).
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+class FixNeighHistoryPolyhedronKokkos : public FixNeighHistoryKokkos<DeviceType> {
+ public:
+  FixNeighHistoryPolyhedronKokkos(LAMMPS *lmp, int narg, char **arg) :
+      FixNeighHistoryKokkos<DeviceType>(lmp, narg, arg)
+  {
+  }
+  void copy_arrays(int i, int j, int delflag) override
+  {
+    // syncs the host arrays, copies the partner IDs, marks the host modified
+    FixNeighHistoryKokkos<DeviceType>::copy_arrays(i, j, delflag);
+    for (int m = 0; m < this->dnum * this->npartner[i]; m++)
+      this->valuepartner[j][m] = this->valuepartner[i][m];
+  }
+  // Restart: FixNeighHistory::unpack_restart puts the partners into its
+  // host page allocator, which the Kokkos fix does not use (its rows are
+  // DualView rows), so a /kk run lost its contact history on read_restart.
+  // Reorder the restart record (n, then tag + dnum values per partner) into
+  // the exchange layout (n, n tags, n * dnum values) and unpack it as the
+  // Kokkos fix unpacks exchanged atoms (host rows, marked modified).
+  void unpack_restart(int nlocal, int nth) override
+  {
+    double **extra = this->atom->extra;
+    const int dnum = this->dnum;
+    int m = 0;
+    for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+    m++;
+    const int n = static_cast<int>(extra[nlocal][m++]);
+    if (n > this->maxpartner) {
+      this->maxpartner = n + 8;    // made equal on all ranks by ensure_partners
+      this->grow_arrays(this->atom->nmax);
+    }
+    std::vector<double> buf(1 + (size_t) n * (1 + dnum));
+    buf[0] = n;
+    for (int k = 0; k < n; k++) {
+      const double *rec = &extra[nlocal][m + k * (1 + dnum)];
+      buf[1 + k] = rec[0];
+      for (int d = 0; d < dnum; d++) buf[1 + n + dnum * k + d] = rec[1 + d];
+    }
+    this->unpack_exchange(nlocal, buf.data());
+  }
+  static Fix *create(LAMMPS *lmp, int narg, char **arg)
+  {
+    return new FixNeighHistoryPolyhedronKokkos<DeviceType>(lmp, narg, arg);
+  }
+};
+
+// the protected partner capacity of FixNeighHistory (see ensure_partners)
+struct HistoryAccess : public FixNeighHistory {
+  static int &capacity(FixNeighHistory *f) { return f->*(&HistoryAccess::maxpartner); }
+};
+
+/* ----------------------------------------------------------------------
+   FixNeighHistoryKokkos of LAMMPS 29Sep2021 grows its partner arrays in
+   pre_exchange without refreshing the device views it writes through
+   (out-of-bounds writes, lost history), and its rows have a fixed
+   capacity that unpack_exchange assumes equal on all ranks. Keep one
+   capacity on all ranks, above the number of list entries of every local
+   atom (npartner, counted at reneighboring), set at each reneighboring
+   (collective: all ranks reneighbor together); grow_arrays() reallocates
+   and refreshes the views.
+------------------------------------------------------------------------- */
+
+template <class DeviceType>
+void ensure_partners(FixNeighHistory *fix, const Kokkos::View<int *, DeviceType> &npartner,
+                     int nlocal, int nmax, MPI_Comm world)
+{
+  HistoryMaxFunctor<DeviceType> fmax;
+  fmax.npartner = npartner;
+  int mine = 0, most = 0, allcap = 0;
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, nlocal),
+                          fmax, mine);
+  MPI_Allreduce(&mine, &most, 1, MPI_INT, MPI_MAX, world);
+  int &cap = HistoryAccess::capacity(fix);
+  // a rank may have grown alone (unpack_restart): take the largest capacity
+  MPI_Allreduce(&cap, &allcap, 1, MPI_INT, MPI_MAX, world);
+  const int want = most > allcap ? most + 8 : allcap;
+  if (want != cap) {
+    cap = want;
+    fix->grow_arrays(nmax);
+  }
+}
+
+// Replaces the pair style's placeholder fix dummy_id by the Kokkos history
+// fix id with nvalues per pair (registered under a run-time style name).
+template <class DeviceType>
+FixNeighHistory *create_history_fix(Modify *modify, const std::string &id,
+                                    const std::string &dummy_id, int nvalues, bool device)
+{
+  const std::string style = std::string("NEIGH_HISTORY/POLYHEDRON/KK/") + (device ? "DEVICE" : "HOST");
+  (*modify->fix_map)[style] = &FixNeighHistoryPolyhedronKokkos<DeviceType>::create;
+  const std::string cmd = id + " all " + style + " " + std::to_string(nvalues);
+  return (FixNeighHistory *) modify->replace_fix(dummy_id, cmd, 1);
+}
+
+}    // namespace polydem_kk
+
+#endif
