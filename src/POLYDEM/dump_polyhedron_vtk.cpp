@@ -11,6 +11,8 @@
 #include "polydem_shape_template.h"
 #include "update.h"
 
+#include <cmath>
+
 using namespace LAMMPS_NS;
 
 static constexpr int NREC = 11;    // id type shape scale x y z qw qx qy qz
@@ -18,7 +20,7 @@ static constexpr int NREC = 11;    // id type shape scale x y z qw qx qy qz
 /* ---------------------------------------------------------------------- */
 
 DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg) :
-    Dump(lmp, narg, arg), avec(nullptr), nexpected(0)
+    Dump(lmp, narg, arg), avec(nullptr), nexpected(0), meshes_version(-1)
 {
   if (narg != 5) error->all(FLERR, "Illegal dump polyhedron/vtk command: expected ID group-ID "
                             "polyhedron/vtk N file");
@@ -77,24 +79,72 @@ void DumpPolyhedronVTK::write_data(int n, double *mybuf)
   if ((bigint) (records.size() / NREC) >= nexpected) write_snapshot();
 }
 
+/* ----------------------------------------------------------------------
+   drawing mesh of a template: a polyhedron's vertices and faces; an
+   ellipsoid (a, b, c) as NLAT x NLON points of its surface
+   (a sin(t) cos(p), b sin(t) sin(p), c cos(t)): triangle fans at the poles,
+   quadrilaterals between the rings (every point lies on the surface)
+------------------------------------------------------------------------- */
+
+const DumpPolyhedronVTK::DrawMesh &DumpPolyhedronVTK::mesh_of(int shape)
+{
+  if (meshes_version != avec->shape_version()) {
+    meshes.clear();
+    meshes_version = avec->shape_version();
+  }
+  if ((int) meshes.size() <= shape) meshes.resize(shape + 1);
+  DrawMesh &m = meshes[shape];
+  if (!m.face_start.empty()) return m;
+  const auto &t = avec->shape(shape);
+  if (t.is_ellipsoid()) {
+    constexpr int NLAT = 8, NLON = 16;    // 2 + 7 x 16 points, 128 faces
+    const auto ax = t.semi_axes();
+    auto point = [&](double th, double ph) {
+      m.verts.insert(m.verts.end(), {ax[0] * std::sin(th) * std::cos(ph),
+                                     ax[1] * std::sin(th) * std::sin(ph), ax[2] * std::cos(th)});
+    };
+    point(0.0, 0.0);    // north pole: 0
+    for (int i = 1; i < NLAT; i++)
+      for (int j = 0; j < NLON; j++) point(M_PI * i / NLAT, 2.0 * M_PI * j / NLON);
+    point(M_PI, 0.0);    // south pole: 1 + (NLAT - 1) NLON
+    const int south = 1 + (NLAT - 1) * NLON;
+    auto ring = [&](int i, int j) { return 1 + (i - 1) * NLON + (j % NLON); };
+    m.face_start.push_back(0);
+    auto face = [&](std::initializer_list<int> f) {
+      m.face_verts.insert(m.face_verts.end(), f);
+      m.face_start.push_back((int) m.face_verts.size());
+    };
+    for (int j = 0; j < NLON; j++) face({0, ring(1, j), ring(1, j + 1)});    // outward
+    for (int i = 1; i < NLAT - 1; i++)
+      for (int j = 0; j < NLON; j++) face({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1)});
+    for (int j = 0; j < NLON; j++) face({south, ring(NLAT - 1, j + 1), ring(NLAT - 1, j)});
+  } else {
+    const auto v = t.view();
+    m.verts.assign(v.verts, v.verts + 3 * v.nverts);
+    m.face_start.assign(v.face_start, v.face_start + v.nfaces + 1);
+    m.face_verts.assign(v.face_verts, v.face_verts + v.face_start[v.nfaces]);
+  }
+  return m;
+}
+
 void DumpPolyhedronVTK::write_snapshot()
 {
   const size_t np = records.size() / NREC;
   bigint nv = 0, nf = 0, nidx = 0;
   for (size_t p = 0; p < np; p++) {
-    const auto v = avec->shape((int) records[p * NREC + 2]).view();
-    nv += v.nverts;
-    nf += v.nfaces;
-    nidx += v.nfaces + v.face_start[v.nfaces];
+    const auto &v = mesh_of((int) records[p * NREC + 2]);
+    nv += v.nverts();
+    nf += v.nfaces();
+    nidx += v.nfaces() + v.face_start.back();
   }
   fmt::print(fp, "# vtk DataFile Version 3.0\nPOLYDEM polyhedra, timestep {}\nASCII\n"
              "DATASET POLYDATA\nPOINTS {} double\n", update->ntimestep, nv);
   for (size_t p = 0; p < np; p++) {
     const double *r = &records[p * NREC];
-    const auto v = avec->shape((int) r[2]).view();
+    const auto &v = mesh_of((int) r[2]);
     const double s = r[3];
     const auto rot = polydem::quat_to_mat(polydem::make_quat(r[7], r[8], r[9], r[10]));
-    for (int k = 0; k < v.nverts; k++) {
+    for (int k = 0; k < v.nverts(); k++) {
       const auto b = polydem::make_vec3(v.verts[3 * k], v.verts[3 * k + 1], v.verts[3 * k + 2]);
       const auto l = polydem::matvec(rot, b);
       fmt::print(fp, "{:.9g} {:.9g} {:.9g}\n", r[4] + s * l.x, r[5] + s * l.y, r[6] + s * l.z);
@@ -103,14 +153,14 @@ void DumpPolyhedronVTK::write_snapshot()
   fmt::print(fp, "POLYGONS {} {}\n", nf, nidx);
   bigint offset = 0;
   for (size_t p = 0; p < np; p++) {
-    const auto v = avec->shape((int) records[p * NREC + 2]).view();
-    for (int f = 0; f < v.nfaces; f++) {
+    const auto &v = mesh_of((int) records[p * NREC + 2]);
+    for (int f = 0; f < v.nfaces(); f++) {
       fmt::print(fp, "{}", v.face_start[f + 1] - v.face_start[f]);
       for (int j = v.face_start[f]; j < v.face_start[f + 1]; j++)
         fmt::print(fp, " {}", offset + v.face_verts[j]);
       fmt::print(fp, "\n");
     }
-    offset += v.nverts;
+    offset += v.nverts();
   }
   const char *names[3] = {"id", "type", "shape"};
   fmt::print(fp, "CELL_DATA {}\n", nf);
@@ -118,9 +168,9 @@ void DumpPolyhedronVTK::write_snapshot()
     fmt::print(fp, "SCALARS {} int 1\nLOOKUP_TABLE default\n", names[c]);
     for (size_t p = 0; p < np; p++) {
       const double *r = &records[p * NREC];
-      const auto v = avec->shape((int) r[2]).view();
+      const int nfp = mesh_of((int) r[2]).nfaces();
       const bigint val = (c == 2) ? (bigint) r[2] + 1 : (bigint) r[c];
-      for (int f = 0; f < v.nfaces; f++) fmt::print(fp, "{}\n", val);
+      for (int f = 0; f < nfp; f++) fmt::print(fp, "{}\n", val);
     }
   }
   fflush(fp);

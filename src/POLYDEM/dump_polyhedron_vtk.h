@@ -34,6 +34,17 @@ class DumpPolyhedronVTK : public Dump {
   class AtomVecPolyhedron *avec;
   bigint nexpected;             // particles in this snapshot
   std::vector<double> records;  // gathered on the writing rank
+  // what is drawn for each shape template (unit scale, body frame): the
+  // polyhedron itself, or a tessellation of an ellipsoid's surface
+  struct DrawMesh {
+    std::vector<double> verts;
+    std::vector<int> face_start, face_verts;
+    int nverts() const { return (int) verts.size() / 3; }
+    int nfaces() const { return (int) face_start.size() - 1; }
+  };
+  std::vector<DrawMesh> meshes;
+  int meshes_version;
+  const DrawMesh &mesh_of(int shape);
   void write_snapshot();
 };
 

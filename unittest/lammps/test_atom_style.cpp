@@ -228,6 +228,62 @@ TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
   std::remove(tmpfile("snap.0.vtk").c_str());
 }
 
+// dump polyhedron/vtk draws an ellipsoid as 114 points of its surface and 128
+// faces: every point, taken back to the body frame, satisfies
+// (x/a)^2 + (y/b)^2 + (z/c)^2 = 1 (to the 9 digits written), rotated and scaled.
+TEST(AtomStyle, DumpVTKDrawsEllipsoids)
+{
+  const std::string vfile = tmpfile("ell.*.vtk");
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
+          "region box block 0 1 0 1 0 1", "create_box 1 box",
+          "polyhedron_shape e ellipsoid 0.03 0.02 0.01", "create_atoms 1 single 0.3 0.4 0.5",
+          "create_atoms 1 single 0.6 0.5 0.5", "polyhedron_set group all density 1000",
+          "polyhedron_set atom 2 quat 1 2 3 50", "polyhedron_set atom 2 scale 1.5",
+          "dump d all polyhedron/vtk 1 " + vfile, "dump_modify d sort id", "run 0"});
+  l.cmd("undump d");
+  const std::string f0 = tmpfile("ell.0.vtk");
+  std::ifstream in(f0);
+  ASSERT_TRUE(in.good()) << f0;
+  std::string line;
+  long npoints = -1, npolys = -1;
+  std::vector<std::array<double, 3>> pts;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string w;
+    ls >> w;
+    if (w == "POINTS") {
+      ls >> npoints;
+      for (long i = 0; i < npoints; i++) {
+        std::array<double, 3> p;
+        in >> p[0] >> p[1] >> p[2];
+        pts.push_back(p);
+      }
+    } else if (w == "POLYGONS")
+      ls >> npolys;
+  }
+  EXPECT_EQ(npoints, 2 * 114);
+  EXPECT_EQ(npolys, 2 * 128);
+  auto st = l.local_state();
+  size_t off = 0;
+  double worst = 0.0;
+  for (auto &kv : st) {
+    const auto &S = kv.second;
+    const auto R = polydem::quat_to_mat(polydem::make_quat(S.q[0], S.q[1], S.q[2], S.q[3]));
+    for (int k = 0; k < 114; k++) {
+      const auto d = polydem::make_vec3(pts[off + k][0] - S.x[0], pts[off + k][1] - S.x[1],
+                                        pts[off + k][2] - S.x[2]);
+      const auto b = polydem::matTvec(R, d);
+      const double u = std::pow(b.x / (S.s * 0.03), 2) + std::pow(b.y / (S.s * 0.02), 2) +
+          std::pow(b.z / (S.s * 0.01), 2);
+      worst = std::fmax(worst, std::fabs(u - 1.0));
+    }
+    off += 114;
+  }
+  EXPECT_LT(worst, 1e-6);
+  std::remove(f0.c_str());
+}
+
 // Bad input gives a LAMMPS error naming the command and the bad word.
 TEST(AtomStyle, BadInputErrors)
 {
