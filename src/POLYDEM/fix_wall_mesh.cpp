@@ -37,7 +37,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0), wall_mu(-1.0),
     core(1.0e-4), patch_angle(20.0), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0),
     hist(nullptr), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
-    near_builds_all(0), near_overflows_all(0), near_builds_run(0)
+    near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
@@ -129,6 +129,13 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       binsize = num(iarg + 1);
       if (!(binsize > 0.0) || !std::isfinite(binsize))
         error->all(FLERR, "fix wall/mesh: bin must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "pertriangle") {
+      need(iarg, 1, "yes or no");
+      const std::string v = arg[iarg + 1];
+      if (v == "yes") pertri = 1;
+      else if (v == "no") pertri = 0;
+      else error->all(FLERR, "fix wall/mesh: pertriangle must be 'yes' or 'no', got '{}'", v);
       iarg += 2;
     } else if (kw == "cache") {
       need(iarg, 1, "entries per particle (0: off)");
@@ -261,6 +268,14 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
 
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
   for (int k = 0; k < 4; k++) counts_local[k] = counts_reported[k] = 0.0;
+  if (pertri) {
+    array_flag = 1;
+    size_array_rows = mesh.ntri();
+    size_array_cols = 4;
+    extarray = 0;
+    tri_local.assign(3 * (size_t) mesh.ntri(), 0.0);
+    tri_global.assign(3 * (size_t) mesh.ntri(), 0.0);
+  }
 
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
@@ -447,6 +462,8 @@ void FixWallMesh::compute_forces(bool update)
 {
   for (int k = 0; k <= NVEC; k++) local[k] = 0.0;
   reduced = 0;
+  tri_reduced = 0;
+  if (pertri) std::fill(tri_local.begin(), tri_local.end(), 0.0);
   double **x = atom->x, **v = atom->v, **f = atom->f, **omg = atom->omega;
   double **torque = atom->torque, **quat = atom->quat;
   const int *mask = atom->mask;
@@ -454,7 +471,13 @@ void FixWallMesh::compute_forces(bool update)
   const auto mp = mesh_pose();
   const auto g = grid_view();
   if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
+  ws->record = pertri;
   polydem::WallPatches<double> P;
+  auto add_tri = [&](int t, double fx, double fy, double fz) {
+    tri_local[3 * (size_t) t] += fx;
+    tri_local[3 * (size_t) t + 1] += fy;
+    tri_local[3 * (size_t) t + 2] += fz;
+  };
   // near lists index local atoms: stale after exchange/sort (reneighboring)
   // and at setup (anything may have changed between runs)
   const bool stale = !update || neighbor->ago == 0;
@@ -491,6 +514,7 @@ void FixWallMesh::compute_forces(bool update)
       near_builds += nl.built;
       if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) counts_local[3] += 1;
     }
+    if (pertri) polydem::wall_triangle_forces(*ws, wf, add_tri);
     counts_local[0] += P.noverflow;
     counts_local[1] += P.ndegenerate;
     counts_local[2] += P.nmerged;
@@ -532,6 +556,32 @@ double FixWallMesh::compute_scalar()
     reduced = 1;
   }
   return global[NVEC];
+}
+
+/* ----------------------------------------------------------------------
+   pertriangle: row = triangle (as used, after merging), columns 1-3 the
+   force of the particles on it (lab frame), 4 its normal pressure
+   -F . n / area (n the triangle's outward normal, lab frame)
+------------------------------------------------------------------------- */
+
+double FixWallMesh::compute_array(int i, int j)
+{
+  if (!tri_reduced) {
+    fetch_triangle_forces();
+    MPI_Allreduce(tri_local.data(), tri_global.data(), (int) tri_local.size(), MPI_DOUBLE,
+                  MPI_SUM, world);
+    tri_reduced = 1;
+  }
+  if (j < 3) return tri_global[3 * (size_t) i + j];
+  const auto mp = mesh_pose();
+  const double *pl = &grid.plane[4 * (size_t) i];
+  const auto n = polydem::matvec(mp.R, polydem::make_vec3(pl[0], pl[1], pl[2]));
+  const double *q = &mesh.tri[9 * (size_t) i];
+  const auto e1 = polydem::make_vec3(q[3] - q[0], q[4] - q[1], q[5] - q[2]);
+  const auto e2 = polydem::make_vec3(q[6] - q[0], q[7] - q[1], q[8] - q[2]);
+  const double area = 0.5 * polydem::norm(polydem::cross(e1, e2));
+  const double *f = &tri_global[3 * (size_t) i];
+  return -(f[0] * n.x + f[1] * n.y + f[2] * n.z) / area;
 }
 
 double FixWallMesh::compute_vector(int n)

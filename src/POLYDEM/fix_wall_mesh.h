@@ -37,6 +37,7 @@ class FixWallMesh : public Fix {
   void post_force(int) override;
   double compute_scalar() override;
   double compute_vector(int) override;
+  double compute_array(int, int) override;
 
   void grow_arrays(int) override;
   void copy_arrays(int, int, int) override;
@@ -91,6 +92,11 @@ class FixWallMesh : public Fix {
   bigint near_builds;    // lists built (statistics, this rank)
   bigint near_builds_all, near_overflows_all;    // all ranks, since the fix was defined (post_run)
   bigint near_builds_run;    // near_builds at the start of the run
+  // per-triangle forces (keyword pertriangle): force on each triangle this
+  // step, this rank (3 per triangle, lab frame), and summed over ranks
+  int pertri, tri_reduced;
+  std::vector<double> tri_local, tri_global;
+  virtual void fetch_triangle_forces() {}    // /kk: device -> tri_local
 
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;

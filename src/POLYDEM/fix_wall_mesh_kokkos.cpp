@@ -40,6 +40,18 @@ template <class V, class S> void upload(V &d, const std::vector<S> &h, const cha
    statement (pose, wall_particle, reaction), sums reduced over threads
 ------------------------------------------------------------------------- */
 
+// pertriangle: shares of the patch forces go to their triangles (atomics:
+// particles on different threads touch the same triangle)
+template <class DeviceType> struct TriAdd {
+  Kokkos::View<double *[3], DeviceType> trif;
+  KOKKOS_INLINE_FUNCTION void operator()(int t, double fx, double fy, double fz) const
+  {
+    Kokkos::atomic_add(&trif(t, 0), fx);
+    Kokkos::atomic_add(&trif(t, 1), fy);
+    Kokkos::atomic_add(&trif(t, 2), fz);
+  }
+};
+
 template <class DeviceType> struct WallMeshKernel {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
@@ -63,6 +75,8 @@ template <class DeviceType> struct WallMeshKernel {
   Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> near_gap;
   int near_cap;
   double near_skin;
+  Kokkos::View<double *[3], DeviceType> trif;    // pertriangle: force on each triangle
+  int pertri;
   polydem::MeshGridView<double> grid;
   polydem::MeshPose<double> mp;
   double cosmax, core, dt;
@@ -82,6 +96,7 @@ template <class DeviceType> struct WallMeshKernel {
     const int i = ibase + slot;
     if (!(mask(i) & groupbit)) return;
     auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
+    ws.record = pertri;
     const polydem::ShapeView<double> &sv = shapes(pshape(i));
     const int t = type(i);
     const double s = pscale(i);
@@ -110,6 +125,10 @@ template <class DeviceType> struct WallMeshKernel {
     const auto wf = polydem::wall_particle(
         sv, pose, mp, grid, p, dtab(t), cosmax, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
         polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P, pn);
+    if (pertri) {
+      TriAdd<DeviceType> add{trif};
+      polydem::wall_triangle_forces(ws, wf, add);
+    }
     if (pn) {
       sum[12] += (nl.built && near_count(i) == polydem::NEAR_OVERFLOW) ? 1.0 : 0.0;
       sum[13] += nl.built;
@@ -295,6 +314,15 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   }
 
   WallMeshKernel<DeviceType> k;
+  k.pertri = pertri;
+  if (pertri) {
+    if ((int) d_trif.extent(0) != mesh.ntri())
+      d_trif = Kokkos::View<double *[3], DeviceType>("wall/mesh/kk:trif", mesh.ntri());
+    else
+      Kokkos::deep_copy(d_trif, 0.0);
+    k.trif = d_trif;
+  }
+  tri_reduced = 0;
   k.near_ref = d_near_ref;
   k.near_count = d_near_count;
   k.near_tri = d_near_tri;
@@ -348,6 +376,16 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   counts_local[3] += total[12];
   near_builds += (bigint) total[13];
   if (stepping && neighbor->ago == 0) report_counts();
+}
+
+// pertriangle: the device sums of this step into the host array
+template <class DeviceType> void FixWallMeshKokkos<DeviceType>::fetch_triangle_forces()
+{
+  if (!pertri || d_trif.extent(0) == 0) return;
+  auto h = Kokkos::create_mirror_view(d_trif);
+  Kokkos::deep_copy(h, d_trif);
+  for (size_t t = 0; t < h.extent(0); t++)
+    for (int c = 0; c < 3; c++) tri_local[3 * t + c] = h(t, c);
 }
 
 /* ----------------------------------------------------------------------

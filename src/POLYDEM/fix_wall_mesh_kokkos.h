@@ -68,9 +68,11 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   Kokkos::View<int *, DeviceType> d_near_count;
   Kokkos::View<int **, Kokkos::LayoutRight, DeviceType> d_near_tri;
   Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> d_near_gap;
+  Kokkos::View<double *[3], DeviceType> d_trif;    // pertriangle
   int nslots;
 
   void compute_forces(bool update) override;
+  void fetch_triangle_forces() override;
   void update_shapes();
   void host_rows_current();    // sync the history to the host before host access
 };

@@ -68,6 +68,12 @@ struct WallWorkspace {
   int cand[WALL_MAX_CAND];
   unsigned char cflag[WALL_MAX_CAND];
   int ncand;
+  // per-triangle record (fix wall/mesh pertriangle yes): triangle, patch,
+  // section area and volume of every clipped triangle
+  int record, nrec;
+  int rtri[WALL_MAX_CAND];
+  signed char rpatch[WALL_MAX_CAND];
+  T rarea[WALL_MAX_CAND], rvol[WALL_MAX_CAND];
   T hu[MAXH], hv[MAXH], pu[MAXH], pv[MAXH], qu[MAXH], qv[MAXH];
 };
 
@@ -196,7 +202,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     const Triangle<T> tri = triangle(t);
     if (separated(t, tri)) return;
     if (ws->ncand < WALL_MAX_CAND) ws->cand[ws->ncand++] = t;
-    else clip_add(tri);
+    else clip_add(tri, t);
   }
 
   // Group the candidates by plane. If the coplanar triangles of a group
@@ -237,15 +243,15 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         }
       }
       Triangle<T> big;
-      if (ng > 1 && covered(tc.v[0], n, big)) {
-        clip_add(big);
+      if (ng > 1 && !ws->record && covered(tc.v[0], n, big)) {
+        clip_add(big, -1);
         for (int k = c; k < ws->ncand; ++k)
           if (ws->cflag[k] == 2) ws->cflag[k] = 1;
       } else {
         for (int k = c; k < ws->ncand; ++k)
           if (ws->cflag[k] == 2) {
             ws->cflag[k] = 1;
-            clip_add(triangle(ws->cand[k]));
+            clip_add(triangle(ws->cand[k]), ws->cand[k]);
           }
       }
     }
@@ -362,7 +368,8 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     return true;
   }
 
-  POLYDEM_FN void clip_add(const Triangle<T> &tri)
+  // t: the triangle's index, or -1 for a coplanar group's large triangle
+  POLYDEM_FN void clip_add(const Triangle<T> &tri, int t)
   {
     const ClipResult<T> r = polyhedron_triangle(*a, tri, ws->clip);
     if (r.status == STATUS_SEPARATED) return;
@@ -401,6 +408,13 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         out->nmerged++;    // more facet orientations than patches: join the closest
     }
     WallPatch<T> &p = out->p[k];
+    if (ws->record && t >= 0 && ws->nrec < WALL_MAX_CAND) {
+      ws->rtri[ws->nrec] = t;
+      ws->rpatch[ws->nrec] = (signed char) k;
+      ws->rarea[ws->nrec] = r.area;
+      ws->rvol[ws->nrec] = r.volume;
+      ws->nrec++;
+    }
     p.volume += r.volume;
     p.area += r.area;
     p.S += r.S;
@@ -554,6 +568,7 @@ POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T
   acc.cosmax = cosmax;
   ws.ncand = 0;
   ws.pvalid = 0;
+  ws.nrec = 0;
   if (!(near && near->cap > 0 && wall_near_visit(a, g, ws, *near, acc)))
     mesh_for_each_near(g, a.x, posed_radius(a), acc);
   acc.finish();
@@ -656,6 +671,7 @@ template <typename T> struct WallForce {
   Vec3<T> f, tau;    // on the particle (torque about its centroid)
   T energy;          // sum of W(V) over patches
   int ncontact;
+  Vec3<T> fpatch[WALL_MAX_PATCH];    // force of each patch of P on the particle (lab)
 };
 
 // Forces of all patches on the particle (lab frame) and the update of its
@@ -674,6 +690,7 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
   out.f = out.tau = make_vec3(T(0), T(0), T(0));
   out.energy = T(0);
   out.ncontact = 0;
+  for (int k = 0; k < WALL_MAX_PATCH; ++k) out.fpatch[k] = make_vec3(T(0), T(0), T(0));
   T newh[WALL_HIST_SIZE];
   for (int i = 0; i < WALL_HIST_SIZE; ++i) newh[i] = T(0);
   bool used[WALL_MAX_PATCH] = {false, false, false, false};
@@ -727,6 +744,7 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
     h[2] = g.normal.z;
     for (int i = 0; i < CONTACT_HIST; ++i) h[3 + i] = shear[i];
     out.f += cf.F_A;
+    out.fpatch[k] = cf.F_A;
     out.tau += cf.tau_A;
     out.energy += cf.energy;
     out.ncontact++;
@@ -779,6 +797,30 @@ POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab
   const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),
                                  T(1) / (rho * s5 * sv.inertia[2]));
   return wall_forces(P, mp, p, damp, Iinv, a.R, cosmax, lab.x, v, w, hist, update);
+}
+
+// Per-triangle forces (fix wall/mesh pertriangle yes): each patch's force on
+// the wall (-F of the patch on the particle) shared among its clipped
+// triangles in proportion to their section areas A_t (by volume if the patch
+// has no section area), so the triangles' forces add up to the patch force;
+// for a flat patch this is a uniform pressure over the contact section.
+// add(t, fx, fy, fz) receives each share (lab frame).
+template <typename T, int MF, int ME, typename F>
+POLYDEM_FN void wall_triangle_forces(const WallWorkspace<T, MF, ME> &ws, const WallForce<T> &wf,
+                                     F &add)
+{
+  T asum[WALL_MAX_PATCH], vsum[WALL_MAX_PATCH];
+  for (int k = 0; k < WALL_MAX_PATCH; ++k) asum[k] = vsum[k] = T(0);
+  for (int e = 0; e < ws.nrec; ++e) {
+    asum[ws.rpatch[e]] += ws.rarea[e];
+    vsum[ws.rpatch[e]] += ws.rvol[e];
+  }
+  for (int e = 0; e < ws.nrec; ++e) {
+    const int k = ws.rpatch[e];
+    const T w = asum[k] > T(0) ? ws.rarea[e] / asum[k]
+                               : (vsum[k] > T(0) ? ws.rvol[e] / vsum[k] : T(0));
+    if (w != T(0)) add(ws.rtri[e], -w * wf.fpatch[k].x, -w * wf.fpatch[k].y, -w * wf.fpatch[k].z);
+  }
 }
 
 }    // namespace polydem
