@@ -50,8 +50,8 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf);
 // outline vertices within tol of the line of their neighbours dropped;
 // holes are joined to the outer outline by bridge edges. Pinched outlines,
 // outlines of more than 2048 vertices (after the collinear ones are dropped)
-// or 256 loops, and any triangulation whose area
-// differs from the region's by more than 1e-9, are kept as read. The wall
+// or 256 loops, and any triangulation whose area differs from the region's
+// by more than 1e-9 of it plus tol x the outline's length, are kept as read. The wall
 // contact of a flat patch does not depend on its triangulation, so forces
 // are unchanged (to round-off, and to tol where vertices were not exactly
 // coplanar); the cost per particle then follows the geometry of the wall.

@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <random>
 #include <set>
@@ -366,6 +368,55 @@ TEST(MergeCoplanar, HolesPinchesAndTolerance)
   Tris strict = bumpy;
   EXPECT_GT(merge_coplanar(strict, 1e-13).after, 150);
   EXPECT_EQ(merge_coplanar(bumpy, 1e-9).after, 2);
+}
+
+// A cone's strip between two generators is planar, but a binary STL stores
+// its vertices as float32: they are off the generator lines by ~1e-8 m, so
+// dropping the "collinear" ones changes the area by ~tol x outline, not 1e-9.
+// With merge tolerance 1e-6 m the strip (40 rings, 79 triangles) becomes one
+// triangle, its area kept to tol x outline; with 1e-12 it stays mostly as read.
+TEST(MergeCoplanar, Float32ConeStrip)
+{
+  const double R = 0.15, D = 0.1, dth = 2 * M_PI / 300;
+  const int nc = 40;
+  Tris t;
+  auto P = [&](int i, double f) {    // f: fraction of the way to the apex
+    const double r = R * (1 - f), th = i * dth;
+    return std::array<double, 3>{(double) (float) (R + r * std::cos(th)),
+                                 (double) (float) (R + r * std::sin(th)), (double) (float) (-D * f)};
+  };
+  double area = 0.0, perim = 0.0;
+  for (int k = 0; k < nc; k++) {
+    const auto a = P(0, (double) k / nc), b = P(1, (double) k / nc);
+    const auto c = P(0, (double) (k + 1) / nc), d = P(1, (double) (k + 1) / nc);
+    const std::array<std::array<double, 3>, 3> tt[2] = {{a, d, c}, {a, b, d}};
+    for (int m = 0; m < (k == nc - 1 ? 1 : 2); m++) {
+      const auto &tr = k == nc - 1 ? std::array<std::array<double, 3>, 3>{a, b, c} : tt[m];
+      for (auto &v : tr) t.insert(t.end(), v.begin(), v.end());
+      const double u[3] = {tr[1][0] - tr[0][0], tr[1][1] - tr[0][1], tr[1][2] - tr[0][2]};
+      const double w[3] = {tr[2][0] - tr[0][0], tr[2][1] - tr[0][1], tr[2][2] - tr[0][2]};
+      area += 0.5 * std::sqrt(std::pow(u[1] * w[2] - u[2] * w[1], 2) +
+                              std::pow(u[2] * w[0] - u[0] * w[2], 2) +
+                              std::pow(u[0] * w[1] - u[1] * w[0], 2));
+    }
+  }
+  perim = 2 * std::hypot(R, D) + R * dth;
+  Tris strict = t, loose = t;
+  const auto s1 = merge_coplanar(strict, 1e-12);
+  const auto s2 = merge_coplanar(loose, 1e-6);
+  double merged_area = 0.0;
+  for (size_t k = 0; k < loose.size(); k += 9) {
+    const double u[3] = {loose[k + 3] - loose[k], loose[k + 4] - loose[k + 1], loose[k + 5] - loose[k + 2]};
+    const double w[3] = {loose[k + 6] - loose[k], loose[k + 7] - loose[k + 1], loose[k + 8] - loose[k + 2]};
+    merged_area += 0.5 * std::sqrt(std::pow(u[1] * w[2] - u[2] * w[1], 2) +
+                                   std::pow(u[2] * w[0] - u[0] * w[2], 2) +
+                                   std::pow(u[0] * w[1] - u[1] * w[0], 2));
+  }
+  std::printf("[ merge    ] float32 cone strip: %d triangles; tol 1e-12 -> %d, tol 1e-6 -> %d "
+              "(area %.9g -> %.9g)\n", s2.before, s1.after, s2.after, area, merged_area);
+  EXPECT_GT(s1.after, 20);    // only the few exactly coplanar pieces merge
+  EXPECT_LE(s2.after, 3);
+  EXPECT_NEAR(merged_area, area, 1e-9 * area + 1e-6 * perim);
 }
 
 // exact point-triangle distance (used by the grid's near test) against an
