@@ -2,9 +2,10 @@
    POLYDEM - polyhedron-triangle contact for triangulated walls (seed 2.4):
    the section of a posed convex polyhedron with the triangle's plane,
    clipped to the triangle by Sutherland-Hodgman (Algorithm VII, Eqs. 10-11),
-   and the part of the polyhedron behind the plane inside the triangle's
-   prism (intersection of the polyhedron's half-spaces with the wall plane and
-   the three prism sides, built by the dual Quickhull of polydem_dual_hull.h).
+   and the volume (and its centroid) of the part of the polyhedron behind the
+   plane inside the triangle's prism, by the divergence theorem: the faces'
+   parts behind the plane, projected on it and clipped to the triangle by the
+   same Sutherland-Hodgman passes, each integrated as a column of linear depth.
 
    Triangle (t0, t1, t2) is counter-clockwise seen from the front; its unit
    normal n_w = (t1-t0)x(t2-t0)/|..| points to the side where particles live.
@@ -23,9 +24,7 @@
 #ifndef POLYDEM_CLIP_H
 #define POLYDEM_CLIP_H
 
-#include "polydem_dual_hull.h"
 #include "polydem_gjk.h"
-#include "polydem_lp.h"
 
 namespace polydem {
 
@@ -33,15 +32,16 @@ template <typename T> struct Triangle {
   Vec3<T> v[3];    // lab frame, CCW seen from the front
 };
 
-// Section polygon: at most one vertex per template edge, plus one per
-// clipping edge. Hull: the template's planes + wall plane + 3 prism sides.
+// Polygons: a section has at most one vertex per template edge, a face loop
+// at most one per template vertex, plus one per clipping line (plane, three
+// triangle edges). Posed vertices: nverts <= nedges <= MaxEdges.
 template <typename T, int MaxFaces = MAX_TEMPLATE_FACES, int MaxEdges = 3 * MAX_TEMPLATE_VERTS>
 struct ClipWorkspace {
   static constexpr int MAX_POLY = MaxEdges + 4;
-  static constexpr int MAX_PLANES = MaxFaces + 4 + DUAL_HULL_BOUND_PLANES;
-  T pu[MAX_POLY], pv[MAX_POLY], key[MAX_POLY];    // section (2-D) and sort keys
-  T qu[MAX_POLY], qv[MAX_POLY];                   // Sutherland-Hodgman ping-pong
-  DualHullWorkspace<T, MAX_PLANES> hull;
+  T vu[MaxEdges], vv[MaxEdges], vs[MaxEdges];     // posed vertices (u, v, height)
+  T pu[MAX_POLY], pv[MAX_POLY], pz[MAX_POLY];     // polygon (2-D, depth)
+  T qu[MAX_POLY], qv[MAX_POLY], qz[MAX_POLY];     // Sutherland-Hodgman ping-pong
+  T key[MAX_POLY];                                // sort keys of the section
 };
 
 template <typename T, int MaxFaces = MAX_TEMPLATE_FACES, int MaxEdges = 3 * MAX_TEMPLATE_VERTS>
@@ -62,8 +62,7 @@ template <typename T> struct ClipResult {
   Vec3<T> normal;       // n_w
 };
 
-constexpr int CLIP_HULL_TOL = 64;      // x eps x particle radius [length]
-constexpr int CLIP_TOUCH_TOL = 256;    // x eps x particle radius [length]
+constexpr int CLIP_TOUCH_TOL = 16;    // volumes below this x eps x the sum of |column integrals| are 0
 
 template <typename T> POLYDEM_FN void clip_result_zero(ClipResult<T> &r, int status)
 {
@@ -89,49 +88,74 @@ namespace clip_detail {
   }
 
   // one Sutherland-Hodgman pass (seed Algorithm VII lines 3-21): keep the part
-  // of polygon (iu, iv, n) left of the directed line a -> b (CCW clip polygon).
+  // of polygon (iu, iv, n) left of the directed line a -> b (CCW clip polygon),
+  // carrying a value z that is linear along the polygon's edges
   template <typename T>
-  POLYDEM_FN int sh_pass(const T *iu, const T *iv, int n, T au, T av, T bu, T bv, T *ou, T *ov)
+  POLYDEM_FN int sh_pass(const T *iu, const T *iv, const T *iz, int n, T au, T av, T bu, T bv,
+                           T *ou, T *ov, T *oz)
   {
     const T eu = bu - au, ev = bv - av;
     int m = 0;
     if (n == 0) return 0;
-    T pu = iu[n - 1], pv = iv[n - 1];
-    T sp = eu * (pv - av) - ev * (pu - au);    // cross2D(edgeDir, v - v0) >= 0: inside
+    T pu = iu[n - 1], pv = iv[n - 1], pz = iz[n - 1];
+    T sp = eu * (pv - av) - ev * (pu - au);
     for (int i = 0; i < n; ++i) {
-      const T cu = iu[i], cv = iv[i];
-      const T sc = eu * (cv - av) - ev * (cu - au);
+      const T cu = iu[i], cv = iv[i], cz = iz[i];
+      const T sc = eu * (cv - av) - ev * (cu - au);    // cross2D(edgeDir, v - v0) >= 0: inside
       const bool inc = sc >= T(0), inp = sp >= T(0);
       if (inc != inp) {    // crossing: Eqs. 10-11
         const T t = sp / (sp - sc);
         ou[m] = pu + t * (cu - pu);
         ov[m] = pv + t * (cv - pv);
+        oz[m] = pz + t * (cz - pz);
         ++m;
       }
       if (inc) {
         ou[m] = cu;
         ov[m] = cv;
+        oz[m] = cz;
         ++m;
       }
       pu = cu;
       pv = cv;
+      pz = cz;
       sp = sc;
     }
     return m;
   }
+
+  // the polygon (iu, iv, iz), m vertices, clipped by the triangle (tu, tv)
+  // (CCW): three passes, ping-pong with the scratch (qu, qv, qz); on return
+  // i* point at the result
+  template <typename T>
+  POLYDEM_FN void clip_to_triangle(const T *tu, const T *tv, int &m, T *&iu, T *&iv, T *&iz, T *qu,
+                                   T *qv, T *qz)
+  {
+    for (int e = 0; e < 3 && m > 0; ++e) {
+      m = sh_pass(iu, iv, iz, m, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], qu, qv, qz);
+      T *su = iu, *sv = iv, *sz = iz;
+      iu = qu;
+      iv = qv;
+      iz = qz;
+      qu = su;
+      qv = sv;
+      qz = sz;
+    }
+  }
 }    // namespace clip_detail
 
 template <typename T, int MF, int ME> POLYDEM_FN ClipResult<T>
-polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspace<T, MF, ME> &ws)
+polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspace<T, MF, ME> &ws,
+                    const T *posed = nullptr)
 {
+  // posed: the caller's posed vertices x + s R v (3 nverts, same frame), or null
   ClipResult<T> res;
   clip_result_zero(res, STATUS_OK);
   const ShapeView<T> &sv = *a.view;
-  if (sv.nfaces > MF || sv.nedges > ME || sv.nfaces < 4) {
+  if (sv.nfaces > MF || sv.nedges > ME || sv.nverts > ME || sv.nfaces < 4) {
     clip_result_zero(res, STATUS_OVERFLOW);
     return res;
   }
-  const T eps = Eps<T>::value;
   const T L = posed_radius(a);    // [length]
   const Vec3<T> t0 = tri.v[0];
   const Vec3<T> e1r = tri.v[1] - t0, e2r = tri.v[2] - t0;
@@ -145,30 +169,48 @@ polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspac
   const Vec3<T> e1 = (T(1) / l1) * e1r;
   const Vec3<T> e2 = cross(nw, e1);
   res.normal = nw;
-  // --- section polygon: template edges crossing the plane (2-D frame e1, e2 at t0)
+  // --- posed vertices in the frame (e1, e2, nw) whose origin o is the foot of
+  // the particle's centre on the plane: (u, v) in the plane, s = signed
+  // height above it (behind: s < 0)
+  const Vec3<T> d0 = a.x - t0;
+  const T sx = dot(d0, nw);
+  const Vec3<T> o = a.x - sx * nw;
+  int nbehind = 0;
+  for (int i = 0; i < sv.nverts; ++i) {
+    const Vec3<T> r = posed ? make_vec3(posed[3 * i], posed[3 * i + 1], posed[3 * i + 2]) - a.x
+                            : a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
+                                                          sv.verts[3 * i + 2]));
+    ws.vu[i] = dot(r, e1);
+    ws.vv[i] = dot(r, e2);
+    ws.vs[i] = sx + dot(r, nw);
+    if (!(ws.vs[i] == ws.vs[i])) {
+      clip_result_zero(res, STATUS_DEGENERATE);
+      return res;
+    }
+    if (ws.vs[i] < T(0)) ++nbehind;
+  }
+  if (nbehind == 0) {
+    res.status = STATUS_SEPARATED;
+    return res;
+  }
+  // the triangle in that frame (CCW seen from the front)
+  const T ou = dot(d0, e1), ov = dot(d0, e2);
+  const T tu[3] = {-ou, l1 - ou, dot(e2r, e1) - ou}, tv[3] = {-ov, -ov, dot(e2r, e2) - ov};
+  // --- section polygon: template edges crossing the plane (Algorithm VII)
   int n = 0;
   T mu = T(0), mv = T(0);
   for (int k = 0; k < sv.nedges; ++k) {
     const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
-    const Vec3<T> pi =
-        a.x +
-        a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1], sv.verts[3 * i + 2])) -
-        t0;
-    const Vec3<T> pj =
-        a.x +
-        a.s * matvec(a.R, make_vec3(sv.verts[3 * j], sv.verts[3 * j + 1], sv.verts[3 * j + 2])) -
-        t0;
-    const T si = dot(nw, pi), sj = dot(nw, pj);
+    const T si = ws.vs[i], sj = ws.vs[j];
     if ((si < T(0)) == (sj < T(0))) continue;
     const T t = si / (si - sj);
-    const Vec3<T> p = pi + t * (pj - pi);
-    ws.pu[n] = dot(p, e1);
-    ws.pv[n] = dot(p, e2);
+    ws.pu[n] = ws.vu[i] + t * (ws.vu[j] - ws.vu[i]);
+    ws.pv[n] = ws.vv[i] + t * (ws.vv[j] - ws.vv[i]);
+    ws.pz[n] = T(0);
     mu += ws.pu[n];
     mv += ws.pv[n];
     ++n;
   }
-  T area = T(0), cu = T(0), cv = T(0);
   if (n >= 3) {
     mu /= T(n);
     mv /= T(n);
@@ -187,104 +229,91 @@ polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspac
       ws.pu[j + 1] = u;
       ws.pv[j + 1] = v;
     }
-    // clip polygon = the triangle in the same frame (CCW)
-    const T tu[3] = {T(0), l1, dot(e2r, e1)}, tv[3] = {T(0), T(0), dot(e2r, e2)};
+    // Sutherland-Hodgman against the triangle's three edges (Eqs. 10-11)
     int m = n;
-    T *iu = ws.pu, *iv = ws.pv, *ou = ws.qu, *ov = ws.qv;
-    for (int e = 0; e < 3 && m > 0; ++e) {
-      m = clip_detail::sh_pass(iu, iv, m, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], ou, ov);
-      T *su = iu, *sv2 = iv;
-      iu = ou;
-      iv = ov;
-      ou = su;
-      ov = sv2;
-    }
+    T *iu = ws.pu, *iv = ws.pv, *iz = ws.pz;
+    clip_detail::clip_to_triangle(tu, tv, m, iu, iv, iz, ws.qu, ws.qv, ws.qz);
     // area and centroid (fan from the first vertex)
+    T area = T(0), cu = T(0), cv = T(0);
     for (int i = 1; i + 1 < m; ++i) {
       const T au = iu[i] - iu[0], av = iv[i] - iv[0];
       const T bu = iu[i + 1] - iu[0], bv = iv[i + 1] - iv[0];
       const T da = T(0.5) * (au * bv - av * bu);
       area += da;
-      cu += da * (iu[0] + iu[i] + iu[i + 1]) / T(3);
-      cv += da * (iv[0] + iv[i] + iv[i + 1]) / T(3);
+      cu += da * (iu[0] + iu[i] + iu[i + 1]);
+      cv += da * (iv[0] + iv[i] + iv[i + 1]);
     }
     if (area > T(0)) {
       res.area = area;
-      res.acentroid = t0 + (cu / area) * e1 + (cv / area) * e2;
+      res.acentroid = o + (cu / (T(3) * area)) * e1 + (cv / (T(3) * area)) * e2;
       res.S = -area * nw;
       res.M = -area * cross(res.acentroid - a.x, nw);
-    } else {
-      area = T(0);
     }
   }
-  // --- volume behind the plane inside the prism
-  auto &w = ws.hull;
-  constexpr int NB = DUAL_HULL_BOUND_PLANES;
-  const int nf = sv.nfaces;
-  const Vec3<T> xs = a.x;    // LP start / coordinate origin
-  T *pl = w.pl + 4 * NB;
-  {
-    const Vec3<T> xo = a.x - xs;
-    for (int f = 0; f < nf; ++f) {
-      const T *q = sv.planes + 4 * f;
-      const Vec3<T> nb = matvec(a.R, make_vec3(q[0], q[1], q[2]));
-      pl[4 * f] = nb.x;
-      pl[4 * f + 1] = nb.y;
-      pl[4 * f + 2] = nb.z;
-      pl[4 * f + 3] = a.s * q[3] + dot(nb, xo);
-    }
-    T *q = pl + 4 * nf;    // wall plane: behind is n_w . p <= n_w . t0
-    q[0] = nw.x;
-    q[1] = nw.y;
-    q[2] = nw.z;
-    q[3] = dot(nw, t0 - xs);
-    for (int e = 0; e < 3; ++e) {    // prism sides, outward = edge x n_w
-      const Vec3<T> ta = tri.v[e], tb = tri.v[(e + 1) % 3];
-      Vec3<T> s = cross(tb - ta, nw);
-      const T ls = norm(s);
-      if (!(ls > T(0))) {
-        clip_result_zero(res, STATUS_DEGENERATE);
-        return res;
+  // --- volume behind the plane inside the prism, by the divergence theorem
+  // with the field z e_z, z = -s the depth behind the plane: the section
+  // (z = 0) and the prism sides (parallel to e_z) add nothing, so
+  //   V = sum_f  sign(n_f . -n_w) int_{P_f} z_f dA,
+  // P_f = projection of face f's part behind the plane, clipped to the
+  // triangle; z_f is linear on it. A face loop (CCW about n_f) projects with
+  // signed area A_f (n_f . n_w), so its signed integral carries -sign: sum
+  // the signed integrals of every face and negate. Same with the moments:
+  // a column of depth z over (u, v) holds int (u, v, -zeta) dzeta.
+  T V = T(0), Vabs = T(0), Mu = T(0), Mv = T(0), Mz = T(0);
+  for (int f = 0; f < sv.nfaces; ++f) {
+    const int f0 = sv.face_start[f], f1 = sv.face_start[f + 1];
+    bool any = false;
+    for (int k = f0; k < f1 && !any; ++k) any = ws.vs[sv.face_verts[k]] < T(0);
+    if (!any) continue;
+    // the loop's part behind the plane (z = -s >= 0), then the triangle
+    int m = 0;
+    {
+      int jp = sv.face_verts[f1 - 1];
+      T zp = -ws.vs[jp];
+      for (int k = f0; k < f1; ++k) {
+        const int j = sv.face_verts[k];
+        const T zc = -ws.vs[j];
+        if ((zc >= T(0)) != (zp >= T(0))) {
+          const T t = zp / (zp - zc);
+          ws.pu[m] = ws.vu[jp] + t * (ws.vu[j] - ws.vu[jp]);
+          ws.pv[m] = ws.vv[jp] + t * (ws.vv[j] - ws.vv[jp]);
+          ws.pz[m] = T(0);
+          ++m;
+        }
+        if (zc >= T(0)) {
+          ws.pu[m] = ws.vu[j];
+          ws.pv[m] = ws.vv[j];
+          ws.pz[m] = zc;
+          ++m;
+        }
+        jp = j;
+        zp = zc;
       }
-      s = (T(1) / ls) * s;
-      q = pl + 4 * (nf + 1 + e);
-      q[0] = s.x;
-      q[1] = s.y;
-      q[2] = s.z;
-      q[3] = dot(s, ta - xs);
+    }
+    T *iu = ws.pu, *iv = ws.pv, *iz = ws.pz;
+    clip_detail::clip_to_triangle(tu, tv, m, iu, iv, iz, ws.qu, ws.qv, ws.qz);
+    // fan: over a triangle, int z = A sum(z)/3, int u z = A (sum u sum z +
+    // sum u z)/12, int z^2 = A (sum(z)^2 + sum z^2)/12
+    for (int i = 1; i + 1 < m; ++i) {
+      const T da = T(0.5) * ((iu[i] - iu[0]) * (iv[i + 1] - iv[0]) - (iv[i] - iv[0]) * (iu[i + 1] - iu[0]));
+      const T z0 = iz[0], z1 = iz[i], z2 = iz[i + 1], sz = z0 + z1 + z2;
+      V += da * sz;
+      Vabs += fabs(da * sz);
+      Mu += da * (sz * (iu[0] + iu[i] + iu[i + 1]) + iu[0] * z0 + iu[i] * z1 + iu[i + 1] * z2);
+      Mv += da * (sz * (iv[0] + iv[i] + iv[i + 1]) + iv[0] * z0 + iv[i] * z1 + iv[i + 1] * z2);
+      Mz += da * (sz * sz + z0 * z0 + z1 * z1 + z2 * z2);
     }
   }
-  const int m = nf + 4;
-  Vec3<T> xc;
-  T r;
-  chebyshev_centre(pl, m, xc, r);
-  const T tol = T(CLIP_HULL_TOL) * eps * L, ttouch = T(CLIP_TOUCH_TOL) * eps * L;
-  if (!(r == r)) {
+  V = -V / T(3);
+  if (!(V == V)) {
     clip_result_zero(res, STATUS_DEGENERATE);
     return res;
   }
-  if (r > ttouch) {
-    for (int i = 0; i < m; ++i) {
-      T *q = pl + 4 * i;
-      q[3] -= q[0] * xc.x + q[1] * xc.y + q[2] * xc.z;
-      w.owner[NB + i] = i < nf ? OWNER_A : (i == nf ? OWNER_B : OWNER_NONE);
-    }
-    w.nplanes = NB + m;
-    const T H = T(1.5) * (norm(xc) + L) + L;    // tetrahedron around the particle
-    const int st = dual_hull_build(w, H, tol);
-    if (st == STATUS_OK) {
-      const Vec3<T> x0 = xs + xc;
-      Vec3<T> ref[2] = {a.x - x0, a.x - x0};
-      HullIntegrals<T> hi;
-      dual_hull_integrate(w, ref, hi);
-      if (hi.volume > T(0)) {
-        res.volume = hi.volume;
-        res.vcentroid = x0 + (T(1) / hi.volume) * hi.vmoment;
-      }
-    } else if (st != STATUS_SEPARATED) {
-      clip_result_zero(res, st);
-      return res;
-    }
+  // below the round-off of the signed sum: a touching contact
+  if (V > T(CLIP_TOUCH_TOL) * Eps<T>::value * Vabs / T(3)) {
+    res.volume = V;
+    const T w = T(-1) / (T(12) * V);
+    res.vcentroid = o + (w * Mu) * e1 + (w * Mv) * e2 - (T(0.5) * w * Mz) * nw;
   }
   if (res.volume == T(0) && res.area == T(0)) res.status = STATUS_SEPARATED;
   return res;

@@ -74,7 +74,7 @@ struct WallWorkspace {
   int rtri[WALL_MAX_CAND];
   signed char rpatch[WALL_MAX_CAND];
   T rarea[WALL_MAX_CAND], rvol[WALL_MAX_CAND];
-  T hu[MAXH], hv[MAXH], pu[MAXH], pv[MAXH], qu[MAXH], qv[MAXH];
+  T hu[MAXH], hv[MAXH], pu[MAXH], pv[MAXH], qu[MAXH], qv[MAXH], hz[MAXH], qz[MAXH];    // hz, qz: 0
 };
 
 // Near list of one particle (cache, keyword 'cache'): a Verlet list of
@@ -333,23 +333,13 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         tv[k] = dot(t.v[k] - o, e2);
       }
       int q = h;
-      T *iu = ws->pu, *iv = ws->pv, *ou = ws->qu, *ov = ws->qv;
       for (int k = 0; k < h; ++k) {
         ws->qu[k] = ws->pu[k];    // keep the hull: clip a copy
         ws->qv[k] = ws->pv[k];
+        ws->qz[k] = T(0);
       }
-      iu = ws->qu;
-      iv = ws->qv;
-      ou = ws->hu;
-      ov = ws->hv;
-      for (int e = 0; e < 3 && q > 0; ++e) {
-        q = clip_detail::sh_pass(iu, iv, q, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], ou, ov);
-        T *su = iu, *sv2 = iv;
-        iu = ou;
-        iv = ov;
-        ou = su;
-        ov = sv2;
-      }
+      T *iu = ws->qu, *iv = ws->qv, *iz = ws->qz;
+      clip_detail::clip_to_triangle(tu, tv, q, iu, iv, iz, ws->hu, ws->hv, ws->hz);
       for (int i = 1; i + 1 < q; ++i)
         cov += T(0.5) * ((iu[i] - iu[0]) * (iv[i + 1] - iv[0]) - (iv[i] - iv[0]) * (iu[i + 1] - iu[0]));
     }
@@ -371,7 +361,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
   // t: the triangle's index, or -1 for a coplanar group's large triangle
   POLYDEM_FN void clip_add(const Triangle<T> &tri, int t)
   {
-    const ClipResult<T> r = polyhedron_triangle(*a, tri, ws->clip);
+    const ClipResult<T> r = polyhedron_triangle(*a, tri, ws->clip, ws->verts);
     if (r.status == STATUS_SEPARATED) return;
     if (r.status == STATUS_OVERFLOW) {
       out->noverflow++;

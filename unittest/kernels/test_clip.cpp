@@ -76,6 +76,16 @@ TEST(KernelClip, RandomTrianglesVsCgal)
     const RefClip ref = ref_clip(posed_vertices(sd, p), arr(t.v[0]), arr(t.v[1]), arr(t.v[2]));
     const ClipResult<double> r = polyhedron_triangle(make_posed(pool().d[s]->view, p), t, wsd);
     ASSERT_TRUE(r.status == STATUS_OK || r.status == STATUS_SEPARATED) << r.status;
+    {    // the caller's posed vertices (fix wall/mesh) give the same result
+      std::vector<double> xv;
+      for (const auto &q : posed_vertices(sd, p)) xv.insert(xv.end(), q.begin(), q.end());
+      const ClipResult<double> r2 =
+          polyhedron_triangle(make_posed(pool().d[s]->view, p), t, wsd, xv.data());
+      EXPECT_EQ(r2.status, r.status);
+      EXPECT_LE(std::fabs(r2.area - r.area), 1e-12 * L * L);
+      EXPECT_LE(std::fabs(r2.volume - r.volume), 1e-12 * Vp);
+      EXPECT_LE(norm(r2.M - r.M), 1e-12 * L * L * L);
+    }
     ea = std::max(ea, std::fabs(r.area - ref.area) / (L * L));
     ev = std::max(ev, std::fabs(r.volume - ref.volume) / Vp);
     EXPECT_LE(std::fabs(r.area - ref.area), 1e-9 * L * L) << i;
