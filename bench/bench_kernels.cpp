@@ -1,8 +1,11 @@
 // POLYDEM geometry-kernel benchmark: ns per pair for GJK alone and for the
 // full overlap (V, centroid, S, M) of dodecahedron pairs and 42-point
 // cylinder pairs (D = 8 mm, L = 5.3 mm, 20 points per rim) in random
-// orientations at overlaps of 0.1-1 % of the particle volume.
+// orientations at overlaps of 0.1-1 % of the particle volume; ns per
+// polyhedron-triangle clip (fix wall/mesh) for triangles near a particle's
+// lowest point.
 // Results: bench/RESULTS.md, section "Geometry kernels".
+#include "polydem_clip.h"
 #include "polydem_gjk.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
@@ -206,6 +209,69 @@ void gjk_overlap_ws22(benchmark::State &st, PairSet &ps)
 {
   gjk_then_overlap<22>(st, ps);
 }
+
+// Particle-triangle cases as on a finely meshed wall: random orientation,
+// random wall normal n, plane 0-5 % of the radius above the particle's lowest
+// point, an equilateral triangle of circumradius `size` x radius, randomly
+// turned, centred within `size` x radius of that point's projection.
+struct TriSet {
+  Shape shape;
+  std::vector<PosedShape<double>> a;
+  std::vector<Triangle<double>> t;
+};
+
+TriSet *make_tris(Shape s, double size, int n)
+{
+  auto *ts = new TriSet{std::move(s), {}, {}};
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> g(0, 1);
+  const double r = ts->shape.view.radius;
+  for (int k = 0; k < n; ++k) {
+    Pose<double> p;
+    p.x = make_vec3(0.0, 0.0, 0.0);
+    p.q = rquat(rng);
+    p.s = 1.0;
+    const PosedShape<double> a = make_posed(ts->shape.view, p);
+    Vec3<double> nw = make_vec3(g(rng), g(rng), g(rng));
+    nw = (1.0 / norm(nw)) * nw;
+    const Vec3<double> low = support_point(a, -1.0 * nw);
+    const Vec3<double> o = low + (0.05 * r * u(rng)) * nw;
+    Vec3<double> e1 = cross(nw, make_vec3(g(rng), g(rng), g(rng)));
+    e1 = (1.0 / norm(e1)) * e1;
+    const Vec3<double> e2 = cross(nw, e1);
+    const double ph = 2 * M_PI * u(rng), R = size * r;
+    const Vec3<double> c = o + (R * (2 * u(rng) - 1)) * e1 + (R * (2 * u(rng) - 1)) * e2;
+    Triangle<double> t;
+    for (int v = 0; v < 3; ++v) {
+      const double ang = ph + 2 * M_PI * v / 3;
+      t.v[v] = c + (R * std::cos(ang)) * e1 + (R * std::sin(ang)) * e2;    // CCW about nw
+    }
+    ts->a.push_back(a);
+    ts->t.push_back(t);
+  }
+  for (auto &a : ts->a) a.view = &ts->shape.view;
+  return ts;
+}
+
+void clip_triangle(benchmark::State &st, TriSet *ts)
+{
+  static ClipWorkspace<double> ws;
+  size_t i = 0, n = ts->a.size();
+  int hit = 0;
+  for (auto _ : st) {
+    auto r = polyhedron_triangle(ts->a[i], ts->t[i], ws);
+    benchmark::DoNotOptimize(r);
+    hit += r.volume > 0;
+    if (++i == n) i = 0;
+  }
+  st.counters["with_volume"] = double(hit) / st.iterations();
+}
+
+BENCHMARK_CAPTURE(clip_triangle, dodecahedron_small_tri, make_tris(dodecahedron(true), 0.1, 512));
+BENCHMARK_CAPTURE(clip_triangle, dodecahedron_large_tri, make_tris(dodecahedron(true), 1.0, 512));
+BENCHMARK_CAPTURE(clip_triangle, cylinder42_small_tri, make_tris(cylinder(true), 0.1, 512));
+BENCHMARK_CAPTURE(clip_triangle, cylinder42_large_tri, make_tris(cylinder(true), 1.0, 512));
 
 BENCHMARK_CAPTURE(gjk_only, dodecahedron, dodeca_pairs());
 BENCHMARK_CAPTURE(overlap_ws12, dodecahedron, dodeca_pairs());
