@@ -79,27 +79,33 @@ struct WallWorkspace {
 
 // Near list of one particle (cache, keyword 'cache'): a Verlet list of
 // particle-triangle pairs in the mesh frame. Built with the particle's pose
-// at reference (x_ref, R_ref): every triangle within r + skin of the centre,
-// each with a certified lower bound g_t of the distance from the particle to
-// the part of the triangle's prism behind its plane that lies within that
-// sphere (hull_gap_lower_bound), kept if g_t <= skin. While every point of
-// the particle has moved by at most m = |x - x_ref| + r |R R_ref^T - I|_2
-// <= skin (|R R_ref^T - I|_2 = sqrt(3 - tr R R_ref^T)), a triangle with
-// g_t > m cannot meet the particle's volume, so only the triangles with
-// g_t <= m are examined; the others are skipped without reading the mesh.
+// at reference (x_ref, R_ref): every triangle within r + S of the centre
+// (S = NEAR_REACH x skin), each with a certified lower bound g_t of the
+// distance from the particle to the part of the triangle's prism behind its
+// plane that lies within that sphere (hull_gap_lower_bound), and with
+// e_t = max(g_t, d_t - r) (d_t: distance from the centre), kept with e_t if
+// e_t <= skin. The list is valid up to s_v = min(S, e_t of the triangles
+// left out) >= skin. While every point of the particle has moved by at most
+// m = |x - x_ref| + r |R R_ref^T - I|_2 <= s_v (|R R_ref^T - I|_2 =
+// sqrt(3 - tr R R_ref^T)), a triangle with g_t > m cannot meet the
+// particle's volume, one with d_t - r > m is beyond r of x (the step's
+// sphere test), and one beyond r + S of x_ref too, so only the triangles
+// with e_t <= m are examined; the others are skipped without reading the
+// mesh.
 // The candidates, and so the forces, are those of the full grid query (to
 // round-off; finish() sorts them, so the order does not depend on the path).
 // The lists index local atoms: the fix invalidates them when atoms move
 // between ranks or are sorted (reneighboring) and at setup.
 template <typename T> struct WallNear {
-  T *ref;        // 13: x_ref (3), R_ref row-major (9), mesh frame; the list's skin
+  T *ref;        // 13: x_ref (3), R_ref row-major (9), mesh frame; s_v, the list's validity
   int *count;    // entries; NEAR_REBUILD: build now; NEAR_OVERFLOW: no list until invalidated
   int *tri;      // cap triangle indices
-  float *gap;    // cap lower bounds g_t [length], rounded down
+  float *gap;    // cap e_t [length], rounded down
   int cap;
   T skin;        // [length]; a list that does not fit is built with skin/4, then skin/16
   int built;     // out: 1 if the list was (re)built by this call
 };
+constexpr int NEAR_REACH = 8;    // query reach r + NEAR_REACH x skin at a build
 constexpr int NEAR_REBUILD = -1;
 constexpr int NEAR_OVERFLOW = -2;
 
@@ -442,20 +448,37 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
   return hull_gap_lower_bound(ws.verts, nv, B, 6, T(1e-12) * reach, stop);
 }
 
-// grid visitor of a near-list build: keeps (t, g_t) for g_t <= skin (overflow: stops)
+// grid visitor of a near-list build. A triangle can become a candidate only
+// once m >= e_t = max(g_t, d_t - r), d_t its distance from the centre (the
+// step's sphere test): keeps (t, e_t) for e_t <= skin (overflow: stops);
+// valid = the smallest e_t (or a lower bound of it) of the triangles left
+// out, starting at the query's extra reach S
 template <typename T, int MF, int ME> struct WallNearBuild {
   const MeshGridView<T> *g;
   const WallWorkspace<T, MF, ME> *ws;
   WallNear<T> *near;
   Vec3<T> c;
-  T reach, skin;
+  T r, reach, skin, valid;
   int nv, n;
   bool overflow;
   POLYDEM_FN void operator()(int t)
   {
     if (overflow) return;
-    const T gap = wall_prism_gap(*g, t, *ws, nv, c, reach, skin);
-    if (!(gap <= skin)) return;
+    const T *q = g->tri + 9 * t;
+    const T ds = sqrt(point_triangle_dist2(c, make_vec3(q[0], q[1], q[2]),
+                                           make_vec3(q[3], q[4], q[5]),
+                                           make_vec3(q[6], q[7], q[8]))) - r;
+    if (ds > skin) {    // out of the step's sphere for m < ds
+      valid = ds < valid ? ds : valid;
+      return;
+    }
+    T gap = wall_prism_gap(*g, t, *ws, nv, c, reach, valid);
+    if (!(gap == gap)) gap = T(0);    // no bound: always examined
+    gap = ds > gap ? ds : gap;
+    if (gap > skin) {
+      valid = gap < valid ? gap : valid;
+      return;
+    }
     if (n == near->cap) {
       overflow = true;
       return;
@@ -502,10 +525,16 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     b.near = &near;
     b.c = a.x;
     b.nv = a.view->nverts;
+    b.r = r;
     b.skin = near.skin;
     near.built = 1;
+    // The query reaches NEAR_REACH skins beyond r, and the list stays valid
+    // while m is below the smallest gap of the triangles it left out: a
+    // particle with no triangle near (inside a bed, in flight) rebuilds
+    // NEAR_REACH times less often.
     for (int attempt = 0; attempt < 3; ++attempt, b.skin *= T(0.25)) {
-      b.reach = r + b.skin;
+      b.valid = T(NEAR_REACH) * b.skin;
+      b.reach = r + b.valid;
       b.n = 0;
       b.overflow = false;
       mesh_for_each_near(g, a.x, b.reach, b);
@@ -515,7 +544,7 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
       *near.count = NEAR_OVERFLOW;
       return false;
     }
-    near.ref[12] = b.skin;
+    near.ref[12] = b.valid * T(1 - 1e-6);    // excluded triangles: e_t > m
     *near.count = b.n;
     near.ref[0] = a.x.x;
     near.ref[1] = a.x.y;
