@@ -102,7 +102,7 @@ template <typename T> struct WallNear {
   int *tri;      // cap triangle indices
   float *gap;    // cap e_t [length], rounded down
   int cap;
-  T skin;        // [length]; a list that does not fit is built with skin/4, then skin/16
+  T skin;        // [length]
   int built;     // out: 1 if the list was (re)built by this call
 };
 constexpr int NEAR_REACH = 8;    // query reach r + NEAR_REACH x skin at a build
@@ -450,9 +450,10 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
 
 // grid visitor of a near-list build. A triangle can become a candidate only
 // once m >= e_t = max(g_t, d_t - r), d_t its distance from the centre (the
-// step's sphere test): keeps (t, e_t) for e_t <= skin (overflow: stops);
-// valid = the smallest e_t (or a lower bound of it) of the triangles left
-// out, starting at the query's extra reach S
+// step's sphere test): keeps (t, e_t) for e_t <= skin; valid = the smallest
+// e_t (or a lower bound of it) of the triangles left out, starting at the
+// query's extra reach S. A full list drops its largest e_t for a smaller one
+// (valid then shrinks to the dropped value), so it keeps the cap smallest.
 template <typename T, int MF, int ME> struct WallNearBuild {
   const MeshGridView<T> *g;
   const WallWorkspace<T, MF, ME> *ws;
@@ -460,10 +461,8 @@ template <typename T, int MF, int ME> struct WallNearBuild {
   Vec3<T> c;
   T r, reach, skin, valid;
   int nv, n;
-  bool overflow;
   POLYDEM_FN void operator()(int t)
   {
-    if (overflow) return;
     const T *q = g->tri + 9 * t;
     const T ds = sqrt(point_triangle_dist2(c, make_vec3(q[0], q[1], q[2]),
                                            make_vec3(q[3], q[4], q[5]),
@@ -479,13 +478,21 @@ template <typename T, int MF, int ME> struct WallNearBuild {
       valid = gap < valid ? gap : valid;
       return;
     }
-    if (n == near->cap) {
-      overflow = true;
+    const float e = float(gap * T(1 - 1e-6));    // float rounding is < 1e-7 relative
+    if (n < near->cap) {
+      near->tri[n] = t;
+      near->gap[n++] = e;
       return;
     }
-    near->tri[n] = t;
-    near->gap[n] = float(gap * T(1 - 1e-6));    // float rounding is < 1e-7 relative
-    n++;
+    int kmax = 0;    // full: the entry with the largest e_t
+    for (int k = 1; k < n; ++k) kmax = near->gap[k] > near->gap[kmax] ? k : kmax;
+    if (near->gap[kmax] > e) {
+      valid = T(near->gap[kmax]) < valid ? T(near->gap[kmax]) : valid;
+      near->tri[kmax] = t;
+      near->gap[kmax] = e;
+    } else {
+      valid = T(e) < valid ? T(e) : valid;
+    }
   }
 };
 
@@ -516,9 +523,11 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     if (!(m <= ref[12])) *near.count = NEAR_REBUILD;
   }
   if (*near.count == NEAR_REBUILD) {
-    // a list that does not fit is built again with a 4x smaller skin (at
-    // most twice): a particle on a fine mesh keeps a short list, rebuilt
-    // more often, instead of querying the grid every step
+    // The query reaches NEAR_REACH skins beyond r, and the list stays valid
+    // while m is below the smallest e_t of the triangles it left out: a
+    // particle with no triangle near (inside a bed, in flight) rebuilds
+    // NEAR_REACH times less often, and a list that is full is valid for a
+    // shorter motion instead of failing.
     WallNearBuild<T, MF, ME> b;
     b.g = &g;
     b.ws = &ws;
@@ -527,20 +536,14 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     b.nv = a.view->nverts;
     b.r = r;
     b.skin = near.skin;
+    b.valid = T(NEAR_REACH) * b.skin;
+    b.reach = r + b.valid;
+    b.n = 0;
     near.built = 1;
-    // The query reaches NEAR_REACH skins beyond r, and the list stays valid
-    // while m is below the smallest gap of the triangles it left out: a
-    // particle with no triangle near (inside a bed, in flight) rebuilds
-    // NEAR_REACH times less often.
-    for (int attempt = 0; attempt < 3; ++attempt, b.skin *= T(0.25)) {
-      b.valid = T(NEAR_REACH) * b.skin;
-      b.reach = r + b.valid;
-      b.n = 0;
-      b.overflow = false;
-      mesh_for_each_near(g, a.x, b.reach, b);
-      if (!b.overflow) break;
-    }
-    if (b.overflow) {
+    mesh_for_each_near(g, a.x, b.reach, b);
+    if (!(b.valid * T(1 - 1e-6) >= T(0.0625) * b.skin)) {
+      // more than cap triangles within skin/16: a list would be rebuilt
+      // nearly every step, so none until invalidated (the grid every step)
       *near.count = NEAR_OVERFLOW;
       return false;
     }
