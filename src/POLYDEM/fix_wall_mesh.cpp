@@ -369,6 +369,9 @@ void FixWallMesh::build_grid()
   }
   if (!grid.start.empty() && grid.h == h) return;
   grid = polydem::build_mesh_grid(mesh.tri, h);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix wall/mesh {}: bin grid {} x {} x {}, edge {:.6g}, {} entries for {} triangles\n",
+                   id, grid.n[0], grid.n[1], grid.n[2], grid.h, grid.items.size(), mesh.ntri());
 }
 
 polydem::MeshGridView<double> FixWallMesh::grid_view() const
@@ -529,7 +532,8 @@ void FixWallMesh::compute_forces(bool update)
   if (update && neighbor->ago == 0) report_counts();
 }
 
-// kernel failures are counted and reported (collectively) as warnings
+// kernel failures are counted and reported (collectively) as warnings: the
+// first one, then each time a count has doubled since its last warning
 void FixWallMesh::report_counts()
 {
   double all[4];
@@ -542,7 +546,7 @@ void FixWallMesh::report_counts()
       fmt::format("near-list overflows (more than cache = {} triangles within reach; those "
                   "particles query the grid every step: same forces, slower)", near_cap)};
   for (int k = 0; k < 4; k++)
-    if (all[k] > counts_reported[k]) {
+    if (all[k] > 0.0 && all[k] >= 2.0 * counts_reported[k]) {
       error->warning(FLERR, "fix wall/mesh {}: {:.0f} {} by step {}", id, all[k], what[k],
                      update->ntimestep);
       counts_reported[k] = all[k];
