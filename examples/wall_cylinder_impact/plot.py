@@ -7,27 +7,9 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
-D, LC, RHO, EPS, V = 8e-3, 5.3e-3, 1245.0, 0.85, 0.1
-R, n = D / 2, 20
-A = Ix = 0.0
-for k in range(n):
-    p1 = (R * math.cos(2 * math.pi * k / n), R * math.sin(2 * math.pi * k / n))
-    p2 = (R * math.cos(2 * math.pi * (k + 1) / n), R * math.sin(2 * math.pi * (k + 1) / n))
-    ar = 0.5 * (p1[0] * p2[1] - p1[1] * p2[0])
-    A += ar
-    Ix += ar / 6 * (p1[1] ** 2 + p2[1] ** 2 + p1[1] * p2[1])
-m, Iyy = RHO * A * LC, RHO * (LC * Ix + A * LC ** 3 / 12)
+from eq2728 import V, analytic, results
 
-def analytic(th):
-    arm = R * math.cos(th) - LC / 2 * math.sin(th)    # r cos(alpha + theta)
-    wy = -m * V * (1 + EPS) * arm / (Iyy + m * arm * arm)    # Eq. 27, about -y
-    return wy, EPS * V + wy * arm                          # Eq. 28, z up
-
-rows = []
-for line in open("log.impact"):
-    if line.startswith("RESULT"):
-        w = line.split()
-        rows.append((float(w[2]), float(w[4]), float(w[6])))
+rows = [(t, w, v) for t, (w, v) in sorted(results("log.impact").items())]
 wscale = max(abs(analytic(math.radians(t))[0]) for t, _, _ in rows)
 print("theta  omega_y   Eq.27     dev      V_z       Eq.28     dev/V")
 worst_w = worst_v = 0.0

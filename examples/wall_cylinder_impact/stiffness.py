@@ -8,28 +8,7 @@ finite size, which shrinks as E grows. Prints the table of README.md and the
 fitted exponent of |dV_z| against E."""
 import math
 
-D, LC, RHO, EPS, V = 8e-3, 5.3e-3, 1245.0, 0.85, 0.1
-R, n = D / 2, 20
-A = Ix = 0.0
-for k in range(n):    # the faceted 20-gon prism, as in plot.py
-    p1 = (R * math.cos(2 * math.pi * k / n), R * math.sin(2 * math.pi * k / n))
-    p2 = (R * math.cos(2 * math.pi * (k + 1) / n), R * math.sin(2 * math.pi * (k + 1) / n))
-    ar = 0.5 * (p1[0] * p2[1] - p1[1] * p2[0])
-    A += ar
-    Ix += ar / 6 * (p1[1] ** 2 + p2[1] ** 2 + p1[1] * p2[1])
-m, Iyy = RHO * A * LC, RHO * (LC * Ix + A * LC ** 3 / 12)
-
-
-def analytic(th):
-    arm = R * math.cos(th) - LC / 2 * math.sin(th)
-    wy = -m * V * (1 + EPS) * arm / (Iyy + m * arm * arm)
-    return wy, EPS * V + wy * arm
-
-
-def results(path):
-    return {float(w[2]): (float(w[4]), float(w[6]))
-            for w in (l.split() for l in open(path)) if w and w[0] == "RESULT"}
-
+from eq2728 import V, analytic, results
 
 runs = [(1, results("log.impact"))] + [(f, results("log.impact_Ex%d" % f)) for f in (10, 100, 1000)]
 print("theta   Eq.28    " + "".join("  dVz/|Vz| E x%-5d" % f for f, _ in runs) + "  dVz/V E x1  E x1000")
