@@ -60,7 +60,19 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     if (iarg + n >= narg)
       error->all(FLERR, "fix wall/mesh: keyword '{}' needs {} value(s): {}", arg[iarg], n, what);
   };
-  auto num = [&](int k) { return utils::numeric(FLERR, arg[k], false, lmp); };
+  // numbers must be finite (1e400 parses as inf)
+  auto num = [&](int k) {
+    const double v = utils::numeric(FLERR, arg[k], false, lmp);
+    if (!std::isfinite(v))
+      error->all(FLERR, "fix wall/mesh: '{}' (argument {}) is not a finite number", arg[k], k + 1);
+    return v;
+  };
+  // length of a vector of finite values, scaled so that it cannot overflow
+  auto length = [](const double *a) {
+    const double m = MAX(fabs(a[0]), MAX(fabs(a[1]), fabs(a[2])));
+    if (!(m > 0.0)) return 0.0;
+    return m * sqrt((a[0] / m) * (a[0] / m) + (a[1] / m) * (a[1] / m) + (a[2] / m) * (a[2] / m));
+  };
   polydem::StlTransform xf;
   int iarg = 4;
   while (iarg < narg) {
@@ -162,7 +174,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       }
       iarg += 2;
     } else if (kw == "move") {
-      need(iarg, 1, "none, translate or rotate");
+      need(iarg, 1, "none, translate, rotate or wiggle");
       const std::string m = arg[iarg + 1];
       if (m == "none") {
         movestyle = MOVE_NONE;
@@ -177,7 +189,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
         movestyle = MOVE_WIGGLE;
         for (int k = 0; k < 3; k++) amp[k] = num(iarg + 2 + k);
         period = num(iarg + 5);
-        if (!(period > 0.0) || !std::isfinite(period))
+        if (!(period > 0.0) || !std::isfinite(2.0 * MY_PI / period))
           error->all(FLERR, "fix wall/mesh: move wiggle period must be > 0, got '{}'", arg[iarg + 5]);
         for (int k = 0; k < 3; k++)
           if (!std::isfinite(amp[k]))
@@ -195,7 +207,9 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
         else if (u == "rpm") omega = val * 2.0 * MY_PI / 60.0;
         else
           error->all(FLERR, "fix wall/mesh: move rotate expects 'omega' or 'rpm', got '{}'", u);
-        const double l = sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+        if (!std::isfinite(omega))
+          error->all(FLERR, "fix wall/mesh: move rotate {} {} is not a finite rate", u, val);
+        const double l = length(axis);
         if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: move rotate axis must be non-zero");
         for (int k = 0; k < 3; k++) axis[k] /= l;
         iarg += 10;
@@ -208,8 +222,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
 
   // load-time rotation (Rodrigues), applied after the scale
   {
-    const double l = sqrt(rot_axis[0] * rot_axis[0] + rot_axis[1] * rot_axis[1] +
-                          rot_axis[2] * rot_axis[2]);
+    const double l = length(rot_axis);
     if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: rotate axis must be non-zero");
     const double c = cos(rot_angle * MY_PI / 180.0), s = sin(rot_angle * MY_PI / 180.0);
     const double u[3] = {rot_axis[0] / l, rot_axis[1] / l, rot_axis[2] / l};
@@ -233,8 +246,12 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     ok = 0;
     why = e.what();
   }
-  int allok;
+  int allok, anyok;
   MPI_Allreduce(&ok, &allok, 1, MPI_INT, MPI_MIN, world);
+  MPI_Allreduce(&ok, &anyok, 1, MPI_INT, MPI_MAX, world);
+  // every rank failed alike (the usual case): error->all, which reaches the
+  // log; a rank that alone cannot read the file reports itself
+  if (!anyok) error->all(FLERR, "fix wall/mesh: {}", why);
   if (!allok) {
     if (!ok) error->one(FLERR, "fix wall/mesh: {}", why);
     error->all(FLERR, "fix wall/mesh: cannot read {}", file);
@@ -245,6 +262,14 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     if (mesh.ndegenerate > 0)
       error->warning(FLERR, "fix wall/mesh: {}: {} zero-area triangles dropped", file,
                      mesh.ndegenerate);
+    if (mesh.nopposite > mesh.nalong)
+      error->warning(FLERR, "fix wall/mesh: {}: the facet normals stored in the file point against "
+                     "the vertex order for {} of {} triangles: particles are on the side the vertex "
+                     "order gives{} (see flip)", file, mesh.nopposite, mesh.nopposite + mesh.nalong,
+                     xf.flip ? ", reversed by flip yes" : "");
+    if (mesh.no_endsolid)
+      error->warning(FLERR, "fix wall/mesh: {}: no 'endsolid' after the last facet: the file may "
+                     "be truncated ({} triangles read)", file, mesh.nread);
     if (mesh.nduplicate > 0)
       error->warning(FLERR, "fix wall/mesh: {}: {} duplicate triangles dropped", file,
                      mesh.nduplicate);
@@ -267,7 +292,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
   }
 
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
-  for (int k = 0; k < 4; k++) counts_local[k] = counts_reported[k] = 0.0;
+  for (int k = 0; k < NCOUNTS; k++) counts_local[k] = counts_reported[k] = 0.0;
   if (pertri) {
     array_flag = 1;
     size_array_rows = mesh.ntri();
@@ -369,6 +394,9 @@ void FixWallMesh::build_grid()
   }
   if (!grid.start.empty() && grid.h == h) return;
   grid = polydem::build_mesh_grid(mesh.tri, h);
+  if (comm->me == 0 && binsize > 0.0 && grid.h > binsize)
+    error->warning(FLERR, "fix wall/mesh {}: bin {} enlarged to {:.6g} (at most {} bins and 2^28 "
+                   "entries)", id, binsize, grid.h, 1L << 22);
   if (comm->me == 0)
     utils::logmesg(lmp, "fix wall/mesh {}: bin grid {} x {} x {}, edge {:.6g}, {} entries for {} triangles\n",
                    id, grid.n[0], grid.n[1], grid.n[2], grid.h, grid.items.size(), mesh.ntri());
@@ -517,10 +545,11 @@ void FixWallMesh::compute_forces(bool update)
       near_builds += nl.built;
       if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) counts_local[3] += 1;
     }
-    if (pertri) polydem::wall_triangle_forces(*ws, wf, add_tri);
+    if (pertri) polydem::wall_triangle_forces(*ws, P, wf, add_tri);
     counts_local[0] += P.noverflow;
     counts_local[1] += P.ndegenerate;
     counts_local[2] += P.nmerged;
+    counts_local[4] += P.nunrecorded;
     f[i][0] += wf.f.x;
     f[i][1] += wf.f.y;
     f[i][2] += wf.f.z;
@@ -536,16 +565,19 @@ void FixWallMesh::compute_forces(bool update)
 // first one, then each time a count has doubled since its last warning
 void FixWallMesh::report_counts()
 {
-  double all[4];
-  MPI_Allreduce(counts_local, all, 4, MPI_DOUBLE, MPI_SUM, world);
+  double all[NCOUNTS];
+  MPI_Allreduce(counts_local, all, NCOUNTS, MPI_DOUBLE, MPI_SUM, world);
   if (comm->me != 0) return;
-  const std::string what[4] = {
+  const std::string what[NCOUNTS] = {
       "clip workspace overflows (triangle skipped)",
       "degenerate particle-triangle contacts (NaN; triangle skipped)",
       "facets joined to the closest of the 4 contact patches",
       fmt::format("near-list overflows (more than cache = {} triangles within reach; those "
-                  "particles query the grid every step: same forces, slower)", near_cap)};
-  for (int k = 0; k < 4; k++)
+                  "particles query the grid every step: same forces, slower)", near_cap),
+      fmt::format("triangle contacts left out of the per-triangle forces (more than {} "
+                  "triangles under one particle; the forces on the mesh are complete)",
+                  polydem::WALL_MAX_CAND)};
+  for (int k = 0; k < NCOUNTS; k++)
     if (all[k] > 0.0 && all[k] >= 2.0 * counts_reported[k]) {
       error->warning(FLERR, "fix wall/mesh {}: {:.0f} {} by step {}", id, all[k], what[k],
                      update->ntimestep);
@@ -674,6 +706,7 @@ void FixWallMesh::restart(char *buf)
 
 void FixWallMesh::post_run()
 {
+  report_counts();    // what the last steps since reneighboring added
   bigint mine[2] = {near_builds, (bigint) counts_local[3]}, all[2];
   MPI_Allreduce(mine, all, 2, MPI_LMP_BIGINT, MPI_SUM, world);
   const bigint run_builds = all[0] - near_builds_run;

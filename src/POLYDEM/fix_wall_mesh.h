@@ -79,7 +79,10 @@ class FixWallMesh : public Fix {
   std::vector<polydem::WallDamping<double>> tdtab;    // zeta(e, contact shape)
   double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
   int reduced;
-  double counts_local[4], counts_reported[4];    // + near-list overflows
+  // kernel failure counts (overflow, degenerate, merged patches), near-list
+  // overflows, triangles left out of the per-triangle record
+  static constexpr int NCOUNTS = 5;
+  double counts_local[NCOUNTS], counts_reported[NCOUNTS];
   class AtomVecPolyhedron *avec;
   std::unique_ptr<polydem::WallWorkspace<double>> ws;
   // near lists (keyword cache): entries per particle, skin / bounding radius;

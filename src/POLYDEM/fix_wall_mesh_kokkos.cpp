@@ -24,7 +24,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 namespace {
 
 typedef polydem::WallWorkspace<double> WallWorkspace;
-constexpr int NSUM = 14;    // + near-list overflows, builds
+constexpr int NSUM = 15;    // + near-list overflows, builds, unrecorded triangles
 
 // device copy of a host vector (at least one element)
 template <class V, class S> void upload(V &d, const std::vector<S> &h, const char *name)
@@ -127,7 +127,7 @@ template <class DeviceType> struct WallMeshKernel {
         polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P, pn);
     if (pertri) {
       TriAdd<DeviceType> add{trif};
-      polydem::wall_triangle_forces(ws, wf, add);
+      polydem::wall_triangle_forces(ws, P, wf, add);
     }
     if (pn) {
       sum[12] += (nl.built && near_count(i) == polydem::NEAR_OVERFLOW) ? 1.0 : 0.0;
@@ -153,6 +153,7 @@ template <class DeviceType> struct WallMeshKernel {
     sum[9] += P.noverflow;
     sum[10] += P.ndegenerate;
     sum[11] += P.nmerged;
+    sum[14] += P.nunrecorded;
   }
 };
 
@@ -374,6 +375,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   local[NVEC] = total[8];
   for (int m = 0; m < 3; m++) counts_local[m] += total[9 + m];
   counts_local[3] += total[12];
+  counts_local[4] += total[14];
   near_builds += (bigint) total[13];
   if (stepping && neighbor->ago == 0) report_counts();
 }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -32,8 +33,10 @@ namespace {
     StlMesh &mesh;
     std::set<std::array<double, 9>> seen;
 
-    // raw triangle (9 values) -> transformed, checked, deduplicated
-    void add(const double *raw, const std::string &where)
+    // raw triangle (9 values) -> transformed, checked, deduplicated; the
+    // file's facet normal (nrm, may be zero) is only compared with the
+    // vertex order
+    void add(const double *raw, const double *nrm, const std::string &where)
     {
       mesh.nread++;
       for (int k = 0; k < 9; k++)
@@ -46,6 +49,10 @@ namespace {
           p[v][d] = xf.offset[d] + xf.scale * (xf.R[d][0] * q[0] + xf.R[d][1] * q[1] +
                                                xf.R[d][2] * q[2]);
       }
+      for (int v = 0; v < 3; v++)
+        for (int d = 0; d < 3; d++)
+          if (!std::isfinite(p[v][d]))
+            throw StlError(where + ": coordinate not finite after scale, rotate and offset");
       if (xf.flip) std::swap(p[1], p[2]);
       double e1[3], e2[3], e3[3];
       for (int d = 0; d < 3; d++) {
@@ -59,10 +66,22 @@ namespace {
       const double n2 = cx * cx + cy * cy + cz * cz;
       auto l2 = [](const double *e) { return e[0] * e[0] + e[1] * e[1] + e[2] * e[2]; };
       const double lmax = std::max(l2(e1), std::max(l2(e2), l2(e3)));
+      if (!std::isfinite(n2) || !std::isfinite(lmax))
+        throw StlError(where + ": triangle too large (its area overflows) after scale, rotate "
+                               "and offset");
       // |cross| = 2 area; zero area relative to the longest edge squared
       if (!(std::sqrt(n2) > 1e-12 * lmax)) {
         mesh.ndegenerate++;
         return;
+      }
+      // stored normal (rotated like the vertices) against the vertex order
+      double sn[3];
+      for (int d = 0; d < 3; d++) sn[d] = xf.R[d][0] * nrm[0] + xf.R[d][1] * nrm[1] + xf.R[d][2] * nrm[2];
+      const double sd = sn[0] * cx + sn[1] * cy + sn[2] * cz;
+      const double sl = std::sqrt(sn[0] * sn[0] + sn[1] * sn[1] + sn[2] * sn[2]);
+      if (std::isfinite(sd) && sl > 0.0) {
+        if (sd < -0.5 * sl * std::sqrt(n2)) mesh.nopposite++;
+        else if (sd > 0.5 * sl * std::sqrt(n2)) mesh.nalong++;
       }
       // duplicate: same vertex set, whatever the order or orientation
       std::array<std::array<double, 3>, 3> s = {{{p[0][0], p[0][1], p[0][2]},
@@ -97,7 +116,7 @@ namespace {
     long lineno = 0;
     // states: 0 outside solid, 1 in solid, 2 after facet, 3 in loop (nv vertices)
     int state = 0, nv = 0;
-    double raw[9];
+    double raw[9], nrm[3] = {0.0, 0.0, 0.0};
     long facet_line = 0;
     auto bad = [&](const std::string &why) { throw StlError(fmt_line(path, lineno, why)); };
     while (std::getline(in, line)) {
@@ -105,20 +124,25 @@ namespace {
       std::istringstream ls(line);
       std::vector<std::string> w;
       std::string t;
-      while (ls >> t) w.push_back(t);
+      while (ls >> t) {    // keywords in any case (SOLID, Facet, ...)
+        if (!t.empty() && std::isalpha((unsigned char) t[0]))
+          for (char &c : t) c = (char) std::tolower((unsigned char) c);
+        w.push_back(t);
+      }
       if (w.empty()) continue;
       const std::string &k = w[0];
       if (state == 0) {
-        if (k != "solid") bad("expected 'solid', got '" + k + "'");
+        if (k != "solid")
+          bad(col.mesh.nread == 0 ? "expected 'solid', got '" + k + "'"
+                                  : "expected 'solid' or the end of the file, got '" + k + "'");
         state = 1;
       } else if (state == 1) {
         if (k == "endsolid") {
           state = 0;
         } else if (k == "facet") {
           if (w.size() != 5 || w[1] != "normal") bad("expected 'facet normal nx ny nz'");
-          double d;
           for (int i = 2; i < 5; i++)
-            if (!parse_double(w[i], d)) bad("bad number '" + w[i] + "' in facet normal");
+            if (!parse_double(w[i], nrm[i - 2])) bad("bad number '" + w[i] + "' in facet normal");
           state = 2;
           facet_line = lineno;
         } else
@@ -142,13 +166,14 @@ namespace {
           bad("expected 'vertex' or 'endloop', got '" + k + "'");
       } else if (state == 4) {
         if (k != "endfacet") bad("expected 'endfacet', got '" + k + "'");
-        col.add(raw, fmt_line(path, facet_line, "facet"));
+        col.add(raw, nrm, fmt_line(path, facet_line, "facet"));
         state = 1;
       }
     }
     if (state != 0 && !(state == 1 && col.mesh.nread > 0))
       throw StlError(fmt_line(path, lineno, "unexpected end of file (missing 'endfacet' or "
                                             "'endsolid')"));
+    col.mesh.no_endsolid = state == 1;    // complete facets, then the end: warned
   }
 
   void read_binary(const std::string &path, const std::string &data, Collector &col)
@@ -165,15 +190,26 @@ namespace {
                      std::to_string(data.size()) + " bytes");
     for (uint32_t t = 0; t < n; t++) {
       const char *rec = data.data() + 84 + 50ULL * t;
-      float f[9];
-      std::memcpy(f, rec + 12, 36);
-      double raw[9];
-      for (int k = 0; k < 9; k++) raw[k] = f[k];
-      col.add(raw, path + ": triangle " + std::to_string(t + 1));
+      float f[12];
+      std::memcpy(f, rec, 48);
+      double nrm[3], raw[9];
+      for (int k = 0; k < 3; k++) nrm[k] = f[k];
+      for (int k = 0; k < 9; k++) raw[k] = f[3 + k];
+      col.add(raw, nrm, path + ": triangle " + std::to_string(t + 1));
     }
   }
 
 }    // namespace
+
+// does the text begin (after white space) with "solid", in any case?
+static bool starts_solid(const std::string &data)
+{
+  const size_t p = data.find_first_not_of(" \t\r\n");
+  if (p == std::string::npos || data.size() < p + 5) return false;
+  for (int k = 0; k < 5; k++)
+    if (std::tolower((unsigned char) data[p + k]) != "solid"[k]) return false;
+  return true;
+}
 
 StlMesh read_stl(const std::string &path, const StlTransform &xf)
 {
@@ -193,12 +229,9 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf)
     uint32_t n = 0;
     std::memcpy(&n, data.data() + 80, 4);
     const bool size_ok = data.size() == 84ULL + 50ULL * n;
-    const size_t p = data.find_first_not_of(" \t\r\n");
-    const bool solid = p != std::string::npos && data.compare(p, 5, "solid") == 0;
-    binary = size_ok || !solid;
+    binary = size_ok || !starts_solid(data);
   } else {
-    const size_t p = data.find_first_not_of(" \t\r\n");
-    binary = !(p != std::string::npos && data.compare(p, 5, "solid") == 0);
+    binary = !starts_solid(data);
   }
   mesh.binary = binary;
   if (binary) read_binary(path, data, col);
@@ -219,14 +252,33 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
     lo[k % 3] = std::min(lo[k % 3], tri[k]);
     hi[k % 3] = std::max(hi[k % 3], tri[k]);
   }
-  if (!(h > 0.0)) h = 1.0;
+  if (!(h > 0.0) || !std::isfinite(h)) h = 1.0;
+  // at most max_bins bins and max_entries list entries (each triangle in
+  // every bin of its box), counted in double so that a tiny h cannot overflow
+  const double max_entries = double(1L << 28);
   for (;;) {
-    long nb = 1;
+    double nb = 1.0, n[3];
     for (int d = 0; d < 3; d++) {
-      g.n[d] = std::max(1, (int) std::ceil((hi[d] - lo[d]) / h));
-      nb *= g.n[d];
+      n[d] = std::max(1.0, std::ceil((hi[d] - lo[d]) / h));
+      nb *= n[d];
     }
-    if (nb <= max_bins) break;
+    if (nb <= double(max_bins)) {
+      double entries = 0.0;
+      for (int t = 0; t < nt && entries <= max_entries; t++) {
+        double nt_bins = 1.0;
+        for (int d = 0; d < 3; d++) {
+          const double *p = tri.data() + 9 * (size_t) t;
+          const double a = std::min(p[d], std::min(p[3 + d], p[6 + d]));
+          const double b = std::max(p[d], std::max(p[3 + d], p[6 + d]));
+          nt_bins *= std::floor((b - lo[d]) / h) - std::floor((a - lo[d]) / h) + 1.0;
+        }
+        entries += nt_bins;
+      }
+      if (entries <= max_entries) {
+        for (int d = 0; d < 3; d++) g.n[d] = (int) n[d];
+        break;
+      }
+    }
     h *= 1.25;
   }
   for (int d = 0; d < 3; d++) g.lo[d] = lo[d];

@@ -37,6 +37,9 @@ struct StlMesh {
   long nread = 0;          // triangles in the file
   long ndegenerate = 0;    // dropped: zero area (relative 1e-12 of the longest edge squared)
   long nduplicate = 0;     // dropped: same three vertices as an earlier triangle
+  bool no_endsolid = false;    // ASCII: complete facets, then the file ends (truncated?)
+  long nalong = 0, nopposite = 0;    // kept triangles whose stored facet normal points along
+                                     // / against the vertex order's (after flip)
   int ntri() const { return (int) (tri.size() / 9); }
 };
 
@@ -78,7 +81,8 @@ struct MeshGrid {
   std::vector<int> tbin;     // 3 per triangle: first bin
 };
 
-// h: requested bin edge; enlarged so that there are at most max_bins bins.
+// h: requested bin edge; enlarged (x 1.25 at a time) until there are at most
+// max_bins bins and 2^28 list entries.
 MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins = 1L << 22);
 
 }    // namespace polydem

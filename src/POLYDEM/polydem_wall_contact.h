@@ -51,6 +51,7 @@ template <typename T> struct WallPatch {
 template <typename T> struct WallPatches {
   int n;
   int noverflow, ndegenerate, nmerged, ntri;    // counts for the host's warnings
+  int nunrecorded;    // clipped triangles beyond the per-triangle record (pertriangle)
   WallPatch<T> p[WALL_MAX_PATCH];
 };
 
@@ -404,6 +405,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         out->nmerged++;    // more facet orientations than patches: join the closest
     }
     WallPatch<T> &p = out->p[k];
+    if (ws->record && t >= 0 && ws->nrec >= WALL_MAX_CAND) out->nunrecorded++;
     if (ws->record && t >= 0 && ws->nrec < WALL_MAX_CAND) {
       ws->rtri[ws->nrec] = t;
       ws->rpatch[ws->nrec] = (signed char) k;
@@ -569,7 +571,7 @@ POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T
                              WallWorkspace<T, MF, ME> &ws, WallPatches<T> &out,
                              WallNear<T> *near = nullptr)
 {
-  out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = 0;
+  out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = out.nunrecorded = 0;
   const ShapeView<T> &sv = *a.view;
   if (sv.nverts > MAX_TEMPLATE_VERTS) {
     out.noverflow++;
@@ -826,16 +828,18 @@ POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab
 // triangles in proportion to their section areas A_t (by volume if the patch
 // has no section area), so the triangles' forces add up to the patch force;
 // for a flat patch this is a uniform pressure over the contact section.
+// The shares are of the patch's totals (P), so a triangle beyond the record
+// (more than WALL_MAX_CAND under one particle, counted in P.nunrecorded)
+// leaves its share out rather than inflating the others.
 // add(t, fx, fy, fz) receives each share (lab frame).
 template <typename T, int MF, int ME, typename F>
-POLYDEM_FN void wall_triangle_forces(const WallWorkspace<T, MF, ME> &ws, const WallForce<T> &wf,
-                                     F &add)
+POLYDEM_FN void wall_triangle_forces(const WallWorkspace<T, MF, ME> &ws, const WallPatches<T> &P,
+                                     const WallForce<T> &wf, F &add)
 {
   T asum[WALL_MAX_PATCH], vsum[WALL_MAX_PATCH];
-  for (int k = 0; k < WALL_MAX_PATCH; ++k) asum[k] = vsum[k] = T(0);
-  for (int e = 0; e < ws.nrec; ++e) {
-    asum[ws.rpatch[e]] += ws.rarea[e];
-    vsum[ws.rpatch[e]] += ws.rvol[e];
+  for (int k = 0; k < WALL_MAX_PATCH; ++k) {
+    asum[k] = k < P.n ? P.p[k].area : T(0);
+    vsum[k] = k < P.n ? P.p[k].volume : T(0);
   }
   for (int e = 0; e < ws.nrec; ++e) {
     const int k = ws.rpatch[e];

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -108,6 +109,47 @@ TEST(Stl, DropsZeroAreaAndDuplicates)
   EXPECT_EQ(m.ndegenerate, 2);
 }
 
+// keywords in upper case read like lower case; an ASCII file that ends
+// after a complete facet without 'endsolid' is read and flagged (warned)
+TEST(Stl, AsciiCaseAndMissingEndsolid)
+{
+  const std::string facet = " facet normal 0 0 1\n  outer loop\n   vertex 0 0 0\n"
+                            "   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\n";
+  std::string upper = "SOLID X\n" + facet + "ENDSOLID X\n";
+  for (size_t k = 8; k < upper.size(); k++)
+    upper[k] = (char) std::toupper((unsigned char) upper[k]);
+  const StlMesh a = read_stl(write_text("upper.stl", upper), StlTransform());
+  const StlMesh b = read_stl(write_text("lower.stl", "solid x\n" + facet + "endsolid x\n"),
+                             StlTransform());
+  EXPECT_FALSE(a.binary);
+  EXPECT_EQ(a.tri, b.tri);
+  EXPECT_FALSE(a.no_endsolid);
+  const StlMesh c = read_stl(write_text("noend.stl", "solid x\n" + facet), StlTransform());
+  EXPECT_EQ(c.ntri(), 1);
+  EXPECT_TRUE(c.no_endsolid);
+  const std::string junk = write_text("junk.stl", "solid x\n" + facet + "endsolid x\nfacet\n");
+  EXPECT_NE(error_of(junk).find("junk.stl:10: expected 'solid' or the end of the file"),
+            std::string::npos) << error_of(junk);
+  // stored normals against the vertex order: counted (the fix warns)
+  const std::string down = " facet normal 0 0 -1\n  outer loop\n   vertex 0 0 0\n"
+                           "   vertex 1 0 0\n   vertex 0 1 0\n  endloop\n endfacet\n";
+  const StlMesh d = read_stl(write_text("down.stl", "solid x\n" + down + "endsolid x\n"),
+                             StlTransform());
+  EXPECT_EQ(d.nopposite, 1);
+  EXPECT_EQ(d.nalong, 0);
+  EXPECT_EQ(b.nalong, 1);
+  EXPECT_EQ(b.nopposite, 0);
+  StlTransform flipped;
+  flipped.flip = true;
+  EXPECT_EQ(read_stl(write_text("down2.stl", "solid x\n" + down + "endsolid x\n"), flipped).nalong, 1);
+  StlTransform big;
+  big.scale = 1e308;
+  big.offset[0] = 1e308;
+  EXPECT_NE(error_of(write_text("big.stl", "solid x\n" + facet + "endsolid x\n"), big)
+                .find("not finite after scale, rotate and offset"),
+            std::string::npos);
+}
+
 TEST(Stl, Errors)
 {
   EXPECT_NE(error_of("/nonexistent/x.stl").find("/nonexistent/x.stl: cannot open"),
@@ -195,6 +237,18 @@ TEST(MeshGrid, BinCountCapped)
   const MeshGrid g = build_mesh_grid(t, 1e-3, 1000);
   EXPECT_LE((long) g.n[0] * g.n[1] * g.n[2], 1000);
   EXPECT_EQ(g.start.back(), (int) g.items.size());
+  // an edge so small that the bin counts would overflow int and long
+  Tris box = t;
+  for (size_t k = 0; k < t.size(); k += 3) {
+    box.push_back(t[k + 2]);
+    box.push_back(t[k]);
+    box.push_back(t[k + 1]);
+  }
+  const MeshGrid tiny = build_mesh_grid(box, 1e-15);
+  EXPECT_LE((long) tiny.n[0] * tiny.n[1] * tiny.n[2], 1L << 22);
+  EXPECT_GT(tiny.n[2], 1);
+  EXPECT_EQ(tiny.start.back(), (int) tiny.items.size());
+  EXPECT_GE(tiny.items.size(), box.size() / 9);
 }
 
 // Coplanar merging (fix wall/mesh keyword merge)

@@ -42,6 +42,14 @@ constexpr double DELTA = 2.5e-5;    // penetration 1e-3 L
 constexpr double CORE = 1.0e-4;     // default core fraction
 
 // analytic W'(V) of the contact model's doc (Feng, Eqs. 12-13, C2 core)
+std::string read_file_text(const std::string &path)
+{
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 double wprime(double K, double V, double V0)
 {
   if (V < V0) return K / std::cbrt(V0 * V0) * V * (5.0 / 3.0 - 2.0 / 3.0 * V / V0);
@@ -267,6 +275,31 @@ TEST(WallMesh, NearListsGiveTheSameForces)
 }
 
 // pertriangle yes: the seed's Table 2 cuboid pressed face-down by delta onto a
+namespace {
+
+// the cuboid pressed DELTA into a flat mesh (stl), its edges cutting cells;
+// the fix with per-triangle forces
+std::vector<std::string> pertri_scene(const std::string &stl)
+{
+  return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.1 0.2 -0.1 0.1 -0.1 0.1",
+          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
+          "create_atoms 1 single " + num(1.5 * L + 0.0013) + " 0.0021 " + num(L / 2 - DELTA),
+          "polyhedron_set group all scale 1 density " + num(RHO), "pair_style polyhedron",
+          "pair_coeff * * " + num(E) + " " + num(NU) + " 1.0 " + num(MU),
+          "fix w all wall/mesh " + stl + " merge no pertriangle yes"};
+}
+
+// its normal force: the flat-wall contact of the face, W'(L^2 DELTA) L^2
+double pertri_fn()
+{
+  const double Vp = L * L * L;
+  const double R = std::cbrt(3.0 * Vp / (4.0 * PI));
+  return wprime(2.0 * E / R, L * L * DELTA, CORE * Vp) * L * L;
+}
+
+}    // namespace
+
 // regular flat mesh (merge no, cells of L/4, offset so that the cuboid's
 // edges cut cells): the triangles' forces add up to the force on the mesh (to
 // round-off), every triangle under the face carries the uniform pressure
@@ -278,18 +311,11 @@ TEST(WallMesh, PerTriangleForces)
   const std::string stl = tmpdir() + "/pertri.stl";
   write_ascii(stl, tris);
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-          "comm_modify vel yes", "region box block -0.1 0.2 -0.1 0.1 -0.1 0.1",
-          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
-          "create_atoms 1 single " + num(1.5 * L + 0.0013) + " 0.0021 " + num(L / 2 - DELTA),
-          "polyhedron_set group all scale 1 density " + num(RHO), "pair_style polyhedron",
-          "pair_coeff * * " + num(E) + " " + num(NU) + " 1.0 " + num(MU),
-          "fix w all wall/mesh " + stl + " merge no pertriangle yes", "run 0"});
+  l.cmds(pertri_scene(stl));
+  l.cmd("run 0");
   auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
   ASSERT_EQ(fix->size_array_rows, (int) tris.size() / 9);
-  const double Vp = L * L * L;
-  const double R = std::cbrt(3.0 * Vp / (4.0 * PI));
-  const double Fn = wprime(2.0 * E / R, L * L * DELTA, CORE * Vp) * L * L;
+  const double Fn = pertri_fn();
   const double x0 = 1.5 * L + 0.0013 - L / 2, x1 = x0 + L, y0 = 0.0021 - L / 2, y1 = y0 + L;
   double sum[3] = {0, 0, 0}, pmax_err = 0, share_err = 0, outside = 0;
   int nfull = 0, npart = 0;
@@ -343,6 +369,45 @@ TEST(WallMesh, PerTriangleForces)
   for (int c = 0; c < 3; c++)
     EXPECT_NEAR(sum[c], fix->compute_vector(c), 1e-12 * Fn) << c;
   EXPECT_NEAR(sum[2], -Fn, 1e-9 * Fn);
+}
+
+// more triangles under one particle than the per-triangle record holds
+// (WALL_MAX_CAND = 1024; cells of L/32: 2048 under the face): a warning
+// with the count, and the recorded triangles keep their share of the
+// patch's force (the uniform pressure, not inflated), so the per-triangle
+// forces add up to less than the force on the mesh.
+TEST(WallMesh, PerTriangleRecordFull)
+{
+  const Tris tris = flat(0, 3 * L, -L, L, 0, 96, 64);
+  const std::string stl = tmpdir() + "/pertri_fine.stl";
+  write_binary(stl, tris);
+  const std::string log = tmpdir() + "/pertri_fine.log";
+  double pmax = 0.0, sumz = 0.0, fz = 0.0;
+  int nrec = 0;
+  {
+    Lmp l({"-log", log});
+    l.cmds(pertri_scene(stl));
+    l.cmd("run 1");
+    auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+    for (int t = 0; t < fix->size_array_rows; t++) {
+      pmax = std::fmax(pmax, fix->compute_array(t, 3));
+      sumz += fix->compute_array(t, 2);
+      nrec += fix->compute_array(t, 3) != 0.0;
+    }
+    fz = fix->compute_vector(2);
+  }
+  const double Fn = pertri_fn();
+  const std::string text = read_file_text(log);
+  std::printf("[ wall     ] per-triangle record full: %d triangles recorded, sum %.6g of the mesh "
+              "force %.6g, largest pressure %.6g (uniform %.6g)\n", nrec, sumz, fz, pmax,
+              Fn / (L * L));
+  EXPECT_NE(text.find("triangle contacts left out of the per-triangle forces"),
+            std::string::npos);
+  EXPECT_LE(nrec, 1024);
+  EXPECT_LT(pmax, (1 + 1e-9) * Fn / (L * L));
+  EXPECT_GT(pmax, (1 - 1e-9) * Fn / (L * L));
+  EXPECT_LT(std::fabs(sumz), 0.9 * std::fabs(fz));
+  EXPECT_NEAR(fz, -Fn, 1e-9 * Fn);
 }
 
 // move wiggle: a cube resting (gravity, friction 0.8) on a floor that
@@ -507,6 +572,19 @@ std::vector<std::string> one_particle()
           "pair_style polyhedron", "pair_coeff * * 1e6 0.1 0.5 0.5"};
 }
 
+// the log of a one-particle session running cmds (the last one may fail)
+std::string one_particle_log(const std::string &name, const std::vector<std::string> &cmds)
+{
+  const std::string log = tmpdir() + "/" + name + ".log";
+  {
+    Lmp l({"-log", log});
+    l.cmds(one_particle());
+    for (size_t k = 0; k + 1 < cmds.size(); k++) l.cmd(cmds[k]);
+    if (!cmds.empty()) l.error_of(cmds.back());
+  }
+  return read_file_text(log);
+}
+
 }    // namespace
 
 // Acceptance 5: each bad input a clear LAMMPS error naming the command and
@@ -546,12 +624,34 @@ TEST(WallMesh, BadInput)
       {good + " patch/angle 95", "patch/angle must be in [0, 90)"},
       {good + " flip maybe", "flip expects yes or no"},
       {good + " scale abc", "Expected floating point parameter"},
+      {good + " offset 1e400 0 0", "'1e400' (argument 6) is not a finite number"},
+      {good + " move rotate 0 0 0 0 0 1 rpm 1e400", "is not a finite number"},
+      {good + " move wiggle 0 0 1e-3 1e-320", "move wiggle period must be > 0"},
+      {good + " scale 1e305", "too large (its area overflows) after scale, rotate and offset"},
   };
   for (const auto &c : cases) {
     Lmp l;
     l.cmds(one_particle());
     const std::string msg = l.error_of("fix w all wall/mesh " + c.args);
     EXPECT_NE(msg.find(c.expect), std::string::npos) << c.args << " -> '" << msg << "'";
+  }
+  {    // an unreadable file: the error reaches the log (error->all)
+    const std::string text = one_particle_log("badinput", {"fix w all wall/mesh /nonexistent/wall.stl"});
+    EXPECT_NE(text.find("ERROR: fix wall/mesh: /nonexistent/wall.stl: cannot open file"),
+              std::string::npos) << text;
+  }
+  {    // facet normals stored against the vertex order: a warning
+    const std::string down = write_file("down_lmp.stl", "solid s\n facet normal 0 0 -1\n  outer loop\n"
+                                        "   vertex -1 -1 0\n   vertex 1 -1 0\n   vertex 1 1 0\n"
+                                        "  endloop\n endfacet\nendsolid s\n");
+    const std::string text = one_particle_log("down", {"fix w all wall/mesh " + down});
+    EXPECT_NE(text.find("point against the vertex order for 1 of 1 triangles"),
+              std::string::npos) << text;
+  }
+  {    // a bin edge far too small for the mesh: enlarged, with a warning
+    const std::string text =
+        one_particle_log("tinybin", {"fix w all wall/mesh " + good + " bin 1e-12", "run 0"});
+    EXPECT_NE(text.find("bin 1e-12 enlarged to"), std::string::npos) << text;
   }
   {    // without pair_style polyhedron the particles have no material
     Lmp l;
@@ -571,16 +671,7 @@ TEST(WallMesh, DroppedTrianglesWarn)
   for (double v : {0.0, 0.0, 0.0, 0.01, 0.0, 0.0, 0.02, 0.0, 0.0}) t.push_back(v);
   const std::string f = tmpdir() + "/dropped.stl";
   write_binary(f, t);
-  const std::string log = tmpdir() + "/dropped.log";
-  {
-    Lmp l({"-log", log});
-    l.cmds(one_particle());
-    l.cmd("fix w all wall/mesh " + f);
-  }
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = one_particle_log("dropped", {"fix w all wall/mesh " + f});
   EXPECT_NE(text.find("10 triangles read, 8 kept"), std::string::npos) << text;
   EXPECT_NE(text.find("WARNING: fix wall/mesh: " + f + ": 1 zero-area triangles dropped"),
             std::string::npos);
