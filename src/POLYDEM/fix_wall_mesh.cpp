@@ -366,6 +366,35 @@ void FixWallMesh::init()
     tdtab[t] = polydem::wall_damping_table(et);
   }
   build_grid();
+  check_timestep();
+}
+
+// A face lying flat on the wall in the core has the largest stiffness of the
+// model (polydem_contact_model.h, face_contact_stable_dt): warn when the time
+// step exceeds its explicit stability limit, for the largest face of each
+// particle of the group.
+void FixWallMesh::check_timestep()
+{
+  double dtmin = 1e300;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double s = atom->pscale[i];
+    polydem::ContactParams<double> p = params(i, false);
+    p.meff /= force->ftm2v;
+    const double dtf =
+        polydem::face_contact_stable_dt(p, avec->shape(atom->pshape[i]).max_face_area() * s * s);
+    if (dtf > 0.0) dtmin = MIN(dtmin, dtf);
+  }
+  MPI_Allreduce(MPI_IN_PLACE, &dtmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  if (dtmin >= 1e300 || comm->me != 0) return;
+  utils::logmesg(lmp, "fix wall/mesh {}: a face flat on the wall in the core (core {}) is stable "
+                 "for timesteps below {:.4g}, resolved below about {:.4g}\n", id, core, dtmin,
+                 dtmin / 20.0);
+  if (update->dt > 0.5 * dtmin)
+    error->warning(FLERR, "fix wall/mesh {}: timestep {:.4g} exceeds half of {:.4g}, the "
+                   "stability limit of a largest face resting flat on the wall in the core "
+                   "(stiffness 5/3 K V0^(-2/3) A^2): flat contacts may stick or gain energy; "
+                   "lower the timestep or raise core", id, update->dt, dtmin);
 }
 
 // bin edge: user value, else max(r_max / 2, twice the median triangle edge)

@@ -106,6 +106,7 @@ class FixWallMesh : public Fix {
   polydem::ContactParams<double> params(int i, bool update) const;
   void build_grid();
   void report_counts();
+  void check_timestep();
   virtual void compute_forces(bool update);
   // reaction of a particle force f, torque tau (about x) on the mesh
   void tally(const double *x, const polydem::WallForce<double> &wf,

@@ -262,23 +262,40 @@ double PairPolyhedron::init_one(int i, int j)
 
 void PairPolyhedron::check_timestep()
 {
-  double tc = 1e300;
+  double tc[2] = {1e300, 1e300};    // contact time, face-contact stability limit
   for (int i = 0; i < atom->nlocal; i++) {
-    const double V = avec->shape(atom->pshape[i]).volume();
+    const auto &shape = avec->shape(atom->pshape[i]);
+    const double V = shape.volume();
     const double s = atom->pscale[i];
     const double R = s * cbrt(3.0 * V / (4.0 * MY_PI));
     const double kn = 2.0 * youngs[atom->type[i]] * R;
-    tc = MIN(tc, MY_PI * sqrt(0.5 * atom->rmass[i] / (kn * force->ftm2v)));
+    tc[0] = MIN(tc[0], MY_PI * sqrt(0.5 * atom->rmass[i] / (kn * force->ftm2v)));
+    // like pair of this particle, its largest face flat on another's
+    const auto p = polydem::make_contact_params(
+        youngs[atom->type[i]], 0.0, V * s * s * s, atom->rmass[i] / force->ftm2v,
+        youngs[atom->type[i]], 0.0, V * s * s * s, atom->rmass[i] / force->ftm2v, 0.0, 0.0, core, 0.0);
+    const double dtf = polydem::face_contact_stable_dt(p, shape.max_face_area() * s * s);
+    if (dtf > 0.0) tc[1] = MIN(tc[1], dtf);
   }
-  double all;
-  MPI_Allreduce(&tc, &all, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (all >= 1e300 || comm->me != 0) return;
+  double all[2];
+  MPI_Allreduce(tc, all, 2, MPI_DOUBLE, MPI_MIN, world);
+  if (all[0] >= 1e300 || comm->me != 0) return;
   utils::logmesg(lmp, "pair polyhedron: estimated contact time {:.4g}, timestep {:.4g} = t_c/{:.3g}\n",
-                 all, update->dt, all / update->dt);
-  if (update->dt > all / 10.0)
+                 all[0], update->dt, all[0] / update->dt);
+  if (update->dt > all[0] / 10.0)
     error->warning(FLERR, "pair polyhedron: timestep {:.4g} exceeds t_c/10 = {:.4g} (estimated "
                    "contact time {:.4g}): contacts will be poorly resolved",
-                   update->dt, all / 10.0, all);
+                   update->dt, all[0] / 10.0, all[0]);
+  if (all[1] < 1e300) {
+    utils::logmesg(lmp, "pair polyhedron: a flat face contact in the core (core {}) is stable "
+                   "for timesteps below {:.4g}, resolved below about {:.4g}\n", core, all[1],
+                   all[1] / 20.0);
+    if (update->dt > 0.5 * all[1])
+      error->warning(FLERR, "pair polyhedron: timestep {:.4g} exceeds half of {:.4g}, the "
+                     "stability limit of a largest face resting flat in the core (stiffness 5/3 K "
+                     "V0^(-2/3) A^2): flat contacts may stick or gain energy; lower the timestep "
+                     "or raise core", update->dt, all[1]);
+  }
 }
 
 /* ---------------------------------------------------------------------- */

@@ -132,6 +132,17 @@ POLYDEM_FN ContactParams<T> make_contact_params(T Ei, T nui, T Vi, T mi, T Ej, T
   return p;
 }
 
+// Explicit stability limit of a flat face contact (area A, e.g. the largest
+// face) resting in the core: its local stiffness W''(V) A^2 is largest at
+// V -> 0, W''(0) A^2 = 5/3 K V0^(-2/3) A^2, and velocity Verlet is stable for
+// dt < 2 sqrt(m_eff / k). 0 if there is no core (V0 = 0: no bound).
+template <typename T> POLYDEM_FN T face_contact_stable_dt(const ContactParams<T> &p, T A)
+{
+  if (!(p.V0 > T(0)) || !(A > T(0))) return T(0);
+  const T k = T(5) / T(3) * p.K / cbrt(p.V0 * p.V0) * A * A;
+  return T(2) * sqrt(p.meff / k);
+}
+
 template <typename T> struct ContactForce {
   Vec3<T> F_A;      // force on A (B gets -F_A)
   Vec3<T> tau_A;    // torque on A about x_A

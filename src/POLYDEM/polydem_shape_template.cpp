@@ -804,6 +804,23 @@ std::vector<int> PolyShapeTemplate::face(int i) const
                           face_verts_.begin() + face_start_[i + 1]);
 }
 
+double PolyShapeTemplate::max_face_area() const
+{
+  double amax = 0.0;
+  for (int f = 0; f < nfaces(); f++) {
+    double a[3] = {0.0, 0.0, 0.0};    // sum of p_k x p_k+1 = 2 area n
+    for (int k = face_start_[f]; k < face_start_[f + 1]; k++) {
+      const int next = k + 1 < face_start_[f + 1] ? k + 1 : face_start_[f];
+      const double *p = &verts_[3 * face_verts_[k]], *q = &verts_[3 * face_verts_[next]];
+      a[0] += p[1] * q[2] - p[2] * q[1];
+      a[1] += p[2] * q[0] - p[0] * q[2];
+      a[2] += p[0] * q[1] - p[1] * q[0];
+    }
+    amax = std::max(amax, 0.5 * std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]));
+  }
+  return amax;
+}
+
 template <typename T>
 static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, const int *fs,
                               const int *fv, const int *ed, double r, double vol,

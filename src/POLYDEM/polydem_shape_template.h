@@ -91,6 +91,7 @@ class PolyShapeTemplate {
   std::array<int, 2> edge(int i) const { return {edges_[2 * i], edges_[2 * i + 1]}; }
 
   double volume() const { return volume_; }    // unit scale, length^3
+  double max_face_area() const;                // unit scale, length^2 (0: ellipsoid)
   double radius() const { return radius_; }    // max |vertex| about the centroid
   // Principal moments per unit density (length^5), ascending (ellipsoids:
   // in the order of the body axes).

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <random>
@@ -659,6 +660,28 @@ TEST(WallMesh, BadInput)
             "create_box 1 box", "fix w all wall/mesh " + good});
     const std::string msg = l.error_of("run 0");
     EXPECT_NE(msg.find("requires pair_style polyhedron"), std::string::npos) << msg;
+  }
+}
+
+// the stability limit of a face resting flat on the wall in the core,
+// 2 sqrt(m / (5/3 K V0^(-2/3) A^2)) for the 2.5 cm cuboid (E 1e6 Pa on a wall
+// of the same E, core 1e-4): printed, and a warning above half of it
+TEST(WallMesh, TimestepWarning)
+{
+  const std::string good = tmpdir() + "/dt.stl";
+  write_ascii(good, flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2));
+  const double Vp = L * L * L, m = 1500 * Vp;
+  const double R = std::cbrt(3.0 * Vp / (4.0 * PI)), K = 2.0 * 1e6 / R, V0 = 1e-4 * Vp;
+  const double limit = 2.0 * std::sqrt(m / (5.0 / 3.0 * K / std::cbrt(V0 * V0) * L * L * L * L));
+  for (double f : {0.4, 0.6}) {
+    const std::string text = one_particle_log(
+        "dt", {"fix w all wall/mesh " + good, "timestep " + num(f * limit), "run 0"});
+    const size_t at = text.find("a face flat on the wall in the core (core 0.0001) is stable for "
+                                "timesteps below ");
+    ASSERT_NE(at, std::string::npos) << text;
+    const double printed = std::atof(text.c_str() + text.find("below ", at) + 6);
+    EXPECT_NEAR(printed, limit, 1e-3 * limit);
+    EXPECT_EQ(text.find("WARNING: fix wall/mesh w: timestep") != std::string::npos, f > 0.5) << text;
   }
 }
 
