@@ -267,6 +267,9 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
                      "the vertex order for {} of {} triangles: particles are on the side the vertex "
                      "order gives{} (see flip)", file, mesh.nopposite, mesh.nopposite + mesh.nalong,
                      xf.flip ? ", reversed by flip yes" : "");
+    if (mesh.trailing > 0)
+      error->warning(FLERR, "fix wall/mesh: {}: {} bytes after the {} triangles the binary header "
+                     "announces, ignored", file, mesh.trailing, mesh.nread);
     if (mesh.no_endsolid)
       error->warning(FLERR, "fix wall/mesh: {}: no 'endsolid' after the last facet: the file may "
                      "be truncated ({} triangles read)", file, mesh.nread);

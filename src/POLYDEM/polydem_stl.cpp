@@ -188,6 +188,7 @@ namespace {
       throw StlError(path + ": truncated binary STL: header announces " + std::to_string(n) +
                      " triangles (" + std::to_string(need) + " bytes), file has " +
                      std::to_string(data.size()) + " bytes");
+    col.mesh.trailing = (long) (data.size() - need);
     for (uint32_t t = 0; t < n; t++) {
       const char *rec = data.data() + 84 + 50ULL * t;
       float f[12];
@@ -229,7 +230,10 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf)
     uint32_t n = 0;
     std::memcpy(&n, data.data() + 80, 4);
     const bool size_ok = data.size() == 84ULL + 50ULL * n;
-    binary = size_ok || !starts_solid(data);
+    // a text file has no NUL bytes; a binary one whose header says "solid"
+    // and that has trailing bytes does
+    const bool nul = data.find('\0') != std::string::npos;
+    binary = size_ok || !starts_solid(data) || nul;
   } else {
     binary = !starts_solid(data);
   }

@@ -38,6 +38,7 @@ struct StlMesh {
   long ndegenerate = 0;    // dropped: zero area (relative 1e-12 of the longest edge squared)
   long nduplicate = 0;     // dropped: same three vertices as an earlier triangle
   bool no_endsolid = false;    // ASCII: complete facets, then the file ends (truncated?)
+  long trailing = 0;           // binary: bytes after the announced triangles (ignored)
   long nalong = 0, nopposite = 0;    // kept triangles whose stored facet normal points along
                                      // / against the vertex order's (after flip)
   int ntri() const { return (int) (tri.size() / 9); }

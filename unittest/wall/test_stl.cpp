@@ -69,6 +69,15 @@ TEST(Stl, BinaryHeaderStartingWithSolid)
   const StlMesh m = read_stl(b, StlTransform());
   EXPECT_TRUE(m.binary);
   EXPECT_EQ(m.ntri(), 8);
+  EXPECT_EQ(m.trailing, 0);
+  {    // and with bytes after the last triangle: still binary, the bytes counted
+    std::ofstream f(b, std::ios::binary | std::ios::app);
+    f.write("\n\n\n", 3);
+  }
+  const StlMesh m2 = read_stl(b, StlTransform());
+  EXPECT_TRUE(m2.binary);
+  EXPECT_EQ(m2.ntri(), 8);
+  EXPECT_EQ(m2.trailing, 3);
 }
 
 TEST(Stl, TransformScaleRotateOffsetFlip)
