@@ -366,10 +366,25 @@ void FixWallMesh::init()
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} E nu "
                  "e mu)", t, t, t);
     tdamp[t] = polydem::damping_factor(et);
-    tdtab[t] = polydem::wall_damping_table(et);
+    tdtab[t] = damping_table(et);
   }
   build_grid();
   check_timestep();
+}
+
+// zeta(e, a, q) table of restitution e (polydem_wall_contact.h): the ranks
+// share its entries (the sum is exact: each entry comes from one rank), and
+// every process remembers it per e (the same e on all ranks, so every rank
+// takes the same branch)
+polydem::WallDamping<double> FixWallMesh::damping_table(double e)
+{
+  static std::vector<std::pair<double, polydem::WallDamping<double>>> cache;
+  for (auto &c : cache)
+    if (c.first == e) return c.second;
+  polydem::WallDamping<double> d = polydem::wall_damping_table(e, comm->me, comm->nprocs);
+  MPI_Allreduce(MPI_IN_PLACE, &d.z[0][0], 2 * polydem::WALL_DAMP_N, MPI_DOUBLE, MPI_SUM, world);
+  cache.emplace_back(e, d);
+  return d;
 }
 
 // A face lying flat on the wall in the core has the largest stiffness of the

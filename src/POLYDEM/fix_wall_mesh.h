@@ -107,6 +107,7 @@ class FixWallMesh : public Fix {
   void build_grid();
   void report_counts();
   void check_timestep();
+  polydem::WallDamping<double> damping_table(double e);
   virtual void compute_forces(bool update);
   // reaction of a particle force f, torque tau (about x) on the mesh
   void tally(const double *x, const polydem::WallForce<double> &wf,

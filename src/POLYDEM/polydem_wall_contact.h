@@ -646,33 +646,38 @@ inline double wall_contact_restitution(double zeta, double a, double q)
 {
   const double p = a * (q + 1.0) - 1.0, b = q * a, h = 5e-5;
   double x = 0.0, v = 1.0;
+  // half kicks; a step's closing kick and the next step's opening kick see
+  // the same x, so its force x^p and damping g are computed once
+  double xp = 0.0, g = 0.0;
   auto kick = [&](double xx, double vv) {
     if (!(xx > 0.0)) return vv;
-    const double xp = std::pow(xx, p);
-    const double g = 2.0 * zeta * std::sqrt(b * xp / xx);
     return (vv - 0.5 * h * xp) / (1.0 + 0.5 * h * g);
   };
   for (int n = 0; n < 4000000; n++) {
     v = kick(x, v);
     x += h * v;
     if (x <= 0.0 && n > 0) return -v;
+    if (x > 0.0) {
+      xp = std::pow(x, p);
+      g = 2.0 * zeta * std::sqrt(b * xp / x);
+    }
     v = kick(x, v);
     if (v < 0.0 && x < 1e-300) return -v;
   }
   return 0.0;
 }
 
-// zeta(e, a, q) table for restitution e (host only, remembered per e)
-inline WallDamping<double> wall_damping_table(double e)
+// zeta(e, a, q) table for restitution e (host only): the entries whose
+// index (iq * WALL_DAMP_N + k) is rank modulo nranks, the others 0, so that
+// MPI ranks can share the work and sum the tables (fix wall/mesh).
+inline WallDamping<double> wall_damping_table(double e, int rank = 0, int nranks = 1)
 {
-  static std::vector<std::pair<double, WallDamping<double>>> cache;
-  for (auto &c : cache)
-    if (c.first == e) return c.second;
   WallDamping<double> d;
   for (int iq = 0; iq < 2; iq++)
     for (int k = 0; k < WALL_DAMP_N; k++) {
       const double a = 1.0 + 0.25 * k, q = iq == 0 ? 1.0 / 3.0 : 1.0;
       d.z[iq][k] = 0.0;
+      if ((iq * WALL_DAMP_N + k) % nranks != rank) continue;
       if (!(e > 0.0) || e >= 1.0) continue;
       if (iq == 0 && k == 0) {    // the pair's calibration, same value
         d.z[iq][k] = damping_factor(e);
@@ -687,7 +692,6 @@ inline WallDamping<double> wall_damping_table(double e)
       }
       d.z[iq][k] = 0.5 * (lo + hi);
     }
-  cache.emplace_back(e, d);
   return d;
 }
 
