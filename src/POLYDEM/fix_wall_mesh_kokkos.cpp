@@ -401,9 +401,14 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::host_rows_curren
   k_hist.modify_host();
 }
 
+// DualView::resize keeps only the side marked newer, and after a sync it
+// counts the device as newer (keeping the device rows and giving the host a
+// fresh copy): mark the synced host modified first so that the host rows are
+// the ones kept (on a GPU the device rows would otherwise be replaced by the
+// fresh host copy at the next sync)
 template <class DeviceType> void FixWallMeshKokkos<DeviceType>::grow_arrays(int nmax)
 {
-  if (hist) k_hist.sync_host();
+  if (hist) host_rows_current();
   memoryKK->grow_kokkos(k_hist, hist, nmax, NH, "wall/mesh/kk:hist");
   k_hist.modify_host();
 }

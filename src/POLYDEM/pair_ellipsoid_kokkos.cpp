@@ -351,6 +351,8 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   const int nlocal = atom->nlocal;
   if (use_history) {
     auto *fh = (FixNeighHistoryKokkos<DeviceType> *) fix_history;
+    fh->k_firstflag.template sync<DeviceType>();    // read and written on the device below
+    fh->k_firstvalue.template sync<DeviceType>();
     fn.tag = atomKK->k_tag.view<DeviceType>();
     fn.firsttouch = fh->k_firstflag.template view<DeviceType>();
     fn.firstshear = fh->k_firstvalue.template view<DeviceType>();
@@ -378,6 +380,11 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   EllReduce red;
   Kokkos::parallel_reduce(
       Kokkos::RangePolicy<typename DeviceType::execution_space>(0, list->inum), fn, red);
+  if (use_history) {
+    auto *fh = (FixNeighHistoryKokkos<DeviceType> *) fix_history;
+    fh->k_firstflag.template modify<DeviceType>();
+    fh->k_firstvalue.template modify<DeviceType>();
+  }
   if (fn.count_partners)
     polydem_kk::ensure_partners<DeviceType>(fix_history, d_npartner, nlocal, atom->nmax, world);
   if (eflag_global) eng_vdwl += red.evdwl;

@@ -741,6 +741,54 @@ template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::memory_usag
   return bytes;
 }
 
+/* ----------------------------------------------------------------------
+   partner_views (polydem_history_kokkos.h): pointers to the private partner
+   DualViews of FixNeighHistoryKokkos, taken through explicit instantiation,
+   where the standard does not check access ([temp.spec]/6).
+------------------------------------------------------------------------- */
+
+namespace polydem_kk {
+namespace {
+  template <class Tag, typename Tag::type M> struct Expose {
+    friend typename Tag::type member_of(Tag) { return M; }
+  };
+}    // namespace
+
+// tags (one per member and type), their exposure, and partner_views<D>
+#define POLYDEM_PARTNER_VIEWS(D, SUFFIX)                                                          \
+  namespace {                                                                                     \
+    struct Npartner##SUFFIX {                                                                     \
+      typedef ArrayTypes<D>::tdual_int_1d FixNeighHistoryKokkos<D>::*type;                         \
+      friend type member_of(Npartner##SUFFIX);                                                    \
+    };                                                                                            \
+    struct Partner##SUFFIX {                                                                      \
+      typedef ArrayTypes<D>::tdual_tagint_2d FixNeighHistoryKokkos<D>::*type;                      \
+      friend type member_of(Partner##SUFFIX);                                                     \
+    };                                                                                            \
+    struct Valuepartner##SUFFIX {                                                                 \
+      typedef ArrayTypes<D>::tdual_float_2d FixNeighHistoryKokkos<D>::*type;                       \
+      friend type member_of(Valuepartner##SUFFIX);                                                \
+    };                                                                                            \
+    template struct Expose<Npartner##SUFFIX, &FixNeighHistoryKokkos<D>::k_npartner>;              \
+    template struct Expose<Partner##SUFFIX, &FixNeighHistoryKokkos<D>::k_partner>;                \
+    template struct Expose<Valuepartner##SUFFIX, &FixNeighHistoryKokkos<D>::k_valuepartner>;      \
+  }                                                                                               \
+  template <> PartnerViews<D> partner_views<D>(FixNeighHistoryKokkos<D> * fix)                    \
+  {                                                                                               \
+    PartnerViews<D> v;                                                                            \
+    v.npartner = &(fix->*member_of(Npartner##SUFFIX()));                                          \
+    v.partner = &(fix->*member_of(Partner##SUFFIX()));                                            \
+    v.valuepartner = &(fix->*member_of(Valuepartner##SUFFIX()));                                  \
+    return v;                                                                                     \
+  }
+
+POLYDEM_PARTNER_VIEWS(LMPDeviceType, Device)
+#ifdef LMP_KOKKOS_GPU
+POLYDEM_PARTNER_VIEWS(LMPHostType, Host)
+#endif
+#undef POLYDEM_PARTNER_VIEWS
+}    // namespace polydem_kk
+
 namespace LAMMPS_NS {
 template class PairPolyhedronKokkos<LMPDeviceType>;
 #ifdef LMP_KOKKOS_GPU

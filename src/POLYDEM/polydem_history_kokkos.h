@@ -36,6 +36,23 @@ template <class DeviceType> struct HistoryMaxFunctor {
   KOKKOS_INLINE_FUNCTION void init(int &m) const { m = 0; }
 };
 
+// The partner DualViews of a FixNeighHistoryKokkos (private there): defined
+// in pair_polyhedron_kokkos.cpp, which instantiates it for the LAMMPS device
+// and host types.
+template <class DeviceType> struct PartnerViews {
+  typename ArrayTypes<DeviceType>::tdual_int_1d *npartner;
+  typename ArrayTypes<DeviceType>::tdual_tagint_2d *partner;
+  typename ArrayTypes<DeviceType>::tdual_float_2d *valuepartner;
+};
+template <class DeviceType>
+PartnerViews<DeviceType> partner_views(FixNeighHistoryKokkos<DeviceType> *fix);
+template <>
+PartnerViews<LMPDeviceType> partner_views<LMPDeviceType>(FixNeighHistoryKokkos<LMPDeviceType> *fix);
+#ifdef LMP_KOKKOS_GPU
+template <>
+PartnerViews<LMPHostType> partner_views<LMPHostType>(FixNeighHistoryKokkos<LMPHostType> *fix);
+#endif
+
 /* ----------------------------------------------------------------------
    FixNeighHistoryKokkos of LAMMPS 29Sep2021 with a complete copy_arrays:
    the original copies one value per partner instead of dnum, which loses
@@ -49,6 +66,44 @@ class FixNeighHistoryPolyhedronKokkos : public FixNeighHistoryKokkos<DeviceType>
   FixNeighHistoryPolyhedronKokkos(LAMMPS *lmp, int narg, char **arg) :
       FixNeighHistoryKokkos<DeviceType>(lmp, narg, arg)
   {
+  }
+  // The base class writes the partner arrays on the device in pre_exchange
+  // and reads them there in post_neighbor without marking or syncing its
+  // DualViews. On the Serial backend host and device are one; on a GPU the
+  // host copy used by exchange, sorting and restart went stale, and restart
+  // data never reached the device.
+  void pre_exchange() override
+  {
+    FixNeighHistoryKokkos<DeviceType>::pre_exchange();
+    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
+    v.npartner->template modify<DeviceType>();
+    v.partner->template modify<DeviceType>();
+    v.valuepartner->template modify<DeviceType>();
+  }
+  void post_neighbor() override
+  {
+    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
+    v.npartner->template sync<DeviceType>();
+    v.partner->template sync<DeviceType>();
+    v.valuepartner->template sync<DeviceType>();
+    FixNeighHistoryKokkos<DeviceType>::post_neighbor();
+  }
+  // DualView::resize keeps the side marked newer. After the base's sync both
+  // are equal, so it keeps the device rows with a fresh host copy, which the
+  // base then marks modified. Mark the synced host newer first, so that the
+  // host rows (current) are kept and reach the device at the next sync.
+  void grow_arrays(int nmax) override
+  {
+    if (this->npartner) {
+      const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
+      v.npartner->template sync<LMPHostType>();
+      v.partner->template sync<LMPHostType>();
+      v.valuepartner->template sync<LMPHostType>();
+      v.npartner->template modify<LMPHostType>();
+      v.partner->template modify<LMPHostType>();
+      v.valuepartner->template modify<LMPHostType>();
+    }
+    FixNeighHistoryKokkos<DeviceType>::grow_arrays(nmax);
   }
   void copy_arrays(int i, int j, int delflag) override
   {
