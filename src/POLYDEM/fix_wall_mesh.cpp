@@ -467,6 +467,46 @@ polydem::MeshGridView<double> FixWallMesh::grid_view() const
   return g;
 }
 
+bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
+                                  const polydem::Quat<double> &q, double gap)
+{
+  const auto mp = mesh_pose();
+  const auto g = grid_view();
+  polydem::InsertBody<double> b = lab;    // into the mesh frame
+  b.x = mp.o + polydem::matTvec(mp.R, lab.x - mp.o - mp.d);
+  const polydem::Quat<double> qm = polydem::qmul(polydem::qconj(mp.q), q);
+  b.R = polydem::quat_to_mat(qm);
+  struct Visit {
+    const polydem::MeshGridView<double> *g;
+    const polydem::InsertBody<double> *b;
+    double gap;
+    bool clear;
+    void operator()(int t)
+    {
+      if (!clear) return;
+      polydem::TriangleSupport<double> ts;
+      for (int k = 0; k < 9; k++) ts.p[k] = g->tri[9 * t + k];
+      clear = polydem::body_triangle_apart(*b, ts, gap);
+    }
+  } visit{&g, &b, gap, true};
+  polydem::mesh_for_each_near(g, b.x, b.radius + gap, visit);
+  if (!visit.clear || !b.view) return visit.clear;
+  // apart from every triangle, but possibly behind one: the wall's own
+  // contact volume decides (what its forces would act on)
+  if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
+  ws->record = 0;
+  polydem::Pose<double> pm;
+  pm.x = b.x;
+  pm.q = qm;
+  pm.s = b.s;
+  const polydem::PosedShape<double> a = polydem::make_posed(*b.view, pm);
+  polydem::WallPatches<double> P;
+  polydem::wall_patches(a, g, cosmax, *ws, P);
+  for (int k = 0; k < P.n; k++)
+    if (P.p[k].volume > 0.0 || !(P.p[k].volume == P.p[k].volume)) return false;
+  return P.noverflow == 0 && P.ndegenerate == 0;
+}
+
 polydem::MeshPose<double> FixWallMesh::mesh_pose() const
 {
   using polydem::make_vec3;

@@ -16,6 +16,7 @@ FixStyle(wall/mesh,FixWallMesh);
 
 #include "fix.h"
 
+#include "polydem_insert.h"
 #include "polydem_mesh_grid.h"
 #include "polydem_stl.h"
 #include "polydem_wall_contact.h"
@@ -53,6 +54,12 @@ class FixWallMesh : public Fix {
   double memory_usage() override;
   void post_run() override;
   void *extract(const char *, int &) override;
+
+  // fix insert/polyhedron: true if body b (lab frame, orientation q) is
+  // certified farther than gap from every triangle of the mesh at its
+  // current pose and, for a polyhedron, has no contact volume with it
+  bool insertion_clear(const polydem::InsertBody<double> &b, const polydem::Quat<double> &q,
+                       double gap);
 
   enum { MOVE_NONE, MOVE_TRANSLATE, MOVE_ROTATE, MOVE_WIGGLE };
   // vector: force on the mesh (3), torque on the mesh about its axis point

@@ -8,6 +8,7 @@
 #include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_insert_polyhedron.h"
 #include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
@@ -247,7 +248,8 @@ double PairPolyhedron::init_one(int i, int j)
   // calibrated once here (about 0.3 s per distinct e), not per contact
   dampratio[i][j] = dampratio[j][i] = polydem::damping_factor(restitution[i][j]);
 
-  double rmax = 0.0;
+  // particles present, and those an insertion fix may add later
+  double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
   for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
   double all;
   MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);

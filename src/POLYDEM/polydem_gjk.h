@@ -288,13 +288,7 @@ gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b, T tol_rel = T(1000
   return res;
 }
 
-// Certified lower bound of the distance between the convex hulls of the point
-// sets A (na points, xyz) and B (nb points), by GJK on A - B: every support
-// point s of A - B in direction -v gives the separating plane v . p >= v . s,
-// so (v . s)/|v| bounds the distance from below whatever the convergence.
-// Returns 0 if the hulls overlap or touch (within tol [length]); stops early
-// once the bound exceeds stop, or is within 1e-3 of |v| (the upper bound).
-// Bounded: at most GJK_MAX_ITER iterations.
+// Support functor of a point set (na points, xyz): the point maximising d . p.
 template <typename T> POLYDEM_FN Vec3<T> support_of_points(const T *P, int np, const Vec3<T> &d)
 {
   int best = 0;
@@ -309,30 +303,73 @@ template <typename T> POLYDEM_FN Vec3<T> support_of_points(const T *P, int np, c
   return make_vec3(P[3 * best], P[3 * best + 1], P[3 * best + 2]);
 }
 
-template <typename T>
-POLYDEM_FN T hull_gap_lower_bound(const T *A, int na, const T *B, int nb, T tol, T stop)
+template <typename T> struct PointsSupport {
+  const T *P;
+  int np;
+  POLYDEM_FN Vec3<T> operator()(const Vec3<T> &d) const { return support_of_points(P, np, d); }
+};
+
+// Certified bounds lb <= d <= ub of the distance d between two convex sets
+// given by their support functors sa(d), sb(d) (the point maximising d . p),
+// by GJK on A - B: every support point s of A - B in direction -v gives the
+// separating plane v . p >= v . s, so (v . s)/|v| bounds d from below
+// whatever the convergence, and v, a point of A - B, bounds it from above.
+// v: a first direction (e.g. the centres' difference). Touching or overlap
+// (within tol [length]) gives lb = 0 and ub = |v| <= tol. Stops once lb >
+// lo_stop, or ub <= hi_stop, or lb is within 1e-3 of ub. Bounded: at most
+// GJK_MAX_ITER iterations. Works for smooth sets (ellipsoids) as well.
+template <typename T, typename SA, typename SB>
+POLYDEM_FN void gjk_gap_bounds(const SA &sa, const SB &sb, Vec3<T> v, T tol, T lo_stop, T hi_stop,
+                               T &lb, T &ub)
 {
   Vec3<T> w[4];
   int n = 0;
-  Vec3<T> v = make_vec3(A[0] - B[0], A[1] - B[1], A[2] - B[2]);
   if (!(norm2(v) > tol * tol)) v = make_vec3(T(1), T(0), T(0));
-  v = support_of_points(A, na, -v) - support_of_points(B, nb, v);
+  v = sa(-v) - sb(v);
   w[n++] = v;
-  T lb = T(0);
+  lb = T(0);
   for (int it = 0; it < GJK_MAX_ITER; ++it) {
     const T vv = norm2(v);
-    if (!(vv > tol * tol)) return T(0);    // touching (or NaN)
-    const Vec3<T> sp = support_of_points(A, na, -v) - support_of_points(B, nb, v);
-    const T vn = sqrt(vv);
+    ub = sqrt(vv);
+    if (!(vv > tol * tol)) {    // touching (or NaN)
+      lb = T(0);
+      return;
+    }
+    const Vec3<T> sp = sa(-v) - sb(v);
+    const T vn = ub;
     const T b = dot(v, sp) / vn;
     if (b > lb) lb = b;
-    if (lb > stop || vn - lb <= T(1e-3) * vn) return lb;
+    if (lb > lo_stop || vn <= hi_stop || vn - lb <= T(1e-3) * vn) return;
     w[n++] = sp;
     v = gjk_detail::closest_simplex(w, n);
-    if (n == 4) return T(0);    // origin enclosed: the hulls overlap
-    if (!(norm2(v) < vv)) return lb;    // no progress (round-off)
+    if (n == 4) {    // origin enclosed: the sets overlap
+      lb = ub = T(0);
+      return;
+    }
+    if (!(norm2(v) < vv)) return;    // no progress (round-off)
   }
+}
+
+// Certified lower bound of the distance (gjk_gap_bounds), 0 if the sets
+// overlap or touch; stops early once the bound exceeds stop.
+template <typename T, typename SA, typename SB>
+POLYDEM_FN T gjk_gap_lower_bound(const SA &sa, const SB &sb, Vec3<T> v, T tol, T stop)
+{
+  T lb, ub;
+  gjk_gap_bounds(sa, sb, v, tol, stop, T(-1), lb, ub);
   return lb;
+}
+
+// The same for the convex hulls of the point sets A (na points) and B (nb).
+template <typename T>
+POLYDEM_FN T hull_gap_lower_bound(const T *A, int na, const T *B, int nb, T tol, T stop)
+{
+  PointsSupport<T> sa, sb;
+  sa.P = A;
+  sa.np = na;
+  sb.P = B;
+  sb.np = nb;
+  return gjk_gap_lower_bound(sa, sb, make_vec3(A[0] - B[0], A[1] - B[1], A[2] - B[2]), tol, stop);
 }
 
 }    // namespace polydem

@@ -1,0 +1,1222 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - fix insert/polyhedron (doc/fix_insert_polyhedron.rst)
+------------------------------------------------------------------------- */
+
+#include "fix_insert_polyhedron.h"
+
+#include "accelerator_kokkos.h"
+#include "atom.h"
+#include "atom_masks.h"
+#include "atom_vec_polyhedron.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_wall_mesh.h"
+#include "force.h"
+#include "group.h"
+#include "math_const.h"
+#include "modify.h"
+#include "pair.h"
+#include "polydem_rigid.h"
+#include "polydem_shape_template.h"
+#include "region.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using MathConst::MY_PI;
+
+namespace {
+// Region::forward_transform is protected; a pointer to it is formed through
+// a derived class (where the name is accessible) and called on the region.
+struct RegionMotion : public Region {
+  static void forward(Region *r, double &x, double &y, double &z)
+  {
+    void (Region::*f)(double &, double &, double &) = &RegionMotion::forward_transform;
+    (r->*f)(x, y, z);
+  }
+};
+
+constexpr int REGION_TRIES = 1000;    // position draws per attempt before giving up
+constexpr int MAXCELLS = 1 << 22;     // bins of the candidate grid
+constexpr int RESTART_VERSION = 1;
+constexpr int VOID_LEVELS = 2;    // deepest split of a cell check (4 x 4 x 4)
+constexpr int VOID_FAILS = 8;    // failed draws in a live cell before it is checked again
+
+// radical-inverse (van der Corput) of i in base b: the Halton sequence
+double halton(unsigned i, unsigned b)
+{
+  double f = 1.0, r = 0.0;
+  while (i > 0) {
+    f /= b;
+    r += f * (i % b);
+    i /= b;
+  }
+  return r;
+}
+}    // namespace
+
+/* ----------------------------------------------------------------------
+   fix ID group insert/polyhedron N seed keyword values ...
+------------------------------------------------------------------------- */
+
+FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), avec(nullptr), region(nullptr), mode(MODE_RATE), ratestyle(RATE_NONE),
+    massfrac(0), ntotal(0), masstotal(0.0), rate(0.0), every(100), phi_target(0.0),
+    attempts(-1), misses(10), orientstyle(ORIENT_RANDOM), otheta(0.0), itype(1), allin(1), gap(0.0), seed(0),
+    ninserted(0), nfailed(0), nattempts(0), nevents(0), nstart(0), next_event(0),
+    massinserted(0.0), volinserted(0.0), packdone(0), nfailed_warned(0), region_volume(0.0),
+    gh(0.0), reach_max(0.0), rmax_insert(0.0)
+{
+  const std::string me = "fix insert/polyhedron";
+  if (narg < 5) error->all(FLERR, "{}: needs N and seed (fix ID group insert/polyhedron N seed ...)", me);
+  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
+  if (!avec) error->all(FLERR, "{} requires atom_style polyhedron", me);
+  if (domain->dimension != 3) error->all(FLERR, "{}: 3d simulations only", me);
+  if (domain->triclinic) error->all(FLERR, "{}: triclinic boxes are not supported", me);
+
+  ntotal = utils::bnumeric(FLERR, arg[3], false, lmp);
+  if (ntotal < 0) error->all(FLERR, "{}: N must be >= 0, got {}", me, arg[3]);
+  seed = utils::bnumeric(FLERR, arg[4], false, lmp);
+  if (seed <= 0) error->all(FLERR, "{}: seed must be > 0, got {}", me, arg[4]);
+
+  oaxis[0] = oaxis[1] = 0.0;
+  oaxis[2] = 1.0;
+  for (int k = 0; k < 3; k++) vlo[k] = vhi[k] = wlo[k] = whi[k] = 0.0;
+  double density = 0.0;
+  bool have_rate = false;
+
+  auto num = [&](int i) {
+    const double v = utils::numeric(FLERR, arg[i], false, lmp);
+    if (!std::isfinite(v)) error->all(FLERR, "{}: '{}' is not a finite number", me, arg[i]);
+    return v;
+  };
+  int iarg = 5;
+  while (iarg < narg) {
+    const std::string kw = arg[iarg];
+    auto need = [&](int n) {
+      if (iarg + n >= narg) error->all(FLERR, "{}: keyword '{}' needs {} value(s)", me, kw, n);
+    };
+    if (kw == "region") {
+      need(1);
+      idregion = arg[iarg + 1];
+      iarg += 2;
+    } else if (kw == "shape") {
+      need(2);
+      Kind k;
+      k.id = arg[iarg + 1];
+      k.ishape = avec->find_shape(k.id);
+      if (k.ishape < 0)
+        error->all(FLERR, "{}: shape '{}' is not defined (use polyhedron_shape first)", me, k.id);
+      k.frac = num(iarg + 2);
+      if (!(k.frac >= 0.0)) error->all(FLERR, "{}: fraction of shape '{}' must be >= 0", me, k.id);
+      k.density = 0.0;
+      k.pnum = 0.0;
+      iarg += 3;
+      while (iarg < narg) {    // sub-keywords of this shape
+        if (strcmp(arg[iarg], "scale") == 0) {
+          iarg++;
+          parse_scale(iarg, narg, arg, k.scale, k.id);
+        } else if (strcmp(arg[iarg], "density") == 0) {
+          if (iarg + 1 >= narg) error->all(FLERR, "{}: shape '{}': density needs a value", me, k.id);
+          k.density = num(iarg + 1);
+          if (!(k.density > 0.0))
+            error->all(FLERR, "{}: shape '{}': density must be > 0, got {}", me, k.id, arg[iarg + 1]);
+          iarg += 2;
+        } else
+          break;
+      }
+      kinds.push_back(k);
+    } else if (kw == "fractions") {
+      need(1);
+      if (strcmp(arg[iarg + 1], "number") == 0) massfrac = 0;
+      else if (strcmp(arg[iarg + 1], "mass") == 0) massfrac = 1;
+      else error->all(FLERR, "{}: fractions must be 'number' or 'mass', got '{}'", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "density") {
+      need(1);
+      density = num(iarg + 1);
+      if (!(density > 0.0)) error->all(FLERR, "{}: density must be > 0, got {}", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "mode") {
+      need(1);
+      if (strcmp(arg[iarg + 1], "rate") == 0) mode = MODE_RATE;
+      else if (strcmp(arg[iarg + 1], "pack") == 0) mode = MODE_PACK;
+      else error->all(FLERR, "{}: mode must be 'rate' or 'pack', got '{}'", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "every") {
+      need(1);
+      every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (every <= 0) error->all(FLERR, "{}: every must be > 0, got {}", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "rate" || kw == "rate/mass" || kw == "per") {
+      need(1);
+      if (have_rate) error->all(FLERR, "{}: give only one of rate, rate/mass and per", me);
+      have_rate = true;
+      rate = num(iarg + 1);
+      if (!(rate > 0.0)) error->all(FLERR, "{}: {} must be > 0, got {}", me, kw, arg[iarg + 1]);
+      ratestyle = kw == "rate" ? RATE_NUMBER : (kw == "rate/mass" ? RATE_MASS : RATE_PER);
+      if (ratestyle == RATE_PER && rate != floor(rate))
+        error->all(FLERR, "{}: per needs a whole number of particles, got {}", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "mass/total") {
+      need(1);
+      masstotal = num(iarg + 1);
+      if (!(masstotal > 0.0)) error->all(FLERR, "{}: mass/total must be > 0", me);
+      iarg += 2;
+    } else if (kw == "fraction") {
+      need(1);
+      phi_target = num(iarg + 1);
+      if (!(phi_target > 0.0 && phi_target < 1.0))
+        error->all(FLERR, "{}: fraction must be in (0, 1), got {}", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "attempts") {
+      need(1);
+      attempts = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (attempts <= 0) error->all(FLERR, "{}: attempts must be > 0, got {}", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "misses") {
+      need(1);
+      misses = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (misses <= 0) error->all(FLERR, "{}: misses must be > 0, got {}", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "orient") {
+      need(1);
+      const std::string st = arg[iarg + 1];
+      if (st == "random") {
+        orientstyle = ORIENT_RANDOM;
+        iarg += 2;
+      } else if (st == "fixed" || st == "axis") {
+        const int nv = st == "fixed" ? 4 : 3;
+        need(1 + nv);
+        for (int k = 0; k < 3; k++) oaxis[k] = num(iarg + 2 + k);
+        const double n = sqrt(oaxis[0] * oaxis[0] + oaxis[1] * oaxis[1] + oaxis[2] * oaxis[2]);
+        if (!(n > 0.0)) error->all(FLERR, "{}: orient {} needs a non-zero axis", me, st);
+        for (double &a : oaxis) a /= n;
+        if (st == "fixed") otheta = num(iarg + 5) * MY_PI / 180.0;
+        orientstyle = st == "fixed" ? ORIENT_FIXED : ORIENT_AXIS;
+        iarg += 2 + nv;
+      } else
+        error->all(FLERR, "{}: orient must be random, fixed or axis, got '{}'", me, st);
+    } else if (kw == "vel" || kw == "omega") {
+      need(1);
+      double *lo = kw == "vel" ? vlo : wlo, *hi = kw == "vel" ? vhi : whi;
+      const std::string st = arg[iarg + 1];
+      if (st == "constant") {
+        need(4);
+        for (int k = 0; k < 3; k++) lo[k] = hi[k] = num(iarg + 2 + k);
+        iarg += 5;
+      } else if (st == "uniform") {
+        need(7);
+        for (int k = 0; k < 3; k++) {
+          lo[k] = num(iarg + 2 + 2 * k);
+          hi[k] = num(iarg + 3 + 2 * k);
+          if (hi[k] < lo[k]) error->all(FLERR, "{}: {} uniform needs lo <= hi", me, kw);
+        }
+        iarg += 8;
+      } else
+        error->all(FLERR, "{}: {} must be followed by constant or uniform, got '{}'", me, kw, st);
+    } else if (kw == "type") {
+      need(1);
+      itype = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (itype < 1 || itype > atom->ntypes)
+        error->all(FLERR, "{}: type {} is out of range 1..{}", me, arg[iarg + 1], atom->ntypes);
+      iarg += 2;
+    } else if (kw == "all_in") {
+      need(1);
+      if (strcmp(arg[iarg + 1], "yes") == 0) allin = 1;
+      else if (strcmp(arg[iarg + 1], "no") == 0) allin = 0;
+      else error->all(FLERR, "{}: all_in must be yes or no, got '{}'", me, arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "gap") {
+      need(1);
+      gap = num(iarg + 1);
+      if (!(gap >= 0.0)) error->all(FLERR, "{}: gap must be >= 0, got {}", me, arg[iarg + 1]);
+      iarg += 2;
+    } else
+      error->all(FLERR, "{}: unknown keyword '{}'", me, kw);
+  }
+
+  // ---- consistency
+  if (idregion.empty()) error->all(FLERR, "{}: keyword 'region' is required", me);
+  if (kinds.empty()) error->all(FLERR, "{}: at least one 'shape ID fraction' is required", me);
+  double fsum = 0.0;
+  for (auto &k : kinds) {
+    fsum += k.frac;
+    if (k.density <= 0.0) {
+      if (!(density > 0.0))
+        error->all(FLERR, "{}: shape '{}' has no density (keyword density)", me, k.id);
+      k.density = density;
+    }
+  }
+  if (fabs(fsum - 1.0) > 1.0e-6)
+    error->all(FLERR, "{}: the shape fractions sum to {}, not 1", me, fsum);
+  if (mode == MODE_RATE) {
+    if (!have_rate)
+      error->all(FLERR, "{}: mode rate needs one of the keywords rate, rate/mass or per", me);
+    if (phi_target > 0.0) error->all(FLERR, "{}: keyword fraction is for mode pack", me);
+  } else if (have_rate)
+    error->all(FLERR, "{}: keywords rate, rate/mass and per are for mode rate", me);
+  if (ntotal == 0 && masstotal == 0.0 && phi_target == 0.0)
+    error->all(FLERR, "{}: N = 0 needs a limit (mass/total, or fraction in mode pack)", me);
+  if (attempts < 0) attempts = mode == MODE_PACK ? 1000 : 100;
+  number_probabilities();
+  for (const auto &k : kinds)
+    rmax_insert = std::max(rmax_insert, avec->shape(k.ishape).radius() * k.scale.max());
+
+  rng.seed((uint64_t) seed);
+  nstart = update->ntimestep;
+  next_event = nstart;
+
+  force_reneighbor = 1;
+  next_reneighbor = next_event;
+  restart_global = 1;
+  scalar_flag = 1;
+  vector_flag = 1;
+  size_vector = 5;
+  global_freq = 1;
+  extscalar = 0;
+  extvector = 0;
+}
+
+/* ----------------------------------------------------------------------
+   scale constant s | uniform lo hi | normal mean sd lo hi |
+         lognormal median sigma lo hi | list n s1 w1 ... sn wn | s
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::parse_scale(int &iarg, int narg, char **arg, polydem::ScaleDist &d,
+                                      const std::string &id)
+{
+  const std::string me = "fix insert/polyhedron";
+  auto need = [&](int n, const char *what) {
+    if (iarg + n > narg) error->all(FLERR, "{}: shape '{}': scale {} needs {} value(s)", me, id, what, n);
+  };
+  auto num = [&](int i) {
+    const double v = utils::numeric(FLERR, arg[i], false, lmp);
+    if (!(v > 0.0) || !std::isfinite(v))
+      error->all(FLERR, "{}: shape '{}': scale values must be finite and > 0, got '{}'", me, id, arg[i]);
+    return v;
+  };
+  if (iarg >= narg) error->all(FLERR, "{}: shape '{}': scale needs a value", me, id);
+  const std::string st = arg[iarg];
+  using polydem::ScaleDist;
+  if (st == "constant") {
+    need(2, "constant");
+    d.kind = ScaleDist::CONSTANT;
+    d.a = num(iarg + 1);
+    iarg += 2;
+  } else if (st == "uniform") {
+    need(3, "uniform");
+    d.kind = ScaleDist::UNIFORM;
+    d.a = num(iarg + 1);
+    d.b = num(iarg + 2);
+    if (d.b < d.a) error->all(FLERR, "{}: shape '{}': scale uniform needs lo <= hi", me, id);
+    iarg += 3;
+  } else if (st == "normal" || st == "lognormal") {
+    need(5, st.c_str());
+    d.kind = st == "normal" ? ScaleDist::NORMAL : ScaleDist::LOGNORMAL;
+    d.a = num(iarg + 1);
+    d.b = num(iarg + 2);
+    d.lo = num(iarg + 3);
+    d.hi = num(iarg + 4);
+    if (!(d.hi > d.lo))
+      error->all(FLERR, "{}: shape '{}': scale {} needs cut-offs lo < hi", me, id, st);
+    if (!(d.truncated_mass() >= 1.0e-3))
+      error->all(FLERR, "{}: shape '{}': scale {} keeps only {:.3g} of its probability within "
+                 "[{}, {}] (at least 1e-3 needed)", me, id, st, d.truncated_mass(), d.lo, d.hi);
+    iarg += 5;
+  } else if (st == "list") {
+    need(2, "list");
+    const int n = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+    if (n < 1 || n > ScaleDist::MAXLIST)
+      error->all(FLERR, "{}: shape '{}': scale list needs 1..{} entries, got {}", me, id,
+                 ScaleDist::MAXLIST, arg[iarg + 1]);
+    need(2 + 2 * n, "list");
+    d.kind = ScaleDist::LIST;
+    d.nlist = n;
+    double wsum = 0.0;
+    for (int i = 0; i < n; i++) {
+      d.val[i] = num(iarg + 2 + 2 * i);
+      wsum += num(iarg + 3 + 2 * i);
+      d.cum[i] = wsum;
+    }
+    for (int i = 0; i < n; i++) d.cum[i] /= wsum;
+    d.cum[n - 1] = 1.0;
+    iarg += 2 + 2 * n;
+  } else {    // a bare number: constant
+    d.kind = ScaleDist::CONSTANT;
+    d.a = num(iarg);
+    iarg += 1;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   number probabilities of the kinds; mass fractions w_i give
+   p_i ~ w_i / <m_i>, <m_i> = rho_i V_i <s^3>_i
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::number_probabilities()
+{
+  std::vector<double> p(kinds.size());
+  double sum = 0.0;
+  for (size_t i = 0; i < kinds.size(); i++) {
+    const auto &k = kinds[i];
+    p[i] = k.frac;
+    if (massfrac) p[i] /= k.density * avec->shape(k.ishape).volume() * k.scale.moment(3);
+    sum += p[i];
+  }
+  double cum = 0.0;
+  for (size_t i = 0; i < kinds.size(); i++) {
+    cum += p[i] / sum;
+    kinds[i].pnum = cum;
+  }
+  kinds.back().pnum = 1.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+int FixInsertPolyhedron::setmask()
+{
+  return PRE_EXCHANGE;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::init()
+{
+  const std::string me = "fix insert/polyhedron";
+  const int iregion = domain->find_region(idregion.c_str());
+  if (iregion < 0) error->all(FLERR, "{}: region '{}' does not exist", me, idregion);
+  region = domain->regions[iregion];
+  if (!region->bboxflag)
+    error->all(FLERR, "{}: region '{}' has no bounding box (an exterior or unbounded region)",
+               me, idregion);
+  if (domain->triclinic) error->all(FLERR, "{}: triclinic boxes are not supported", me);
+
+  // ellipsoids where only polyhedra are allowed
+  walls.clear();
+  for (int i = 0; i < modify->nfix; i++) {
+    auto w = dynamic_cast<FixWallMesh *>(modify->fix[i]);
+    if (w) walls.push_back(w);
+  }
+  for (const auto &k : kinds) {
+    if (!avec->shape(k.ishape).is_ellipsoid()) continue;
+    if (force->pair && utils::strmatch(force->pair_style, "^polyhedron"))
+      error->all(FLERR, "{}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
+                 "polyhedra only", me, k.id);
+    for (auto w : walls)
+      if (w->groupbit & groupbit)
+        error->all(FLERR, "{}: shape '{}' is an ellipsoid, but fix wall/mesh '{}' acts on "
+                   "group '{}' and takes polyhedra only", me, k.id, w->id, group->names[igroup]);
+  }
+  if (force->pair && utils::strmatch(force->pair_style, "^ellipsoid"))
+    for (const auto &k : kinds)
+      if (!avec->shape(k.ishape).is_ellipsoid())
+        error->all(FLERR, "{}: shape '{}' is a polyhedron, but pair_style ellipsoid takes "
+                   "ellipsoids only", me, k.id);
+
+  region->init();
+  region->prematch();
+  region_volume = estimate_region_volume();
+  if (!(region_volume > 0.0))
+    error->all(FLERR, "{}: region '{}' has zero volume", me, idregion);
+}
+
+/* ----------------------------------------------------------------------
+   bounding box of the region where it is now (a moving region's box
+   follows its motion: the box of the moved corners)
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::region_bbox(double *lo, double *hi)
+{
+  const double elo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
+  const double ehi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
+  if (!region->dynamic) {
+    for (int k = 0; k < 3; k++) {
+      lo[k] = elo[k];
+      hi[k] = ehi[k];
+    }
+    return;
+  }
+  for (int k = 0; k < 3; k++) {
+    lo[k] = 1e300;
+    hi[k] = -1e300;
+  }
+  for (int c = 0; c < 8; c++) {
+    double p[3] = {(c & 1) ? ehi[0] : elo[0], (c & 2) ? ehi[1] : elo[1], (c & 4) ? ehi[2] : elo[2]};
+    RegionMotion::forward(region, p[0], p[1], p[2]);
+    for (int k = 0; k < 3; k++) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+}
+
+/* ----------------------------------------------------------------------
+   region volume: its box times the fraction of 2^18 Halton points inside
+   (exact for a block; relative error ~1e-4 for smooth boundaries), the
+   same on every rank
+------------------------------------------------------------------------- */
+
+double FixInsertPolyhedron::estimate_region_volume()
+{
+  const double ext[3] = {region->extent_xhi - region->extent_xlo,
+                         region->extent_yhi - region->extent_ylo,
+                         region->extent_zhi - region->extent_zlo};
+  if (!(ext[0] > 0.0 && ext[1] > 0.0 && ext[2] > 0.0)) return 0.0;
+  const unsigned n = 1u << 18;
+  unsigned hit = 0;
+  for (unsigned i = 1; i <= n; i++) {
+    double x = region->extent_xlo + ext[0] * halton(i, 2);
+    double y = region->extent_ylo + ext[1] * halton(i, 3);
+    double z = region->extent_zlo + ext[2] * halton(i, 5);
+    if (region->dynamic) RegionMotion::forward(region, x, y, z);
+    hit += region->match(x, y, z) ? 1 : 0;
+  }
+  return ext[0] * ext[1] * ext[2] * hit / n;
+}
+
+/* ---------------------------------------------------------------------- */
+
+polydem::InsertBody<double> FixInsertPolyhedron::body_of(int ishape, double s, const double *x,
+                                                         const polydem::Quat<double> &q) const
+{
+  const auto &t = avec->shape(ishape);
+  polydem::InsertBody<double> b;
+  b.x = polydem::make_vec3(x[0], x[1], x[2]);
+  b.R = polydem::quat_to_mat(q);
+  b.s = s;
+  b.radius = t.radius() * s;
+  if (t.is_ellipsoid()) {
+    const auto &a = t.semi_axes();
+    b.view = nullptr;
+    b.ax = polydem::make_vec3(a[0] * s, a[1] * s, a[2] * s);
+    b.inradius = inradius[ishape] * s;
+  } else {
+    b.view = &views[ishape];
+    b.ax = polydem::make_vec3(0.0, 0.0, 0.0);
+    b.inradius = inradius[ishape] * s;
+  }
+  return b;
+}
+
+// kernel views and inscribed radii (unit scale) of every template: for a
+// polyhedron the nearest face plane, for an ellipsoid its smallest semi-axis
+void FixInsertPolyhedron::refresh_views()
+{
+  views.resize(avec->ntemplates());
+  inradius.resize(avec->ntemplates());
+  for (int i = 0; i < avec->ntemplates(); i++) {
+    const auto &t = avec->shape(i);
+    views[i] = t.view();
+    double din = 1e300;
+    for (int f = 0; f < t.nfaces(); f++) din = std::min(din, t.plane(f)[3]);
+    const auto &a = t.semi_axes();
+    inradius[i] = t.is_ellipsoid() ? std::min(a[0], std::min(a[1], a[2])) : din;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   region containment of a posed body: every vertex of a polyhedron inside
+   (exact for a convex region), an ellipsoid's bounding sphere inside
+------------------------------------------------------------------------- */
+
+bool FixInsertPolyhedron::region_contains(const polydem::InsertBody<double> &b)
+{
+  const polydem::ShapeView<double> *v = b.view;
+  if (!region->match(b.x.x, b.x.y, b.x.z)) return false;
+  if (!allin) return true;
+  if (!v) return region->surface(b.x.x, b.x.y, b.x.z, b.radius) == 0;
+  for (int i = 0; i < v->nverts; i++) {
+    const auto p = b.x + b.s * polydem::matvec(b.R, polydem::make_vec3(v->verts[3 * i],
+                                                                      v->verts[3 * i + 1],
+                                                                      v->verts[3 * i + 2]));
+    if (!region->match(p.x, p.y, p.z)) return false;
+  }
+  return true;
+}
+
+/* ----------------------------------------------------------------------
+   every rank gathers the particles (and periodic images) that can touch a
+   candidate in the region's box [lo, hi]: the same list, in tag order, on
+   every rank. vol_in_region: their volume with the centroid in the region
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::gather(const double *lo, const double *hi, double rcand,
+                                 double &vol_in_region)
+{
+  // per row: tag, image code, shape, scale, x (3), q (4)
+  constexpr int W = 11;
+  const int nlocal = atom->nlocal;
+  double **x = atom->x, **quat = atom->quat;
+  double *radius = atom->radius, *pscale = atom->pscale;
+  int *pshape = atom->pshape;
+  tagint *tag = atom->tag;
+  const double *prd = domain->prd;
+  const int *per = domain->periodicity;
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    const double reach = rcand + radius[i] + gap;
+    for (int ix = -per[0]; ix <= per[0]; ix++)
+      for (int iy = -per[1]; iy <= per[1]; iy++)
+        for (int iz = -per[2]; iz <= per[2]; iz++) {
+          const double p[3] = {x[i][0] + ix * prd[0], x[i][1] + iy * prd[1], x[i][2] + iz * prd[2]};
+          bool in = true;
+          for (int k = 0; k < 3; k++) in = in && p[k] > lo[k] - reach && p[k] < hi[k] + reach;
+          if (!in) continue;
+          const double img = (ix + 1) * 9 + (iy + 1) * 3 + (iz + 1);
+          const double row[W] = {(double) tag[i], img, (double) pshape[i], pscale[i], p[0], p[1],
+                                      p[2], quat[i][0], quat[i][1], quat[i][2], quat[i][3]};
+          mine.insert(mine.end(), row, row + W);
+        }
+  }
+  int nmine = (int) mine.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&nmine, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  bigint total = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = (int) total;
+    total += counts[p];
+  }
+  if (total > MAXSMALLINT) error->all(FLERR, "fix insert/polyhedron: too many particles near the region");
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, world);
+  const int n = (int) (total / W);
+  std::vector<int> order(n);
+  for (int i = 0; i < n; i++) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    const double *ra = &all[(size_t) W * a], *rb = &all[(size_t) W * b];
+    return ra[0] != rb[0] ? ra[0] < rb[0] : ra[1] < rb[1];
+  });
+  entries.clear();
+  vol_in_region = 0.0;
+  for (int j = 0; j < n; j++) {
+    const double *r = &all[(size_t) W * order[j]];
+    const int ishape = (int) r[2];
+    const auto q = polydem::make_quat(r[7], r[8], r[9], r[10]);
+    Entry e;
+    e.b = body_of(ishape, r[3], r + 4, q);
+    entries.push_back(e);
+    if (r[1] == 13.0 && region->match(r[4], r[5], r[6]))
+      vol_in_region += avec->shape(ishape).volume() * r[3] * r[3] * r[3];
+  }
+}
+
+/* ----------------------------------------------------------------------
+   candidate grid over the region's box grown by the largest reach; bins of
+   edge >= reach, so a candidate's neighbours lie in the 27 bins around it
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::grid_setup(const double *lo, const double *hi, double rcand)
+{
+  double rmax = 0.0;
+  for (const auto &e : entries) rmax = std::max(rmax, e.b.radius);
+  reach_max = rcand + std::max(rmax, rcand) + gap;
+  gh = reach_max;
+  for (int k = 0; k < 3; k++) {
+    glo[k] = lo[k] - reach_max;
+    ghi[k] = hi[k] + reach_max;
+  }
+  for (int pass = 0; pass < 64; pass++) {
+    double ncell = 1.0;
+    for (int k = 0; k < 3; k++) ncell *= std::max(1.0, ceil((ghi[k] - glo[k]) / gh));
+    if (ncell <= MAXCELLS) break;
+    gh *= 1.25;
+  }
+  for (int k = 0; k < 3; k++) gn[k] = std::max(1, (int) ceil((ghi[k] - glo[k]) / gh));
+  cell_head.assign((size_t) gn[0] * gn[1] * gn[2], -1);
+  cell_next.clear();
+  const int n = (int) entries.size();
+  for (int i = 0; i < n; i++) link(i);
+}
+
+int FixInsertPolyhedron::cell_of(const polydem::Vec3<double> &x, int *c) const
+{
+  for (int k = 0; k < 3; k++) {
+    const double u = (x[k] - glo[k]) / gh;
+    c[k] = u > 0.0 ? (u < gn[k] ? (int) u : gn[k] - 1) : 0;    // also NaN -> 0
+    if (c[k] >= gn[k]) c[k] = gn[k] - 1;
+  }
+  return (c[2] * gn[1] + c[1]) * gn[0] + c[0];
+}
+
+void FixInsertPolyhedron::link(int i)
+{
+  int c[3];
+  const int cell = cell_of(entries[i].b.x, c);
+  if ((int) cell_next.size() <= i) cell_next.resize(i + 1);
+  cell_next[i] = cell_head[cell];
+  cell_head[cell] = i;
+}
+
+// add an accepted candidate, and its periodic images that reach the grid
+void FixInsertPolyhedron::grid_add(const polydem::InsertBody<double> &b)
+{
+  const double *prd = domain->prd;
+  const int *per = domain->periodicity;
+  for (int ix = -per[0]; ix <= per[0]; ix++)
+    for (int iy = -per[1]; iy <= per[1]; iy++)
+      for (int iz = -per[2]; iz <= per[2]; iz++) {
+        Entry e;
+        e.b = b;
+        e.b.x = b.x + polydem::make_vec3(ix * prd[0], iy * prd[1], iz * prd[2]);
+        bool in = true;
+        for (int k = 0; k < 3; k++) in = in && e.b.x[k] > glo[k] && e.b.x[k] < ghi[k];
+        if (!in && (ix || iy || iz)) continue;
+        entries.push_back(e);
+        link((int) entries.size() - 1);
+      }
+}
+
+bool FixInsertPolyhedron::apart_from_entries(const polydem::InsertBody<double> &b)
+{
+  // cheap tests on every neighbour first (bounding and inscribed balls),
+  // then the exact test, nearest first (the likeliest overlap)
+  int c[3];
+  cell_of(b.x, c);
+  near.clear();
+  for (int k = std::max(0, c[2] - 1); k <= std::min(gn[2] - 1, c[2] + 1); k++)
+    for (int j = std::max(0, c[1] - 1); j <= std::min(gn[1] - 1, c[1] + 1); j++)
+      for (int i = std::max(0, c[0] - 1); i <= std::min(gn[0] - 1, c[0] + 1); i++)
+        for (int e = cell_head[(k * gn[1] + j) * gn[0] + i]; e >= 0; e = cell_next[e]) {
+          const auto &o = entries[e].b;
+          const double dd = polydem::norm2(b.x - o.x);
+          const double far = b.radius + o.radius + gap, in = b.inradius + o.inradius;
+          if (dd > far * far) continue;
+          if (dd < in * in) return false;
+          near.emplace_back(dd, e);
+        }
+  std::sort(near.begin(), near.end());
+  for (const auto &n : near)
+    if (!polydem::bodies_apart(b, entries[n.second].b, gap)) return false;
+  return true;
+}
+
+/* ---------------------------------------------------------------------- */
+
+polydem::Quat<double> FixInsertPolyhedron::draw_orientation(int ishape)
+{
+  if (orientstyle == ORIENT_RANDOM) return polydem::random_quat(rng);
+  // the template as written in its file, turned about the lab axis
+  const auto axis = polydem::make_vec3(oaxis[0], oaxis[1], oaxis[2]);
+  const double theta = orientstyle == ORIENT_FIXED ? otheta : 2.0 * MY_PI * rng.uniform();
+  return polydem::qnormalize(
+      polydem::qmul(polydem::axis_quat(axis, theta), avec->shape(ishape).input_orientation()));
+}
+
+void FixInsertPolyhedron::draw_range(const double *lo, const double *hi, double *out)
+{
+  for (int k = 0; k < 3; k++) out[k] = lo[k] == hi[k] ? lo[k] : lo[k] + (hi[k] - lo[k]) * rng.uniform();
+}
+
+bool FixInsertPolyhedron::sample_in_region(double *x)
+{
+  for (int t = 0; t < REGION_TRIES; t++) {
+    x[0] = region->extent_xlo + (region->extent_xhi - region->extent_xlo) * rng.uniform();
+    x[1] = region->extent_ylo + (region->extent_yhi - region->extent_ylo) * rng.uniform();
+    x[2] = region->extent_zlo + (region->extent_zhi - region->extent_zlo) * rng.uniform();
+    if (region->dynamic) RegionMotion::forward(region, x[0], x[1], x[2]);
+    if (region->match(x[0], x[1], x[2])) return true;
+  }
+  return false;
+}
+
+/* ----------------------------------------------------------------------
+   void cells (mode pack): the region's box in cells of edge rin/2, rin the
+   smallest inscribed radius of the candidates. A cell is dead once each of
+   its points lies within rin + rin_j of a particle j's centroid: no
+   candidate centred there can be apart from j (their inscribed balls would
+   overlap). Drawing a live cell uniformly, then a point in it, is uniform
+   over the live cells, which hold every place a candidate can still take,
+   so the law of the random sequential addition is unchanged while its
+   draws go to the remaining voids (what makes high fractions reachable).
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::voids_setup(const double *lo, const double *hi, double rin)
+{
+  vrin = rin;
+  vh = 0.25 * rin;
+  for (int pass = 0; pass < 64; pass++) {
+    double n = 1.0;
+    for (int k = 0; k < 3; k++) n *= std::max(1.0, ceil((hi[k] - lo[k]) / vh));
+    if (n <= (double) (1 << 24)) break;
+    vh *= 1.25;
+  }
+  for (int k = 0; k < 3; k++) {
+    vlo_[k] = lo[k];
+    vn[k] = std::max(1, (int) ceil((hi[k] - lo[k]) / vh));
+  }
+  const size_t ncell = (size_t) vn[0] * vn[1] * vn[2];
+  vdead.assign(ncell, 0);
+  vfail.assign(ncell, 0);
+  vchecks.assign(ncell, 0);
+  valive.clear();
+  // cells the region touches at their centre or a corner
+  for (int k = 0; k < vn[2]; k++)
+    for (int j = 0; j < vn[1]; j++)
+      for (int i = 0; i < vn[0]; i++) {
+        const int c = (k * vn[1] + j) * vn[0] + i;
+        bool in = region->match(vlo_[0] + (i + 0.5) * vh, vlo_[1] + (j + 0.5) * vh,
+                                vlo_[2] + (k + 0.5) * vh);
+        for (int m = 0; m < 8 && !in; m++)
+          in = region->match(vlo_[0] + (i + (m & 1)) * vh, vlo_[1] + (j + ((m >> 1) & 1)) * vh,
+                             vlo_[2] + (k + ((m >> 2) & 1)) * vh);
+        if (in) valive.push_back(c);
+        else vdead[c] = 1;
+      }
+  for (const auto &e : entries) voids_kill(e.b);
+}
+
+void FixInsertPolyhedron::voids_kill(const polydem::InsertBody<double> &b)
+{
+  // the distance to a convex body is a convex function, so its largest
+  // value on a cell is at a corner: the cell is dead if its 8 corners are
+  // within vrin of the body (exact for this one body)
+  const double R = b.radius + vrin, rin = b.inradius + vrin;
+  int clo[3], chi[3], m[3];
+  for (int k = 0; k < 3; k++) {
+    clo[k] = std::max(0, (int) floor((b.x[k] - R - vlo_[k]) / vh));
+    chi[k] = std::min(vn[k] - 1, (int) floor((b.x[k] + R - vlo_[k]) / vh));
+    if (chi[k] < clo[k]) return;
+    m[k] = chi[k] - clo[k] + 2;    // corners per direction
+  }
+  vcorner.assign((size_t) m[0] * m[1] * m[2], 0);
+  for (int k = 0; k < m[2]; k++)
+    for (int j = 0; j < m[1]; j++)
+      for (int i = 0; i < m[0]; i++) {
+        const auto p = polydem::make_vec3(vlo_[0] + (clo[0] + i) * vh, vlo_[1] + (clo[1] + j) * vh,
+                                          vlo_[2] + (clo[2] + k) * vh);
+        const double d2 = polydem::norm2(p - b.x);
+        vcorner[((size_t) k * m[1] + j) * m[0] + i] =
+            d2 <= rin * rin || (d2 <= R * R && polydem::point_within(b, p, vrin));
+      }
+  for (int k = clo[2]; k <= chi[2]; k++)
+    for (int j = clo[1]; j <= chi[1]; j++)
+      for (int i = clo[0]; i <= chi[0]; i++) {
+        const int c = (k * vn[1] + j) * vn[0] + i;
+        if (vdead[c]) continue;
+        bool all = true;
+        for (int q = 0; q < 8 && all; q++)
+          all = vcorner[((size_t) (k - clo[2] + ((q >> 2) & 1)) * m[1] + (j - clo[1] + ((q >> 1) & 1))) *
+                            m[0] + (i - clo[0] + (q & 1))];
+        if (all) vdead[c] = 1;
+      }
+}
+
+// A live cell whose draws keep failing may be covered by several bodies
+// together (each of its points within vrin of one of them) though by none
+// alone: split it into 2^L sub-cells per direction (L = 1, 2, 3 at its
+// first, second, third check) and kill it if each sub-cell has its 8
+// corners within vrin of one body (exact, as in voids_kill).
+void FixInsertPolyhedron::voids_refine(int c)
+{
+  if (vchecks[c] >= VOID_LEVELS) return;    // checked to the deepest level: a true void
+  const int level = ++vchecks[c];
+  const int ci = c % vn[0], cj = (c / vn[0]) % vn[1], ck = c / (vn[0] * vn[1]);
+  const auto c0 = polydem::make_vec3(vlo_[0] + ci * vh, vlo_[1] + cj * vh, vlo_[2] + ck * vh);
+  const auto cc = c0 + polydem::make_vec3(0.5 * vh, 0.5 * vh, 0.5 * vh);
+  const double hd = 0.5 * sqrt(3.0) * vh;
+  // the bodies whose zone can reach the cell (at most 64)
+  int g[3];
+  cell_of(cc, g);
+  std::vector<int> bodies;
+  for (int k = std::max(0, g[2] - 1); k <= std::min(gn[2] - 1, g[2] + 1); k++)
+    for (int j = std::max(0, g[1] - 1); j <= std::min(gn[1] - 1, g[1] + 1); j++)
+      for (int i = std::max(0, g[0] - 1); i <= std::min(gn[0] - 1, g[0] + 1); i++)
+        for (int e = cell_head[(k * gn[1] + j) * gn[0] + i]; e >= 0; e = cell_next[e]) {
+          const auto &o = entries[e].b;
+          const double r = o.radius + vrin + hd;
+          if (polydem::norm2(o.x - cc) <= r * r) bodies.push_back(e);
+        }
+  if (bodies.empty() || bodies.size() > 64) return;
+  const int n = 1 << level, m = n + 1;
+  const double h = vh / n;
+  std::vector<uint64_t> cover((size_t) m * m * m, 0);
+  for (int k = 0; k < m; k++)
+    for (int j = 0; j < m; j++)
+      for (int i = 0; i < m; i++) {
+        const auto p = c0 + polydem::make_vec3(i * h, j * h, k * h);
+        uint64_t bits = 0;
+        for (size_t b = 0; b < bodies.size(); b++) {
+          const auto &o = entries[bodies[b]].b;
+          const double d2 = polydem::norm2(p - o.x);
+          const double rin = o.inradius + vrin, R = o.radius + vrin;
+          if (d2 <= rin * rin || (d2 <= R * R && polydem::point_within(o, p, vrin)))
+            bits |= (uint64_t) 1 << b;
+        }
+        cover[((size_t) k * m + j) * m + i] = bits;
+      }
+  for (int k = 0; k < n; k++)
+    for (int j = 0; j < n; j++)
+      for (int i = 0; i < n; i++) {
+        uint64_t all = ~(uint64_t) 0;
+        for (int q = 0; q < 8 && all; q++)
+          all &= cover[((size_t) (k + ((q >> 2) & 1)) * m + (j + ((q >> 1) & 1))) * m + (i + (q & 1))];
+        if (!all) return;    // a sub-cell may hold a place
+      }
+  vdead[c] = 1;
+}
+
+// a point uniform over the live cells that lies in the region; false once
+// no cell is left (saturated) or after REGION_TRIES points outside it
+bool FixInsertPolyhedron::sample_in_voids(double *x)
+{
+  for (int t = 0; t < REGION_TRIES;) {
+    if (valive.empty()) return false;
+    const size_t idx = std::min(valive.size() - 1, (size_t) (rng.uniform() * valive.size()));
+    const int c = valive[idx];
+    if (vdead[c]) {    // found dead: drop it (no draw of a point)
+      valive[idx] = valive.back();
+      valive.pop_back();
+      continue;
+    }
+    const int i = c % vn[0], j = (c / vn[0]) % vn[1], k = c / (vn[0] * vn[1]);
+    vlast = c;
+    x[0] = vlo_[0] + (i + rng.uniform()) * vh;
+    x[1] = vlo_[1] + (j + rng.uniform()) * vh;
+    x[2] = vlo_[2] + (k + rng.uniform()) * vh;
+    if (region->match(x[0], x[1], x[2])) return true;
+    t++;
+  }
+  return false;
+}
+
+/* ----------------------------------------------------------------------
+   one insertion: particles are drawn (kind, scale) and placed one after
+   the other, each with up to `attempts` poses, until nmax particles (< 0:
+   no limit), the mass mstop or the solid fraction phistop (<= 0: none) is
+   reached, or a particle finds no place. Same sequence on every rank.
+------------------------------------------------------------------------- */
+
+int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
+{
+  if (lmp->kokkos) atomKK->sync(Host, ALL_MASK);
+  // ghosts are overwritten by new atoms (as in Comm::exchange)
+  if (atom->map_style != Atom::MAP_NONE) atom->map_clear();
+  atom->nghost = 0;
+  atom->avec->clear_bonus();
+
+  region->prematch();
+  refresh_views();
+  double lo[3], hi[3];
+  region_bbox(lo, hi);
+  const double rcand = rmax_insert;
+  double vol = 0.0;
+  gather(lo, hi, rcand, vol);
+  grid_setup(lo, hi, rcand);
+  const bool voids = mode == MODE_PACK;
+  if (voids) {
+    double rin = 1e300;
+    for (const auto &k : kinds) {
+      const double x0[3] = {0.0, 0.0, 0.0};
+      rin = std::min(rin, body_of(k.ishape, k.scale.min(), x0, polydem::make_quat(1.0, 0.0, 0.0, 0.0)).inradius);
+    }
+    voids_setup(lo, hi, rin);
+  }
+
+  const double *boxlo = domain->boxlo, *boxhi = domain->boxhi;
+  const int *per = domain->periodicity;
+  std::vector<Placed> placed;
+  double mass = massinserted;
+  bool failed = false;
+  int miss_run = 0;
+  while (nmax < 0 || (bigint) placed.size() < nmax) {
+    if (mstop > 0.0 && mass >= mstop) break;
+    if (phistop > 0.0 && vol >= phistop * region_volume) break;
+    // the particle: kind and scale, kept over its attempts
+    const double u = rng.uniform();
+    int ik = 0;
+    while (ik < (int) kinds.size() - 1 && u >= kinds[ik].pnum) ik++;
+    const Kind &kd = kinds[ik];
+    const double s = kd.scale.draw(rng);
+    const auto &t = avec->shape(kd.ishape);
+    bool ok = false;
+    Placed p;
+    polydem::InsertBody<double> b;
+    for (int a = 0; a < attempts && !ok; a++) {
+      nattempts++;
+      if (voids ? !sample_in_voids(p.x) : !sample_in_region(p.x)) {
+        if (voids && valive.empty()) break;    // saturated
+        continue;
+      }
+      const auto q = draw_orientation(kd.ishape);
+      b = body_of(kd.ishape, s, p.x, q);
+      bool inbox = true;
+      for (int k = 0; k < 3; k++)
+        inbox = inbox && (per[k] || (p.x[k] >= boxlo[k] && p.x[k] < boxhi[k]));
+      if (!inbox || !region_contains(b)) continue;
+      if (!apart_from_entries(b)) {
+        if (voids && ++vfail[vlast] >= VOID_FAILS) {
+          vfail[vlast] = 0;
+          voids_refine(vlast);
+        }
+        continue;
+      }
+      ok = true;
+      for (auto w : walls) ok = ok && w->insertion_clear(b, q, gap);
+      p.q[0] = q.w;
+      p.q[1] = q.x;
+      p.q[2] = q.y;
+      p.q[3] = q.z;
+    }
+    if (!ok) {
+      nfailed++;
+      // mode rate: the rest waits for the next insertion; mode pack: stop
+      // after `misses` particles in a row found no place, or at saturation
+      if (!voids || ++miss_run >= misses || valive.empty()) {
+        failed = true;
+        break;
+      }
+      continue;
+    }
+    miss_run = 0;
+    p.kind = ik;
+    p.s = s;
+    p.rho = kd.density;
+    draw_range(vlo, vhi, p.v);
+    draw_range(wlo, whi, p.w);
+    placed.push_back(p);
+    grid_add(b);
+    if (voids) voids_kill(b);
+    const double v = t.volume() * s * s * s;
+    vol += v;
+    volinserted += v;
+    mass += kd.density * v;
+  }
+  massinserted = mass;
+  create(placed);
+  if (lmp->kokkos) atomKK->modified(Host, ALL_MASK);
+  last_phi = vol / region_volume;
+  return failed ? -(int) placed.size() - 1 : (int) placed.size();
+}
+
+/* ----------------------------------------------------------------------
+   the rank owning each placed particle creates it; IDs follow the order
+   of placement after the largest existing ID
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::create(const std::vector<Placed> &placed)
+{
+  tagint maxtag = 0;
+  for (int i = 0; i < atom->nlocal; i++) maxtag = std::max(maxtag, atom->tag[i]);
+  tagint maxtag_all;
+  MPI_Allreduce(&maxtag, &maxtag_all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  if ((bigint) maxtag_all + (bigint) placed.size() >= MAXTAGINT)
+    error->all(FLERR, "fix insert/polyhedron: new atom IDs exceed the largest allowed ID");
+
+  const double *sublo = domain->sublo, *subhi = domain->subhi;
+  for (size_t k = 0; k < placed.size(); k++) {
+    const Placed &p = placed[k];
+    double x[3] = {p.x[0], p.x[1], p.x[2]};
+    imageint image = ((imageint) IMGMAX << IMG2BITS) | ((imageint) IMGMAX << IMGBITS) | IMGMAX;
+    domain->remap(x, image);
+    bool mine = true;
+    for (int d = 0; d < 3; d++) mine = mine && x[d] >= sublo[d] && x[d] < subhi[d];
+    if (!mine) continue;
+    const int ishape = kinds[p.kind].ishape;
+    const auto &t = avec->shape(ishape);
+    atom->avec->create_atom(itype, x);
+    const int n = atom->nlocal - 1;
+    atom->tag[n] = maxtag_all + (tagint) k + 1;
+    atom->mask[n] = 1 | groupbit;
+    atom->image[n] = image;
+    for (int d = 0; d < 3; d++) atom->v[n][d] = p.v[d];
+    atom->pshape[n] = ishape;
+    atom->pscale[n] = p.s;
+    atom->rmass[n] = p.rho * t.volume() * p.s * p.s * p.s;
+    atom->radius[n] = t.radius() * p.s;
+    for (int d = 0; d < 4; d++) atom->quat[n][d] = p.q[d];
+    double inertia[3];
+    avec->inertia(n, inertia);
+    polydem::angmom_from_omega(inertia, p.w, atom->quat[n], atom->angmom[n]);
+    polydem::omega_from_angmom(inertia, atom->angmom[n], atom->quat[n], atom->omega[n]);
+    modify->create_attribute(n);
+  }
+  ninserted += (bigint) placed.size();
+  atom->natoms += (bigint) placed.size();
+  if (atom->natoms < 0) error->all(FLERR, "fix insert/polyhedron: too many atoms");
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+}
+
+/* ----------------------------------------------------------------------
+   schedule of mode rate: insertion k (k = 0, 1, ...) at step
+   nstart + k every brings the totals to those of the interval it opens
+------------------------------------------------------------------------- */
+
+bigint FixInsertPolyhedron::count_target(bigint k) const
+{
+  if (ratestyle == RATE_PER) return (k + 1) * (bigint) rate;
+  return (bigint) llround(rate * (double) ((k + 1) * every) * update->dt);
+}
+
+double FixInsertPolyhedron::mass_target(bigint k) const
+{
+  return rate * (double) ((k + 1) * every) * update->dt;
+}
+
+bool FixInsertPolyhedron::finished() const
+{
+  if (mode == MODE_PACK) return packdone;
+  return (ntotal > 0 && ninserted >= ntotal) || (masstotal > 0.0 && massinserted >= masstotal);
+}
+
+void FixInsertPolyhedron::do_event()
+{
+  bigint nmax = -1;
+  double mstop = masstotal;
+  if (ratestyle == RATE_MASS) {
+    const double m = mass_target(nevents);
+    mstop = mstop > 0.0 ? std::min(mstop, m) : m;
+  } else
+    nmax = std::max<bigint>(0, count_target(nevents) - ninserted);
+  if (ntotal > 0) nmax = nmax < 0 ? ntotal - ninserted : std::min(nmax, ntotal - ninserted);
+  const bigint failed_before = nfailed;
+  insert(nmax, mstop, 0.0);
+  nevents++;
+  next_event += every;
+  if (nfailed > failed_before && nfailed > 2 * nfailed_warned) {
+    nfailed_warned = nfailed;
+    if (comm->me == 0)
+      error->warning(FLERR, "fix insert/polyhedron: {} particle(s) found no place in {} attempts "
+                     "each so far (last at step {}): region '{}' is too full; the schedule "
+                     "carries them to the next insertion", nfailed, attempts, update->ntimestep,
+                     idregion);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::setup_pre_exchange()
+{
+  if (mode == MODE_PACK) {
+    if (!packdone) {
+      const bigint n0 = ninserted;
+      const bigint a0 = nattempts;
+      const int r = insert(ntotal > 0 ? ntotal - ninserted : -1, masstotal, phi_target);
+      packdone = 1;
+      const bigint n = ninserted - n0;
+      if (comm->me == 0) {
+        utils::logmesg(lmp, "fix insert/polyhedron: packed {} particle(s) into region '{}': "
+                       "solid fraction {:.4f}, {} attempts ({:.1f} per particle)\n", n, idregion,
+                       last_phi, nattempts - a0, n ? (double) (nattempts - a0) / n : 0.0);
+        if (r < 0)
+          error->warning(FLERR, "fix insert/polyhedron: pack stopped at {} of the requested "
+                         "particles (solid fraction {:.4f}{}): a particle found no place in {} "
+                         "attempts", n, last_phi,
+                         phi_target > 0.0 ? fmt::format(", target {}", phi_target) : "", attempts);
+      }
+    }
+    next_reneighbor = 0;
+    return;
+  }
+  // a schedule left behind (reset_timestep): skip the missed insertions
+  if (next_event < update->ntimestep) {
+    const bigint miss = (update->ntimestep - next_event + every - 1) / every;
+    next_event += miss * every;
+    nevents += miss;
+  }
+  if (!finished() && next_event == update->ntimestep) do_event();
+  next_reneighbor = finished() ? 0 : next_event;
+}
+
+void FixInsertPolyhedron::pre_exchange()
+{
+  if (mode == MODE_PACK || next_reneighbor != update->ntimestep) return;
+  do_event();
+  next_reneighbor = finished() ? 0 : next_event;
+}
+
+void FixInsertPolyhedron::post_run()
+{
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix insert/polyhedron {}: {} particle(s) inserted (mass {:.6g}), {} not "
+                   "placed, {} attempts\n", id, ninserted, massinserted, nfailed, nattempts);
+}
+
+void *FixInsertPolyhedron::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "radius") == 0) return &rmax_insert;
+  return nullptr;
+}
+
+double FixInsertPolyhedron::max_insert_radius(LAMMPS *lmp)
+{
+  double r = 0.0;
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    auto f = dynamic_cast<FixInsertPolyhedron *>(lmp->modify->fix[i]);
+    if (f) r = std::max(r, f->rmax_insert);
+  }
+  return r;
+}
+
+double FixInsertPolyhedron::compute_scalar()
+{
+  return (double) ninserted;
+}
+
+// 1 inserted, 2 mass inserted, 3 not placed, 4 inserted volume / region
+// volume, 5 attempts
+double FixInsertPolyhedron::compute_vector(int i)
+{
+  switch (i) {
+    case 0: return (double) ninserted;
+    case 1: return massinserted;
+    case 2: return (double) nfailed;
+    case 3: return region_volume > 0.0 ? volinserted / region_volume : 0.0;
+    default: return (double) nattempts;
+  }
+}
+
+/* ----------------------------------------------------------------------
+   restart: counts, schedule and the generator's state (exact: 32-bit
+   halves of its words), so insertion continues as if uninterrupted
+------------------------------------------------------------------------- */
+
+void FixInsertPolyhedron::write_restart(FILE *fp)
+{
+  std::vector<double> list = {(double) RESTART_VERSION, (double) seed, (double) ninserted,
+                              (double) nfailed, (double) nattempts, (double) nevents,
+                              (double) nstart, (double) next_event, massinserted, volinserted,
+                              (double) packdone, (double) nfailed_warned};
+  for (uint64_t w : rng.s) {
+    list.push_back((double) (w >> 32));
+    list.push_back((double) (w & 0xffffffffULL));
+  }
+  if (comm->me == 0) {
+    int size = (int) (list.size() * sizeof(double));
+    fwrite(&size, sizeof(int), 1, fp);
+    fwrite(list.data(), sizeof(double), list.size(), fp);
+  }
+}
+
+void FixInsertPolyhedron::restart(char *buf)
+{
+  auto list = (double *) buf;
+  if ((int) list[0] != RESTART_VERSION)
+    error->all(FLERR, "fix insert/polyhedron: restart data of an unknown version {}", list[0]);
+  if ((bigint) list[1] != seed)
+    error->warning(FLERR, "fix insert/polyhedron: the restart file was written with seed {}, "
+                   "now {}: its generator state continues", (bigint) list[1], seed);
+  ninserted = (bigint) list[2];
+  nfailed = (bigint) list[3];
+  nattempts = (bigint) list[4];
+  nevents = (bigint) list[5];
+  nstart = (bigint) list[6];
+  next_event = (bigint) list[7];
+  massinserted = list[8];
+  volinserted = list[9];
+  packdone = (int) list[10];
+  nfailed_warned = (bigint) list[11];
+  for (int k = 0; k < 4; k++)
+    rng.s[k] = ((uint64_t) list[12 + 2 * k] << 32) | (uint64_t) list[13 + 2 * k];
+  next_reneighbor = finished() ? 0 : next_event;
+}

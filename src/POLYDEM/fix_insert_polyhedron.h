@@ -1,0 +1,147 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - fix insert/polyhedron: shape-aware insertion of polyhedra and
+   ellipsoids into a LAMMPS region, at a rate (number, mass, or N every M
+   steps) or all at once (random sequential addition to a count or solid
+   fraction). Every candidate is tested exactly against the particles near
+   it and the mesh walls (certified GJK distance, polydem_insert.h); every
+   rank runs the same candidate sequence on the same gathered data, so the
+   inserted particles do not depend on the number of ranks.
+------------------------------------------------------------------------- */
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(insert/polyhedron,FixInsertPolyhedron);
+// clang-format on
+#else
+
+#ifndef LMP_FIX_INSERT_POLYHEDRON_H
+#define LMP_FIX_INSERT_POLYHEDRON_H
+
+#include "fix.h"
+
+#include "polydem_insert.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixInsertPolyhedron : public Fix {
+ public:
+  FixInsertPolyhedron(class LAMMPS *, int, char **);
+  int setmask() override;
+  void init() override;
+  void setup_pre_exchange() override;
+  void pre_exchange() override;
+  void post_run() override;
+  double compute_scalar() override;
+  double compute_vector(int) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  void *extract(const char *, int &) override;
+  // largest bounding radius any fix insert/polyhedron may insert (0: none);
+  // the pair styles size their cutoff with it, as with atoms present
+  static double max_insert_radius(class LAMMPS *);
+
+  enum { MODE_RATE, MODE_PACK };
+  enum { RATE_NONE, RATE_NUMBER, RATE_MASS, RATE_PER };
+  enum { ORIENT_RANDOM, ORIENT_FIXED, ORIENT_AXIS };
+
+ private:
+  struct Kind {    // one shape template of the mixture
+    std::string id;
+    int ishape;
+    double frac;       // as given (number or mass fraction)
+    double density;    // <= 0: the global density
+    polydem::ScaleDist scale;
+    double pnum;       // number probability (cumulative over kinds)
+  };
+  struct Entry {    // a particle the candidates are tested against
+    polydem::InsertBody<double> b;
+  };
+
+  class AtomVecPolyhedron *avec;
+  std::vector<Kind> kinds;
+  std::string idregion;
+  class Region *region;
+  int mode, ratestyle, massfrac;
+  bigint ntotal;                 // particles in total (0: no count limit)
+  double masstotal;              // mass in total (0: no mass limit)
+  double rate;                   // particles or mass per time unit, or per insertion
+  int every;                     // steps between insertions (rate mode)
+  double phi_target;             // pack: solid fraction of the region (0: none)
+  int attempts;                  // per particle
+  int misses;                    // pack: stop after this many particles in a row found no place
+  int orientstyle;
+  double oaxis[3], otheta;
+  double vlo[3], vhi[3], wlo[3], whi[3];
+  int itype, allin;
+  double gap;
+  bigint seed;
+
+  // state (restart)
+  polydem::InsertRng rng;
+  bigint ninserted, nfailed, nattempts, nevents, nstart, next_event;
+  double massinserted, volinserted;
+  int packdone;
+  double last_phi = 0.0;    // solid fraction after the last insertion (log)
+  bigint nfailed_warned;
+
+  // per insertion
+  double region_volume;
+  std::vector<Entry> entries;
+  std::vector<int> cell_head, cell_next;
+  double glo[3], ghi[3], gh;
+  int gn[3];
+  double reach_max;
+  double rmax_insert;    // largest bounding radius of a candidate
+  std::vector<class FixWallMesh *> walls;
+  std::vector<polydem::ShapeView<double>> views;    // of every template (polyhedra)
+
+  struct Placed {
+    int kind;
+    double s, rho, x[3], q[4], v[3], w[3];
+  };
+
+  void parse_scale(int &iarg, int narg, char **arg, polydem::ScaleDist &d, const std::string &id);
+  void number_probabilities();
+  double estimate_region_volume();
+  void region_bbox(double *lo, double *hi);
+  bool sample_in_region(double *x);
+  // void cells of mode pack
+  double vlo_[3], vh = 0.0, vrin = 0.0;
+  int vn[3];
+  std::vector<char> vdead, vcorner;
+  std::vector<unsigned char> vfail, vchecks;
+  int vlast = 0;
+  void voids_refine(int c);
+  std::vector<int> valive;
+  void voids_setup(const double *lo, const double *hi, double rin);
+  void voids_kill(const polydem::InsertBody<double> &b);
+  bool sample_in_voids(double *x);
+  bool region_contains(const polydem::InsertBody<double> &b);
+  void gather(const double *lo, const double *hi, double rcand, double &vol_in_region);
+  void grid_setup(const double *lo, const double *hi, double rcand);
+  int cell_of(const polydem::Vec3<double> &x, int *c) const;
+  void link(int i);
+  void grid_add(const polydem::InsertBody<double> &b);
+  bool apart_from_entries(const polydem::InsertBody<double> &b);
+  std::vector<std::pair<double, int>> near;
+  std::vector<double> inradius;    // of every template at unit scale
+  void refresh_views();
+  polydem::InsertBody<double> body_of(int ishape, double s, const double *x,
+                                      const polydem::Quat<double> &q) const;
+  polydem::Quat<double> draw_orientation(int ishape);
+  void draw_range(const double *lo, const double *hi, double *out);
+  int insert(bigint nmax, double mmax, double phimax);
+  void create(const std::vector<Placed> &placed);
+  bigint count_target(bigint k) const;
+  double mass_target(bigint k) const;
+  void do_event();
+  bool finished() const;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
