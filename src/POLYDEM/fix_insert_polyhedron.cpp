@@ -249,12 +249,13 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     fsum += k.frac;
     if (k.density <= 0.0) {
       if (!(density > 0.0))
-        error->all(FLERR, "{}: shape '{}' has no density (keyword density)", me, k.id);
+        error->all(FLERR, "{}: shape '{}' has no density: give 'density rho' before the first "
+                   "shape (a density right after a shape is that shape's own)", me, k.id);
       k.density = density;
     }
   }
   if (fabs(fsum - 1.0) > 1.0e-6)
-    error->all(FLERR, "{}: the shape fractions sum to {}, not 1", me, fsum);
+    error->all(FLERR, "{}: the shape fractions sum to {:.6g}, not 1", me, fsum);
   if (mode == MODE_RATE) {
     if (!have_rate)
       error->all(FLERR, "{}: mode rate needs one of the keywords rate, rate/mass or per", me);
@@ -267,6 +268,12 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   number_probabilities();
   for (const auto &k : kinds)
     rmax_insert = std::max(rmax_insert, avec->shape(k.ishape).radius() * k.scale.max());
+  double prev = 0.0;
+  mean_mass = 0.0;
+  for (const auto &k : kinds) {
+    mean_mass += (k.pnum - prev) * k.density * avec->shape(k.ishape).volume() * k.scale.moment(3);
+    prev = k.pnum;
+  }
 
   rng.seed((uint64_t) seed);
   nstart = update->ntimestep;
@@ -926,7 +933,9 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   bool failed = false;
   int miss_run = 0;
   while (nmax < 0 || (bigint) placed.size() < nmax) {
-    if (mstop > 0.0 && mass >= mstop) break;
+    // a mass target is met to within half a particle: insert while that
+    // brings the total closer to it (on the mixture's mean mass)
+    if (mstop > 0.0 && mass + 0.5 * mean_mass >= mstop) break;
     if (phistop > 0.0 && vol >= phistop * region_volume) break;
     // the particle: kind and scale, kept over its attempts
     const double u = rng.uniform();
@@ -1065,7 +1074,8 @@ double FixInsertPolyhedron::mass_target(bigint k) const
 bool FixInsertPolyhedron::finished() const
 {
   if (mode == MODE_PACK) return packdone;
-  return (ntotal > 0 && ninserted >= ntotal) || (masstotal > 0.0 && massinserted >= masstotal);
+  return (ntotal > 0 && ninserted >= ntotal) ||
+         (masstotal > 0.0 && massinserted + 0.5 * mean_mass >= masstotal);
 }
 
 void FixInsertPolyhedron::do_event()

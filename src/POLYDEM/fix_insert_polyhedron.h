@@ -95,6 +95,7 @@ class FixInsertPolyhedron : public Fix {
   int gn[3];
   double reach_max;
   double rmax_insert;    // largest bounding radius of a candidate
+  double mean_mass;      // mean particle mass of the mixture
   std::vector<class FixWallMesh *> walls;
   std::vector<polydem::ShapeView<double>> views;    // of every template (polyhedra)
 

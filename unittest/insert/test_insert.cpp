@@ -1,0 +1,461 @@
+// fix insert/polyhedron (issue 14), one rank: no overlap is ever created
+// (checked with the exact kernels, independently of the insertion's own
+// test), the schedule's counts and mass flow, the distributions (chi^2 and
+// Kolmogorov-Smirnov at significance 1e-3), the packing fraction, restart,
+// and bad input.
+
+#include "insert_scene.h"
+
+#include "atom_vec_polyhedron.h"
+#include "domain.h"
+#include "fix.h"
+#include "modify.h"
+#include "polydem_ellipsoid.h"
+#include "polydem_gjk.h"
+#include "polydem_overlap.h"
+#include "polydem_shape_template.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <memory>
+
+using namespace insert_test;
+using LAMMPS_NS::AtomVecPolyhedron;
+
+namespace {
+
+struct Particle {
+  long tag;
+  int shape;
+  double s;
+  polydem::Vec3<double> x;
+  polydem::Quat<double> q;
+};
+
+std::vector<Particle> particles(Lmp &l)
+{
+  std::vector<Particle> out;
+  for (auto &kv : l.local_state()) {
+    Particle p;
+    p.tag = kv.first;
+    p.shape = kv.second.shape;
+    p.s = kv.second.s;
+    p.x = polydem::make_vec3(kv.second.x[0], kv.second.x[1], kv.second.x[2]);
+    p.q = polydem::make_quat(kv.second.q[0], kv.second.q[1], kv.second.q[2], kv.second.q[3]);
+    out.push_back(p);
+  }
+  return out;
+}
+
+// posed vertices of a polyhedron, or points on an ellipsoid's surface
+std::vector<polydem::Vec3<double>> surface_points(const polydem::PolyShapeTemplate &t, const Particle &p)
+{
+  std::vector<polydem::Vec3<double>> pts;
+  const auto R = polydem::quat_to_mat(p.q);
+  if (!t.is_ellipsoid()) {
+    for (int i = 0; i < t.nverts(); i++) {
+      const auto v = t.vertex(i);
+      pts.push_back(p.x + p.s * polydem::matvec(R, polydem::make_vec3(v[0], v[1], v[2])));
+    }
+    return pts;
+  }
+  const auto &a = t.semi_axes();
+  const int nt = 40, np = 80;    // a grid in (theta, phi)
+  for (int i = 0; i <= nt; i++)
+    for (int j = 0; j < np; j++) {
+      const double th = M_PI * i / nt, ph = 2 * M_PI * j / np;
+      const auto u = polydem::make_vec3(a[0] * std::sin(th) * std::cos(ph),
+                                        a[1] * std::sin(th) * std::sin(ph), a[2] * std::cos(th));
+      pts.push_back(p.x + p.s * polydem::matvec(R, u));
+    }
+  return pts;
+}
+
+bool inside(const polydem::PolyShapeTemplate &t, const Particle &p, const polydem::Vec3<double> &y)
+{
+  const auto R = polydem::quat_to_mat(p.q);
+  const auto b = (1.0 / p.s) * polydem::matTvec(R, y - p.x);
+  if (t.is_ellipsoid()) {
+    const auto &a = t.semi_axes();
+    return b.x * b.x / (a[0] * a[0]) + b.y * b.y / (a[1] * a[1]) + b.z * b.z / (a[2] * a[2]) < 1.0;
+  }
+  for (int f = 0; f < t.nfaces(); f++) {
+    const auto pl = t.plane(f);
+    if (pl[0] * b.x + pl[1] * b.y + pl[2] * b.z > pl[3]) return false;
+  }
+  return true;
+}
+
+// Every particle with tag > tag0 against every other particle, with the
+// exact kernels: polyhedra by the overlap volume (and GJK), ellipsoids by
+// the characteristic quartic, a mixed pair by surface points of each inside
+// the other. Returns the number of overlapping pairs.
+int overlaps(Lmp &l, long tag0, int *npairs_close = nullptr)
+{
+  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+  const auto ps = particles(l);
+  auto ws = std::make_unique<polydem::OverlapWorkspace<double>>();
+  std::vector<polydem::ShapeView<double>> views;
+  for (int i = 0; i < avec->ntemplates(); i++) views.push_back(avec->shape(i).view());
+  int bad = 0, close = 0;
+  for (size_t i = 0; i < ps.size(); i++) {
+    if (ps[i].tag <= tag0) continue;
+    const auto &ti = avec->shape(ps[i].shape);
+    for (size_t j = 0; j < ps.size(); j++) {
+      if (i == j || (ps[j].tag > tag0 && ps[j].tag < ps[i].tag)) continue;    // each new pair once
+      const auto &tj = avec->shape(ps[j].shape);
+      const double rr = ti.radius() * ps[i].s + tj.radius() * ps[j].s;
+      if (polydem::norm2(ps[i].x - ps[j].x) > rr * rr) continue;
+      close++;
+      if (!ti.is_ellipsoid() && !tj.is_ellipsoid()) {
+        polydem::Pose<double> a{ps[i].x, ps[i].q, ps[i].s}, b{ps[j].x, ps[j].q, ps[j].s};
+        const auto pa = polydem::make_posed(views[ps[i].shape], a);
+        const auto pb = polydem::make_posed(views[ps[j].shape], b);
+        const auto o = polydem::polyhedron_overlap(pa, pb, *ws);
+        if (o.volume > 0.0 || polydem::gjk_intersect(pa, pb).status != polydem::STATUS_SEPARATED) bad++;
+      } else if (ti.is_ellipsoid() && tj.is_ellipsoid()) {
+        const auto &ai = ti.semi_axes(), &aj = tj.semi_axes();
+        polydem::EllipsoidPose<double> a{ps[i].x, ps[i].q,
+                                         polydem::make_vec3(ai[0] * ps[i].s, ai[1] * ps[i].s, ai[2] * ps[i].s)};
+        polydem::EllipsoidPose<double> b{ps[j].x, ps[j].q,
+                                         polydem::make_vec3(aj[0] * ps[j].s, aj[1] * ps[j].s, aj[2] * ps[j].s)};
+        if (polydem::ellipsoid_contact(a, b).status != polydem::STATUS_SEPARATED) bad++;
+      } else {
+        bool hit = false;
+        for (const auto &y : surface_points(ti, ps[i])) hit = hit || inside(tj, ps[j], y);
+        for (const auto &y : surface_points(tj, ps[j])) hit = hit || inside(ti, ps[i], y);
+        bad += hit;
+      }
+    }
+  }
+  if (npairs_close) *npairs_close = close;
+  return bad;
+}
+
+double fvec(Lmp &l, const std::string &fix, int i)
+{
+  auto f = l.lmp->modify->fix[l.lmp->modify->find_fix(fix.c_str())];
+  return f->compute_vector(i);
+}
+
+double ks(std::vector<double> x, const std::function<double(double)> &F)
+{
+  std::sort(x.begin(), x.end());
+  const double n = (double) x.size();
+  double d = 0.0;
+  for (size_t i = 0; i < x.size(); i++) {
+    const double f = F(x[i]);
+    d = std::max(d, std::max(f - i / n, (i + 1) / n - f));
+  }
+  return d;
+}
+
+std::vector<std::string> mixed_box(double side = 0.06)
+{
+  const std::string L = std::to_string(side);
+  return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
+          "region box block 0 " + L + " 0 " + L + " 0 " + L, "create_box 1 box",
+          "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
+          "polyhedron_shape c " + potentials() + "/catalyst_cylinder.shape",
+          "polyhedron_shape q " + potentials() + "/cube.shape",
+          "polyhedron_shape e ellipsoid 1.0 0.6 0.4"};
+}
+
+}    // namespace
+
+// Acceptance 1 (pack): 5,000 mixed dodecahedra, cylinders, cubes and
+// ellipsoids into a periodic box; no pair of them overlaps.
+TEST(Insert, PackMixedShapesNeverOverlap)
+{
+  Lmp l;
+  l.cmds(mixed_box(0.045));
+  l.cmd("fix ins all insert/polyhedron 5000 4711 region box mode pack density 2500 all_in no "
+        "shape d 0.3 scale uniform 0.0008 0.0012 shape c 0.2 scale 0.3 "
+        "shape q 0.2 scale 0.0018 shape e 0.3 scale normal 0.0014 0.0002 0.001 0.0018");
+  l.cmd("run 0");
+  ASSERT_EQ(l.lmp->atom->natoms, 5000);
+  int close = 0;
+  EXPECT_EQ(overlaps(l, 0, &close), 0);
+  EXPECT_GT(close, 2000);    // dense: many pairs within their bounding spheres
+  EXPECT_GT(fvec(l, "ins", 3), 0.25);
+  // the check can fail: 100 particles created at random points do overlap
+  l.cmds({"create_atoms 1 random 100 31 NULL",
+          "polyhedron_set atom 5001*5100 shape d scale 0.001 density 2500 quat/random 5"});
+  EXPECT_GT(overlaps(l, 5000), 10);
+}
+
+// Acceptance 1 (rate): 5,000 insertions of the same mixture at a high rate
+// into a small falling stream (no contacts: particles pass through each
+// other, so the feed region stays crowded and the test of each new particle
+// against the others and against the ones of its own insertion is busy).
+TEST(Insert, RateMixedShapesNeverOverlapWhenTheyAppear)
+{
+  Lmp l;
+  l.cmds(mixed_box());
+  l.cmds({"region feed block 0 0.06 0 0.06 0.03 0.05",
+          "fix ins all insert/polyhedron 5000 99 region feed per 500 every 50 density 2500 "
+          "all_in no shape d 0.3 scale uniform 0.0008 0.0012 shape c 0.2 scale 0.3 "
+          "shape q 0.2 scale 0.0018 shape e 0.3 scale 0.0014 vel constant 0 0 -1",
+          "fix nve all nve/polyhedron", "timestep 1e-5"});
+  long tag0 = 0;
+  int total_bad = 0, events = 0;
+  while (l.lmp->atom->natoms < 5000 && events < 40) {
+    l.cmd(events == 0 ? "run 0" : "run 50");
+    total_bad += overlaps(l, tag0);
+    tag0 = (long) l.lmp->atom->natoms;
+    events++;
+  }
+  EXPECT_EQ(l.lmp->atom->natoms, 5000);
+  EXPECT_EQ(total_bad, 0);
+}
+
+// Acceptance 1 with contacts and a mesh: polyhedra poured into an STL box;
+// each particle is created apart from the others and inside the container
+// (every vertex strictly within the walls) at the step it appears.
+TEST(Insert, PourIntoMeshNeverOverlapsParticlesOrWalls)
+{
+  Lmp l;
+  const std::string stl = container_file();
+  l.cmds(pour_scene(stl));
+  l.cmd("compute cc all contact/polyhedron");
+  l.cmd("thermo_style custom step atoms c_cc[1] f_w[7]");
+  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+  long tag0 = 0;
+  int bad = 0, outside = 0;
+  for (int e = 0; e < 10; e++) {
+    l.cmd(e == 0 ? "run 0" : "run 100");
+    bad += overlaps(l, tag0);
+    for (const auto &p : particles(l)) {
+      if (p.tag <= tag0) continue;
+      for (const auto &y : surface_points(avec->shape(p.shape), p))
+        outside += !(y.x > -0.02 && y.x < 0.02 && y.y > -0.02 && y.y < 0.02 && y.z > 0.0);
+    }
+    tag0 = (long) l.lmp->atom->natoms;
+  }
+  // a crowded feed carries some particles to later insertions
+  EXPECT_GE(l.lmp->atom->natoms, 320);
+  EXPECT_EQ(fvec(l, "ins", 0), (double) l.lmp->atom->natoms);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(outside, 0);
+}
+
+// Acceptance 2: exact counts per insertion (per), counts of a number rate,
+// and a mass rate within 1 %.
+TEST(Insert, ScheduleCountsAndMassFlow)
+{
+  {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds({"fix ins all insert/polyhedron 1000 5 region box per 7 every 20 density 1000 "
+            "all_in no shape d 1 scale 0.001",
+            "fix nve all nve/polyhedron", "timestep 1e-5"});
+    for (int k = 0; k < 5; k++) {
+      l.cmd(k == 0 ? "run 0" : "run 20");
+      EXPECT_EQ(l.lmp->atom->natoms, 7 * (k + 1));
+    }
+  }
+  {
+    // 3.3e4 particles/s, every 30 steps of 1e-5 s: 9.9 per insertion
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds({"fix ins all insert/polyhedron 1000 5 region box rate 33000 every 30 density 1000 "
+            "all_in no shape d 1 scale 0.001",
+            "fix nve all nve/polyhedron", "timestep 1e-5"});
+    for (int k = 0; k < 6; k++) {
+      l.cmd(k == 0 ? "run 0" : "run 30");
+      EXPECT_EQ(l.lmp->atom->natoms, std::llround(33000 * (k + 1) * 30 * 1e-5));
+    }
+  }
+  {
+    // mass rate: 0.02 kg/s of a mixture with scale distributions
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds({"fix ins all insert/polyhedron 0 5 region box rate/mass 0.02 every 100 density 2500 "
+            "mass/total 1.0 all_in no shape d 0.5 scale uniform 0.0004 0.0006 "
+            "shape q 0.5 scale normal 0.0007 0.0001 0.0005 0.0009",
+            "fix nve all nve/polyhedron", "timestep 1e-4"});
+    for (int k = 0; k < 20; k++) {
+      l.cmd(k == 0 ? "run 0" : "run 100");
+      const double want = 0.02 * (k + 1) * 100 * 1e-4;
+      double m = 0.0;
+      for (int i = 0; i < l.lmp->atom->nlocal; i++) m += l.lmp->atom->rmass[i];
+      EXPECT_NEAR(fvec(l, "ins", 1), m, 1e-12 * m);
+      if (k >= 2) EXPECT_NEAR(m / want, 1.0, 0.01) << "insertion " << k;
+    }
+  }
+}
+
+// Acceptance 3: number and mass fractions (chi^2, 2 d.o.f., critical 13.8
+// at 1e-3), the scale distribution and a body axis (KS at 1e-3).
+TEST(Insert, FractionsScalesAndOrientationsFollowTheRequest)
+{
+  for (int mass = 0; mass < 2; mass++) {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmd(std::string("fix ins all insert/polyhedron 6000 77 region box mode pack density 2500 "
+                      "all_in no fractions ") +
+          (mass ? "mass" : "number") +
+          " shape d 0.5 scale uniform 0.0005 0.0007 shape q 0.3 scale 0.0008 "
+          "shape c 0.2 scale 0.12 density 1000");
+    l.cmd("run 0");
+    ASSERT_EQ(l.lmp->atom->natoms, 6000);
+    auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+    const double f[3] = {0.5, 0.3, 0.2};
+    const int idx[3] = {0, 2, 1};    // template index of d, q, c
+    double p[3];
+    if (!mass) {
+      for (int k = 0; k < 3; k++) p[k] = f[k];
+    } else {    // p_i ~ w_i / <m_i>
+      const double m[3] = {2500 * avec->shape(0).volume() * (std::pow(0.0007, 4) - std::pow(0.0005, 4)) /
+                               (4 * 0.0002),
+                           2500 * avec->shape(2).volume() * std::pow(0.0008, 3),
+                           1000 * avec->shape(1).volume() * std::pow(0.12, 3)};
+      double sum = 0;
+      for (int k = 0; k < 3; k++) sum += p[k] = f[k] / m[k];
+      for (double &x : p) x /= sum;
+    }
+    double cnt[3] = {0, 0, 0}, msum[3] = {0, 0, 0};
+    std::vector<double> sd, cz;
+    for (auto &kv : l.local_state()) {
+      for (int k = 0; k < 3; k++)
+        if (kv.second.shape == idx[k]) cnt[k]++, msum[k] += kv.second.m;
+      if (kv.second.shape == 0) sd.push_back(kv.second.s);
+      const auto R = polydem::quat_to_mat(polydem::make_quat(kv.second.q[0], kv.second.q[1],
+                                                             kv.second.q[2], kv.second.q[3]));
+      cz.push_back(R.m[2][0]);    // z component of the body x axis
+    }
+    double chi2 = 0.0;
+    for (int k = 0; k < 3; k++) chi2 += std::pow(cnt[k] - 6000 * p[k], 2) / (6000 * p[k]);
+    EXPECT_LT(chi2, 13.8) << (mass ? "mass" : "number") << " fractions";
+    if (mass) {
+      const double mt = msum[0] + msum[1] + msum[2];
+      for (int k = 0; k < 3; k++) EXPECT_NEAR(msum[k] / mt, f[k], 0.05) << k;
+    }
+    const double crit = 1.9495;
+    EXPECT_LT(ks(sd, [](double s) { return (s - 0.0005) / 0.0002; }) * std::sqrt(sd.size()), crit);
+    EXPECT_LT(ks(cz, [](double c) { return 0.5 * (c + 1.0); }) * std::sqrt(cz.size()), crit);
+  }
+}
+
+// Acceptance 4: random sequential addition of dodecahedra to a solid
+// fraction of 0.35 in a periodic box (2,924 particles).
+TEST(Insert, PackReachesSolidFraction035)
+{
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
+          "region box block 0 0.2 0 0.2 0 0.2", "create_box 1 box",
+          "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
+          "fix ins all insert/polyhedron 0 4711 region box mode pack shape d 1.0 scale 0.005 "
+          "density 2500 fraction 0.35 attempts 10000 misses 100 all_in no",
+          "run 0"});
+  const double phi = l.lmp->atom->natoms * 7.6631189606246319 * std::pow(0.005, 3) / 0.008;
+  EXPECT_GE(phi, 0.35);
+  EXPECT_NEAR(fvec(l, "ins", 3), phi, 1e-9);
+  EXPECT_EQ(overlaps(l, 0), 0);
+}
+
+// Acceptance 5 (restart): a pour stopped and continued from a restart file
+// (insertion count, generator state and schedule) ends bit-identical to the
+// uninterrupted continuation.
+TEST(Insert, RestartContinuesBitIdentical)
+{
+  const std::string stl = container_file();
+  const std::string rfile = wall_test::tmpdir() + "/insert.restart";
+  std::vector<double> straight, continued;
+  {
+    Lmp l;
+    l.cmds(pour_scene(stl));
+    l.cmds({"run 350", "write_restart " + rfile, "run 450"});
+    straight = gather_state(l, MPI_COMM_WORLD);
+  }
+  {
+    Lmp l;
+    l.cmd("read_restart " + rfile);
+    // the scene's commands after the box and the shapes (which the restart keeps)
+    for (const auto &c : pour_scene(stl)) {
+      const bool setup = c.rfind("units", 0) == 0 || c.rfind("atom_", 0) == 0 ||
+                         c.rfind("boundary", 0) == 0 || c.rfind("region box", 0) == 0 ||
+                         c.rfind("create_box", 0) == 0 || c.rfind("polyhedron_shape", 0) == 0;
+      if (!setup) l.cmd(c);
+    }
+    l.cmd("run 450");
+    continued = gather_state(l, MPI_COMM_WORLD);
+  }
+  ASSERT_EQ(straight.size(), continued.size());
+  EXPECT_GT(straight.size() / 13, 300u);
+  for (size_t i = 0; i < straight.size(); i++) ASSERT_EQ(straight[i], continued[i]) << i;
+}
+
+// Acceptance 6: bad input gets a clear error naming the keyword.
+TEST(Insert, BadInputIsRefusedClearly)
+{
+  auto err = [](const std::vector<std::string> &pre, const std::string &fix) {
+    Lmp l;
+    l.cmds(pre);
+    return l.error_of(fix);
+  };
+  const auto box = mixed_box();
+  const std::string f = "fix ins all insert/polyhedron ";
+  auto has = [](const std::string &msg, const std::string &what) {
+    return msg.find(what) != std::string::npos;
+  };
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 shape d 1 scale 0.001 per 1"), "'region' is required"));
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape x 1 scale 0.001 per 1"),
+                  "shape 'x' is not defined"));
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 0.5 scale 0.001 shape q 0.3 scale 0.001 "
+                               "per 1"),
+                  "sum to 0.8"));
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale -0.001 per 1"),
+                  "scale values must be finite and > 0"));
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale normal 1 0.01 2 3 per 1"),
+                  "probability"));
+  EXPECT_TRUE(has(err(box, f + "10 1 region box shape d 1 scale 0.001 shape q 0 scale 0.001 "
+                               "density 1 per 1"),
+                  "shape 'd' has no density"));
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale 0.001 density 1"),
+                  "needs one of the keywords rate"));
+  EXPECT_TRUE(has(err(box, f + "0 1 density 1 region box shape d 1 scale 0.001 per 1"),
+                  "needs a limit"));
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box mode pack fraction 1.5 shape d 1 scale 0.001 density 1"),
+                  "fraction must be in (0, 1)"));
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale 0.001 per 1 colour red"),
+                  "unknown keyword 'colour'"));
+  EXPECT_TRUE(has(err(box, f + "10 0 density 1 region box shape d 1 scale 0.001 per 1"),
+                  "seed must be > 0"));
+  // run-time checks: a missing or zero-volume region, an ellipsoid where
+  // only polyhedra are allowed, a fraction the region cannot take
+  {
+    Lmp l;
+    l.cmds(box);
+    l.cmd(f + "10 1 density 1 region nowhere shape d 1 scale 0.001 per 1");
+    EXPECT_TRUE(has(l.error_of("run 0"), "region 'nowhere' does not exist"));
+  }
+  {
+    Lmp l;
+    l.cmds(box);
+    l.cmds({"region flat block 0 0.06 0 0.06 0.01 0.01",
+            f + "10 1 density 1 region flat shape d 1 scale 0.001 per 1"});
+    EXPECT_TRUE(has(l.error_of("run 0"), "zero volume"));
+  }
+  {
+    Lmp l;
+    l.cmds(box);
+    l.cmds({"comm_modify vel yes", f + "10 1 density 1 region box shape e 1 scale 0.001 per 1",
+            "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.5 0.5"});
+    EXPECT_TRUE(has(l.error_of("run 0"), "is an ellipsoid, but pair_style polyhedron"));
+  }
+  {
+    // a target fraction beyond reach: a warning, and what was placed stays
+    Lmp l;
+    l.cmds(box);
+    l.cmd(f + "0 1 density 1 region box mode pack fraction 0.6 attempts 50 misses 3 all_in no "
+              "shape d 1 scale 0.003 density 1");
+    l.cmd("run 0");
+    EXPECT_GT(l.lmp->atom->natoms, 100);
+    EXPECT_LT(fvec(l, "ins", 3), 0.6);
+    EXPECT_EQ(fvec(l, "ins", 0), (double) l.lmp->atom->natoms);
+  }
+}
