@@ -372,19 +372,11 @@ void FixWallMesh::init()
   check_timestep();
 }
 
-// zeta(e, a, q) table of restitution e (polydem_wall_contact.h): the ranks
-// share its entries (the sum is exact: each entry comes from one rank), and
-// every process remembers it per e (the same e on all ranks, so every rank
-// takes the same branch)
+// zeta(e, a, q) table of restitution e (polydem_wall_contact.h; closed
+// form, polydem_damping.h)
 polydem::WallDamping<double> FixWallMesh::damping_table(double e)
 {
-  static std::vector<std::pair<double, polydem::WallDamping<double>>> cache;
-  for (auto &c : cache)
-    if (c.first == e) return c.second;
-  polydem::WallDamping<double> d = polydem::wall_damping_table(e, comm->me, comm->nprocs);
-  MPI_Allreduce(MPI_IN_PLACE, &d.z[0][0], 2 * polydem::WALL_DAMP_N, MPI_DOUBLE, MPI_SUM, world);
-  cache.emplace_back(e, d);
-  return d;
+  return polydem::wall_damping_table(e);
 }
 
 // A face lying flat on the wall in the core has the largest stiffness of the

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -748,4 +749,21 @@ TEST(WallMesh, Restart)
   std::printf("[ wall     ] restart: max |difference| %.3g; without history %.3g\n", same, diff);
   EXPECT_EQ(same, 0.0);
   EXPECT_GT(diff, 1e-6);
+}
+
+// Issue 17 item 6: the damping ratio for a small restitution used to take
+// seconds (e = 0.01) or not end (e = 1e-20) at init; now a closed form
+TEST(WallMesh, SmallRestitutionSetsUpQuickly)
+{
+  const std::string good = tmpdir() + "/good_e.stl";
+  write_ascii(good, flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2));
+  for (const char *e : {"0.01", "1e-20"}) {
+    Lmp l;
+    l.cmds(one_particle());
+    const auto t0 = std::chrono::steady_clock::now();
+    l.cmds({std::string("pair_coeff * * 1e6 0.1 ") + e + " 0.5",
+            "fix w all wall/mesh " + good + " restitution " + e, "run 0"});
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_LT(s, 1.0) << "e = " << e;
+  }
 }
