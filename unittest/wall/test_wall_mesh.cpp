@@ -610,6 +610,7 @@ TEST(WallMesh, BadInput)
   };
   const std::vector<Case> cases = {
       {"/nonexistent/wall.stl", "fix wall/mesh: /nonexistent/wall.stl: cannot open file"},
+      {tmpdir(), "fix wall/mesh: " + tmpdir() + ": cannot read: is a directory"},    // issue 17
       {trunc, "truncated binary STL"},
       {bad, "bad_lmp.stl:5: expected 'vertex x y z'"},
       {nan, "nan_lmp.stl:2: facet: non-finite coordinate"},
