@@ -14,6 +14,9 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 using polydem_test::Lmp;
 using polydem_test::potentials;
 
@@ -22,6 +25,14 @@ namespace {
 std::string tmpfile(const std::string &name)
 {
   return ::testing::TempDir() + "polydem_" + name;
+}
+
+std::string read_text(const std::string &path)
+{
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 // a periodic box of non-interacting, randomly oriented, spinning particles
@@ -226,6 +237,38 @@ TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
   }
   std::remove(f10.c_str());
   std::remove(tmpfile("snap.0.vtk").c_str());
+}
+
+// Issue 17 item 3: a file name without '*' (snap.vtk, snap, dir/snap.vtk)
+// crashed in fwrite (the file was never opened); now the file holds the
+// latest snapshot, one valid dataset, on plain and kk
+TEST(AtomStyle, DumpVTKSingleFileHoldsTheLatestSnapshot)
+{
+  const std::string dir = tmpfile("vtkdir");
+  mkdir(dir.c_str(), 0755);
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}})
+    for (const std::string &name : {tmpfile("single.vtk"), tmpfile("single"), dir + "/snap.vtk"}) {
+      std::remove(name.c_str());
+      {
+        Lmp l(extra);
+        gas(l, 10);
+        l.cmds({"dump d all polyhedron/vtk 10 " + name, "run 20"});
+        const std::string e = l.error_of("dump_modify d append yes");
+        if (e.empty()) EXPECT_NE(l.error_of("run 0").find("append yes"), std::string::npos);
+      }
+      const std::string text = read_text(name);
+      size_t n = 0;
+      for (size_t p = text.find("# vtk DataFile"); p != std::string::npos;
+           p = text.find("# vtk DataFile", p + 1))
+        n++;
+      EXPECT_EQ(n, 1u) << name;
+      EXPECT_NE(text.find("timestep 20\n"), std::string::npos) << name;
+      EXPECT_NE(text.find("POINTS 140 double"), std::string::npos) << name;
+      EXPECT_NE(text.find("POLYGONS 90 "), std::string::npos) << name;
+      std::remove(name.c_str());
+    }
+  rmdir(dir.c_str());
 }
 
 // dump polyhedron/vtk draws an ellipsoid as 114 points of its surface and 128
