@@ -419,3 +419,32 @@ TEST(AtomStyle, BadDataFile)
   }
   std::remove(f.c_str());
 }
+
+// Issue 17 item 12: the documented per-atom outputs (quatw quati quatj quatk,
+// shape, scale, density) through compute property/polyhedron (compute
+// property/atom refuses quat* for styles other than ellipsoid and body)
+TEST(AtomStyle, ComputePropertyPolyhedron)
+{
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+    Lmp l(extra);
+    gas(l, 10);
+    l.cmds({"compute q all property/polyhedron quatw quati quatj quatk shape scale density",
+            "compute w all property/polyhedron quatw", "run 20"});
+    auto *a = l.lmp->atom;
+    auto *avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(a->avec);
+    auto *q = (double **) lammps_extract_compute(l.lmp, "q", LMP_STYLE_ATOM, LMP_TYPE_ARRAY);
+    auto *w = (double *) lammps_extract_compute(l.lmp, "w", LMP_STYLE_ATOM, LMP_TYPE_VECTOR);
+    ASSERT_TRUE(q && w);
+    for (int i = 0; i < a->nlocal; i++) {
+      for (int k = 0; k < 4; k++) EXPECT_EQ(q[i][k], a->quat[i][k]) << "atom " << i;
+      EXPECT_EQ(w[i], a->quat[i][0]);
+      EXPECT_EQ(q[i][4], a->pshape[i] + 1);
+      EXPECT_EQ(q[i][5], a->pscale[i]);
+      EXPECT_DOUBLE_EQ(q[i][6], avec->density(i));
+      EXPECT_NE(a->quat[i][0], 1.0);    // rotated (quat/random), so not a default
+    }
+    const std::string e = l.error_of("compute bad all property/polyhedron quatx");
+    EXPECT_NE(e.find("compute property/polyhedron: unknown keyword 'quatx'"), std::string::npos) << e;
+  }
+}
