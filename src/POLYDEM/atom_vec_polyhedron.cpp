@@ -140,6 +140,19 @@ void AtomVecPolyhedron::inertia(int i, double *moments) const
   for (int k = 0; k < 3; k++) moments[k] = f * v.inertia[k];
 }
 
+// mass and moments of inertia of atom i are normal numbers, the mass at
+// most MASS_MAX (a zero mass gave NaN energies, a zero moment no rotation,
+// density 1e308 an infinite kinetic energy: m v^2 must not overflow)
+static constexpr double MASS_MAX = 1e250;
+bool AtomVecPolyhedron::mass_is_normal(int i) const
+{
+  double m[3];
+  inertia(i, m);
+  bool ok = std::isnormal(rmass[i]) && rmass[i] > 0.0 && rmass[i] <= MASS_MAX;
+  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(m[k]) && m[k] > 0.0;
+  return ok;
+}
+
 /* ----------------------------------------------------------------------
    create_atoms: first template, scale 1, density 1, identity orientation
 ------------------------------------------------------------------------- */
@@ -179,6 +192,10 @@ void AtomVecPolyhedron::data_atom_post(int ilocal)
   const auto v = templates[ishape - 1]->view();
   rmass[ilocal] = rho * v.volume * s * s * s;
   radius[ilocal] = v.radius * s;
+  if (!mass_is_normal(ilocal))
+    error->one(FLERR, "Invalid density {} or scale {} in Atoms section of data file: the mass "
+               "{} must be in (0, 1e250] and the moments of inertia non-zero and finite", rho, s,
+               rmass[ilocal]);
 
   double *q = quat[ilocal];
   const double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);

@@ -57,6 +57,7 @@ class AtomVecPolyhedron : public AtomVec {
   void set_shape_scale(int i, int ishape, double scale);
   // principal moments of atom i (body frame): I_k = m s^2 J_k / V
   void inertia(int i, double *moments) const;
+  bool mass_is_normal(int i) const;    // mass in (0, 1e250], moments normal
   double density(int i) const;
 
  private:

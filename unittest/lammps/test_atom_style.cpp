@@ -448,3 +448,39 @@ TEST(AtomStyle, ComputePropertyPolyhedron)
     EXPECT_NE(e.find("compute property/polyhedron: unknown keyword 'quatx'"), std::string::npos) << e;
   }
 }
+
+// Issue 17 item 8: a mass or moment that is zero, subnormal or huge (NaN or
+// inf kinetic energy later) is refused by polyhedron_set and read_data
+TEST(AtomStyle, MassMustBeNormal)
+{
+  auto one = [](Lmp &l) {
+    l.cmds({"units si", "atom_style polyhedron", "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05",
+            "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
+            "create_atoms 1 single 0 0 0"});
+  };
+  for (const char *kw : {"density 1e308", "scale 1e-300", "density 1e-320", "mass 1e-320",
+                         "scale 1e-100 density 1"}) {
+    Lmp l;
+    one(l);
+    const std::string e = l.error_of(std::string("polyhedron_set atom 1 ") + kw);
+    EXPECT_NE(e.find("polyhedron_set: 1 atom(s) (first: ID 1) get a mass outside (0, 1e250]"),
+              std::string::npos) << kw << ": " << e;
+  }
+  {
+    Lmp l;
+    one(l);
+    l.cmd("polyhedron_set atom 1 scale 1e-20 density 1e10");    // small but normal: fine
+    EXPECT_GT(l.lmp->atom->rmass[0], 0.0);
+  }
+  const std::string f = tmpfile("mass.data");
+  for (const char *cols : {"1 1 1 1e-320 1.0 5 5 5 1 0 0 0", "1 1 1 1.0 1e-320 5 5 5 1 0 0 0",
+                           "1 1 1 1e308 1.0 5 5 5 1 0 0 0"}) {
+    std::ofstream(f) << "test\n\n1 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n"
+                        "\nAtoms\n\n" << cols << "\n";
+    Lmp l;
+    l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
+    const std::string e = l.error_of("read_data " + f);
+    EXPECT_NE(e.find("in Atoms section of data file: the mass"), std::string::npos) << cols << ": " << e;
+  }
+  std::remove(f.c_str());
+}

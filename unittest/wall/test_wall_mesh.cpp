@@ -768,3 +768,23 @@ TEST(WallMesh, SmallRestitutionSetsUpQuickly)
     EXPECT_LT(s, 1.0) << "e = " << e;
   }
 }
+
+// Issue 17 item 8: youngs 1e300 made every wall contact NaN; the overflowing
+// stiffness is now an error at init
+TEST(WallMesh, OverflowingStiffnessRefused)
+{
+  const std::string good = tmpdir() + "/good_y.stl";
+  write_ascii(good, flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2));
+  {
+    Lmp l;
+    l.cmds(one_particle());
+    l.cmd("polyhedron_set group all scale 0.24");    // a 6 mm cube, as in the issue
+    l.cmd("fix w all wall/mesh " + good + " youngs 1e300");
+    const std::string msg = l.error_of("run 0");
+    EXPECT_NE(msg.find("fix wall/mesh w: the contact stiffness of 1 atom(s) overflows (youngs "
+                       "1e+300"), std::string::npos) << msg;
+  }
+  Lmp l;
+  l.cmds(one_particle());
+  l.cmds({"fix w all wall/mesh " + good + " youngs 1e12", "run 0"});    // stiff, finite: fine
+}
