@@ -10,6 +10,7 @@
 #include "polydem_shape_template.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -25,6 +26,13 @@ AtomVecPolyhedron::AtomVecPolyhedron(LAMMPS *lmp) : AtomVec(lmp), version(0)
   atom->radius_flag = atom->rmass_flag = atom->omega_flag = atom->torque_flag =
       atom->angmom_flag = 1;
   atom->quat_flag = atom->pshape_flag = 1;
+
+  // LAMMPS 2021's main() answers error->one (LAMMPSAbortException) with
+  // MPI_Abort and no flush: with the screen redirected to a file the message
+  // and the log were lost (issue 17). Line buffering keeps both; glibc
+  // allows it on a stream already in use (it changes only the flags).
+  if (screen) setvbuf(screen, nullptr, _IOLBF, BUFSIZ);
+  if (logfile) setvbuf(logfile, nullptr, _IOLBF, BUFSIZ);
 
   // ghosts get template index, scale, quaternion (+ radius and mass for the
   // neighbor cutoff and the effective mass), never vertices (seed §2.6)
