@@ -5,7 +5,10 @@
 #include "atom_vec_polyhedron.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
+#include "fix.h"
+#include "modify.h"
 #include "polydem_shape_record.h"
 #include "polydem_shape_template.h"
 
@@ -33,6 +36,7 @@ AtomVecPolyhedron::AtomVecPolyhedron(LAMMPS *lmp) : AtomVec(lmp), version(0)
   // allows it on a stream already in use (it changes only the flags).
   if (screen) setvbuf(screen, nullptr, _IOLBF, BUFSIZ);
   if (logfile) setvbuf(logfile, nullptr, _IOLBF, BUFSIZ);
+  check_dimension();
 
   // ghosts get template index, scale, quaternion (+ radius and mass for the
   // neighbor cutoff and the effective mass), never vertices (seed §2.6)
@@ -76,6 +80,41 @@ void AtomVecPolyhedron::process_args(int narg, char **arg)
   }
   version++;
   setup_fields();
+}
+
+/* ----------------------------------------------------------------------
+   3-d only: the rigid-body integration and contacts are three-dimensional
+   (in 2-d particles left the plane)
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedron::init()
+{
+  AtomVec::init();
+  check_dimension();
+  check_inserting_fixes();
+}
+
+void AtomVecPolyhedron::check_dimension()
+{
+  if (domain->dimension != 3)
+    error->all(FLERR, "atom_style polyhedron: 3-d only, got 'dimension {}'", domain->dimension);
+}
+
+/* ----------------------------------------------------------------------
+   LAMMPS's inserting fixes give their atoms a sphere's radius and mass and
+   no shape, scale or orientation of ours (fix pour then segfaulted at its
+   first insertion): refused before the run starts
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedron::check_inserting_fixes()
+{
+  for (int i = 0; i < modify->nfix; i++) {
+    const std::string style = modify->fix[i]->style;
+    if (style == "pour" || style == "deposit")
+      error->all(FLERR, "fix {} cannot insert atom_style polyhedron particles (it creates atoms "
+                 "without a polyhedron's shape, scale, orientation and mass): use fix "
+                 "insert/polyhedron", style);
+  }
 }
 
 /* ---------------------------------------------------------------------- */

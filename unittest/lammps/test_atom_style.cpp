@@ -420,32 +420,25 @@ TEST(AtomStyle, BadDataFile)
   std::remove(f.c_str());
 }
 
-// Issue 17 item 12: the documented per-atom outputs (quatw quati quatj quatk,
-// shape, scale, density) through compute property/polyhedron (compute
-// property/atom refuses quat* for styles other than ellipsoid and body)
-TEST(AtomStyle, ComputePropertyPolyhedron)
+// Issue 17 item 7: atom_style polyhedron is 3-d only (in 2-d particles left
+// the plane): dimension 2 before or after the atom style is an error
+TEST(AtomStyle, TwoDimensionsRefused)
 {
+  {
+    Lmp l;
+    l.cmd("dimension 2");
+    const std::string e = l.error_of("atom_style polyhedron");
+    EXPECT_NE(e.find("atom_style polyhedron: 3-d only, got 'dimension 2'"), std::string::npos) << e;
+  }
   for (const std::vector<std::string> &extra :
        {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
     Lmp l(extra);
-    gas(l, 10);
-    l.cmds({"compute q all property/polyhedron quatw quati quatj quatk shape scale density",
-            "compute w all property/polyhedron quatw", "run 20"});
-    auto *a = l.lmp->atom;
-    auto *avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(a->avec);
-    auto *q = (double **) lammps_extract_compute(l.lmp, "q", LMP_STYLE_ATOM, LMP_TYPE_ARRAY);
-    auto *w = (double *) lammps_extract_compute(l.lmp, "w", LMP_STYLE_ATOM, LMP_TYPE_VECTOR);
-    ASSERT_TRUE(q && w);
-    for (int i = 0; i < a->nlocal; i++) {
-      for (int k = 0; k < 4; k++) EXPECT_EQ(q[i][k], a->quat[i][k]) << "atom " << i;
-      EXPECT_EQ(w[i], a->quat[i][0]);
-      EXPECT_EQ(q[i][4], a->pshape[i] + 1);
-      EXPECT_EQ(q[i][5], a->pscale[i]);
-      EXPECT_DOUBLE_EQ(q[i][6], avec->density(i));
-      EXPECT_NE(a->quat[i][0], 1.0);    // rotated (quat/random), so not a default
-    }
-    const std::string e = l.error_of("compute bad all property/polyhedron quatx");
-    EXPECT_NE(e.find("compute property/polyhedron: unknown keyword 'quatx'"), std::string::npos) << e;
+    l.cmds({"units si", "atom_style polyhedron", "dimension 2",
+            "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box"});
+    std::string e = l.error_of("polyhedron_shape c " + potentials() + "/cube.shape");
+    EXPECT_NE(e.find("3-d only, got 'dimension 2'"), std::string::npos) << e;
+    e = l.error_of("run 0");
+    EXPECT_NE(e.find("3-d only, got 'dimension 2'"), std::string::npos) << e;
   }
 }
 
@@ -483,4 +476,60 @@ TEST(AtomStyle, MassMustBeNormal)
     EXPECT_NE(e.find("in Atoms section of data file: the mass"), std::string::npos) << cols << ": " << e;
   }
   std::remove(f.c_str());
+}
+
+// Issue 17 item 12: the documented per-atom outputs (quatw quati quatj quatk,
+// shape, scale, density) through compute property/polyhedron (compute
+// property/atom refuses quat* for styles other than ellipsoid and body)
+TEST(AtomStyle, ComputePropertyPolyhedron)
+{
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+    Lmp l(extra);
+    gas(l, 10);
+    l.cmds({"compute q all property/polyhedron quatw quati quatj quatk shape scale density",
+            "compute w all property/polyhedron quatw", "run 20"});
+    auto *a = l.lmp->atom;
+    auto *avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(a->avec);
+    auto *q = (double **) lammps_extract_compute(l.lmp, "q", LMP_STYLE_ATOM, LMP_TYPE_ARRAY);
+    auto *w = (double *) lammps_extract_compute(l.lmp, "w", LMP_STYLE_ATOM, LMP_TYPE_VECTOR);
+    ASSERT_TRUE(q && w);
+    for (int i = 0; i < a->nlocal; i++) {
+      for (int k = 0; k < 4; k++) EXPECT_EQ(q[i][k], a->quat[i][k]) << "atom " << i;
+      EXPECT_EQ(w[i], a->quat[i][0]);
+      EXPECT_EQ(q[i][4], a->pshape[i] + 1);
+      EXPECT_EQ(q[i][5], a->pscale[i]);
+      EXPECT_DOUBLE_EQ(q[i][6], avec->density(i));
+      EXPECT_NE(a->quat[i][0], 1.0);    // rotated (quat/random), so not a default
+    }
+    const std::string e = l.error_of("compute bad all property/polyhedron quatx");
+    EXPECT_NE(e.find("compute property/polyhedron: unknown keyword 'quatx'"), std::string::npos) << e;
+  }
+}
+
+// Issue 17 item 13: fix pour and fix deposit create atoms without a
+// polyhedron's data (fix pour segfaulted at its first insertion): refused,
+// naming the fix to use
+TEST(AtomStyle, CoreInsertionFixesRefused)
+{
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}})
+    for (const std::string &fix :
+         {std::string("pour 10 1 4711 region ins diam one 0.005"),
+          std::string("deposit 10 1 100 4711 region ins")}) {
+      if (!extra.empty() && fix.rfind("pour", 0) == 0) continue;    // LAMMPS: no pour with kk
+      Lmp l(extra);
+      l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "comm_modify vel yes",
+              "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box",
+              "polyhedron_shape c " + potentials() + "/cube.shape",
+              "region ins block -0.04 0.04 -0.04 0.04 0.0 0.04",
+              "fix g all gravity 9.81 vector 0 0 -1", "fix 1 all nve/polyhedron",
+              "fix p all " + fix});
+      const std::string e = l.error_of("run 10");
+      const std::string style = fix.substr(0, fix.find(' '));
+      EXPECT_NE(e.find("fix " + style + " cannot insert atom_style polyhedron particles"),
+                std::string::npos) << e;
+      EXPECT_NE(e.find("use fix insert/polyhedron"), std::string::npos) << e;
+      EXPECT_EQ(l.lmp->atom->natoms, 0);
+    }
 }
