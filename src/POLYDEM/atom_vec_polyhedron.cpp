@@ -111,9 +111,11 @@ void AtomVecPolyhedron::check_inserting_fixes()
   for (int i = 0; i < modify->nfix; i++) {
     const std::string style = modify->fix[i]->style;
     if (style == "pour" || style == "deposit")
-      error->all(FLERR, "fix {} cannot insert atom_style polyhedron particles (it creates atoms "
+      error->all(FLERR,
+                 "fix {} cannot insert atom_style polyhedron particles (it creates atoms "
                  "without a polyhedron's shape, scale, orientation and mass): use fix "
-                 "insert/polyhedron", style);
+                 "insert/polyhedron",
+                 style);
   }
 }
 
@@ -240,9 +242,10 @@ void AtomVecPolyhedron::data_atom_post(int ilocal)
   rmass[ilocal] = rho * v.volume * s * s * s;
   radius[ilocal] = v.radius * s;
   if (!mass_is_normal(ilocal))
-    error->one(FLERR, "Invalid density {} or scale {} in Atoms section of data file: the mass "
-               "{} must be in (0, 1e250] and the moments of inertia non-zero and finite", rho, s,
-               rmass[ilocal]);
+    error->one(FLERR,
+               "Invalid density {} or scale {} in Atoms section of data file: the mass "
+               "{} must be in (0, 1e250] and the moments of inertia non-zero and finite",
+               rho, s, rmass[ilocal]);
 
   double *q = quat[ilocal];
   const double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);

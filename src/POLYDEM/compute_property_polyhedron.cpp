@@ -20,15 +20,18 @@ ComputePropertyPolyhedron::ComputePropertyPolyhedron(LAMMPS *lmp, int narg, char
     Compute(lmp, narg, arg), avec(nullptr), nmax(0), vector(nullptr), array(nullptr)
 {
   if (narg < 4)
-    error->all(FLERR, "Illegal compute property/polyhedron command: expected at least one of "
+    error->all(FLERR,
+               "Illegal compute property/polyhedron command: expected at least one of "
                "shape scale density quatw quati quatj quatk");
   avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "compute property/polyhedron requires atom_style polyhedron");
   for (int iarg = 3; iarg < narg; iarg++) {
     const int k = avec->property_atom(arg[iarg]);
     if (k < 0)
-      error->all(FLERR, "compute property/polyhedron: unknown keyword '{}' (shape scale density "
-                 "quatw quati quatj quatk)", arg[iarg]);
+      error->all(FLERR,
+                 "compute property/polyhedron: unknown keyword '{}' (shape scale density "
+                 "quatw quati quatj quatk)",
+                 arg[iarg]);
     index.push_back(k);
   }
   peratom_flag = 1;

@@ -45,7 +45,8 @@ void DumpPolyhedronVTK::init_style()
   // (several datasets in one legacy VTK file are read as the first only)
   if (!multifile) {
     if (append_flag)
-      error->all(FLERR, "dump polyhedron/vtk: dump_modify append yes would put several VTK "
+      error->all(FLERR,
+                 "dump polyhedron/vtk: dump_modify append yes would put several VTK "
                  "datasets in one file; use '*' in the file name for one file per snapshot");
     openfile();
   }
@@ -184,6 +185,7 @@ void DumpPolyhedronVTK::write_snapshot()
   fflush(fp);
   // a single file: drop what is left of a longer earlier snapshot
   if (!multifile && ftruncate(fileno(fp), ftell(fp)) != 0)
-    error->one(FLERR, "dump polyhedron/vtk: cannot truncate {}: {}", filename, utils::getsyserror());
+    error->one(FLERR, "dump polyhedron/vtk: cannot truncate {}: {}", filename,
+               utils::getsyserror());
   records.clear();
 }

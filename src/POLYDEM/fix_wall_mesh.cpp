@@ -394,16 +394,19 @@ void FixWallMesh::check_timestep()
     p.meff /= force->ftm2v;
     const double dtf =
         polydem::face_contact_stable_dt(p, avec->shape(atom->pshape[i]).max_face_area() * s * s);
-    if (dtf > 0.0 && std::isfinite(dtf)) dtmin = MIN(dtmin, dtf);
-    else nover++;
+    if (dtf > 0.0 && std::isfinite(dtf))
+      dtmin = MIN(dtmin, dtf);
+    else
+      nover++;
   }
   MPI_Allreduce(MPI_IN_PLACE, &dtmin, 1, MPI_DOUBLE, MPI_MIN, world);
   // a stiffness that overflows (youngs 1e300) made every contact NaN
   MPI_Allreduce(MPI_IN_PLACE, &nover, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (nover)
-    error->all(FLERR, "fix wall/mesh {}: the contact stiffness of {} atom(s) overflows (youngs "
-               "{:.4g} of the wall, the particles' from pair_coeff): lower youngs", id, nover,
-               wall_E > 0.0 ? wall_E : tE[1]);
+    error->all(FLERR,
+               "fix wall/mesh {}: the contact stiffness of {} atom(s) overflows (youngs "
+               "{:.4g} of the wall, the particles' from pair_coeff): lower youngs",
+               id, nover, wall_E > 0.0 ? wall_E : tE[1]);
   if (dtmin >= 1e300 || comm->me != 0) return;
   utils::logmesg(lmp, "fix wall/mesh {}: a face flat on the wall in the core (core {}) is stable "
                  "for timesteps below {:.4g}, resolved below about {:.4g}\n", id, core, dtmin,

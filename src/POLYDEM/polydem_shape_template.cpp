@@ -520,7 +520,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   for (int i = 0; i < 3; ++i) cmax = std::max(cmax, std::max(std::fabs(lo[i]), std::fabs(hi[i])));
   if (!(diam >= SHAPE_SIZE_MIN && diam <= SHAPE_SIZE_MAX) || !(cmax <= SHAPE_SIZE_MAX))
     throw ShapeError(head + ": the shape's size " + fmt_num(diam) + " (largest coordinate " +
-                     fmt_num(cmax) + ") is outside [1e-50, 1e50]: its volume and moments would not "
+                     fmt_num(cmax) +
+                     ") is outside [1e-50, 1e50]: its volume and moments would not "
                      "be normal numbers (use the file's or the command's scale)");
   if (cmax > SHAPE_OFFSET_MAX * diam)
     throw ShapeError(head + ": the shape (size " + fmt_num(diam) + ") lies " + fmt_num(cmax) +
@@ -719,9 +720,10 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
       loops[g].push_back(v);
       const auto it = nx.find(v);
       if (it == nx.end())
-        throw ShapeError(src + ": degenerate hull: a merged face boundary is open (the shape is "
-                               "thinner than the coplanarity tolerance " + fmt_num(PLANE_TOL) +
-                               " times its size: a sliver?)");
+        throw ShapeError(src +
+                         ": degenerate hull: a merged face boundary is open (the shape is "
+                         "thinner than the coplanarity tolerance " +
+                         fmt_num(PLANE_TOL) + " times its size: a sliver?)");
       v = it->second;
     } while (v != start && loops[g].size() <= nx.size());
     if (loops[g].size() != nx.size())
@@ -822,7 +824,8 @@ void PolyShapeTemplate::check_mass_properties(const std::string &what) const
   if (!ok)
     throw ShapeError(what + ": volume " + fmt_num(volume_) + " or principal moments " +
                      fmt_num(moments_[0]) + " " + fmt_num(moments_[1]) + " " +
-                     fmt_num(moments_[2]) + " are zero or not finite (size outside [1e-50, 1e50]?)");
+                     fmt_num(moments_[2]) +
+                     " are zero or not finite (size outside [1e-50, 1e50]?)");
 }
 
 void PolyShapeTemplate::make_float_copy()

@@ -220,8 +220,8 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf)
   // uncaught std::ios_failure); devices and FIFOs may never end
   struct stat st;
   if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-    throw StlError(path + ": cannot read: " +
-                   (S_ISDIR(st.st_mode) ? "is a directory" : "not a regular file"));
+    throw StlError(
+        path + ": cannot read: " + (S_ISDIR(st.st_mode) ? "is a directory" : "not a regular file"));
   std::ifstream f(path, std::ios::binary);
   if (!f) throw StlError(path + ": cannot open file: " + std::strerror(errno));
   std::string data;

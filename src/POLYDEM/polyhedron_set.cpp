@@ -191,7 +191,8 @@ void PolyhedronSet::command(int narg, char **arg)
   MPI_Allreduce(&nbad, &allbad, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   MPI_Allreduce(&first, &allfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
   if (allbad)
-    error->all(FLERR, "polyhedron_set: {} atom(s) (first: ID {}) get a mass outside (0, 1e250] or "
+    error->all(FLERR,
+               "polyhedron_set: {} atom(s) (first: ID {}) get a mass outside (0, 1e250] or "
                "a moment of inertia that is zero or not finite: check density, mass and scale",
                allbad, allfirst);
   if (lmp->kokkos) atomKK->modified(Host, ALL_MASK);

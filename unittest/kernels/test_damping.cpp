@@ -31,7 +31,6 @@ double restitution(double zeta, double a, double q)
   double x = t0, v = 1.0 - c * std::pow(t0, s) / s;
   double h = 1e-6;
   const double rtol = 1e-10, atol = 1e-16;    // per step (x, v: impact units)
-
   // Dormand-Prince 5(4) tableau
   static const double A[7][6] = {
       {0, 0, 0, 0, 0, 0},
@@ -41,8 +40,8 @@ double restitution(double zeta, double a, double q)
       {19372.0 / 6561, -25360.0 / 2187, 64448.0 / 6561, -212.0 / 729, 0, 0},
       {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
       {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
-  static const double E[7] = {71.0 / 57600,      0, -71.0 / 16695, 71.0 / 1920, -17253.0 / 339200,
-                              22.0 / 525, -1.0 / 40};    // b5 - b4
+  static const double E[7] = {71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
+                              -17253.0 / 339200, 22.0 / 525, -1.0 / 40};    // b5 - b4
   double kx[7], kv[7];
   kx[0] = v;
   kv[0] = acc(x, v);
@@ -96,7 +95,8 @@ TEST(Damping, ClosedFormGivesTheRestitution)
     for (double q : {1.0 / 3.0, 0.5, 1.0})
       for (double e : {0.99, 0.9, 0.5, 0.1, 0.01, 1e-4}) {
         const double z = polydem::damping_ratio(e, q);
-        EXPECT_NEAR(restitution(z, a, q), e, 1e-7 * e + 1e-12) << "a " << a << " q " << q << " e " << e;
+        EXPECT_NEAR(restitution(z, a, q), e, 1e-7 * e + 1e-12)
+            << "a " << a << " q " << q << " e " << e;
       }
   // the pair's face contact with Feng's law; no damping for e = 1
   EXPECT_DOUBLE_EQ(polydem::damping_factor(0.5), polydem::damping_ratio(0.5, 1.0 / 3.0));

@@ -447,9 +447,9 @@ TEST(AtomStyle, TwoDimensionsRefused)
 TEST(AtomStyle, MassMustBeNormal)
 {
   auto one = [](Lmp &l) {
-    l.cmds({"units si", "atom_style polyhedron", "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05",
-            "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
-            "create_atoms 1 single 0 0 0"});
+    l.cmds({"units si", "atom_style polyhedron",
+            "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box",
+            "polyhedron_shape c " + potentials() + "/cube.shape", "create_atoms 1 single 0 0 0"});
   };
   for (const char *kw : {"density 1e308", "scale 1e-300", "density 1e-320", "mass 1e-320",
                          "scale 1e-100 density 1"}) {
@@ -457,7 +457,8 @@ TEST(AtomStyle, MassMustBeNormal)
     one(l);
     const std::string e = l.error_of(std::string("polyhedron_set atom 1 ") + kw);
     EXPECT_NE(e.find("polyhedron_set: 1 atom(s) (first: ID 1) get a mass outside (0, 1e250]"),
-              std::string::npos) << kw << ": " << e;
+              std::string::npos)
+        << kw << ": " << e;
   }
   {
     Lmp l;
@@ -469,11 +470,13 @@ TEST(AtomStyle, MassMustBeNormal)
   for (const char *cols : {"1 1 1 1e-320 1.0 5 5 5 1 0 0 0", "1 1 1 1.0 1e-320 5 5 5 1 0 0 0",
                            "1 1 1 1e308 1.0 5 5 5 1 0 0 0"}) {
     std::ofstream(f) << "test\n\n1 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n"
-                        "\nAtoms\n\n" << cols << "\n";
+                        "\nAtoms\n\n"
+                     << cols << "\n";
     Lmp l;
     l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
     const std::string e = l.error_of("read_data " + f);
-    EXPECT_NE(e.find("in Atoms section of data file: the mass"), std::string::npos) << cols << ": " << e;
+    EXPECT_NE(e.find("in Atoms section of data file: the mass"), std::string::npos)
+        << cols << ": " << e;
   }
   std::remove(f.c_str());
 }
@@ -503,7 +506,8 @@ TEST(AtomStyle, ComputePropertyPolyhedron)
       EXPECT_NE(a->quat[i][0], 1.0);    // rotated (quat/random), so not a default
     }
     const std::string e = l.error_of("compute bad all property/polyhedron quatx");
-    EXPECT_NE(e.find("compute property/polyhedron: unknown keyword 'quatx'"), std::string::npos) << e;
+    EXPECT_NE(e.find("compute property/polyhedron: unknown keyword 'quatx'"), std::string::npos)
+        << e;
   }
 }
 
@@ -514,9 +518,8 @@ TEST(AtomStyle, CoreInsertionFixesRefused)
 {
   for (const std::vector<std::string> &extra :
        {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}})
-    for (const std::string &fix :
-         {std::string("pour 10 1 4711 region ins diam one 0.005"),
-          std::string("deposit 10 1 100 4711 region ins")}) {
+    for (const std::string &fix : {std::string("pour 10 1 4711 region ins diam one 0.005"),
+                                   std::string("deposit 10 1 100 4711 region ins")}) {
       if (!extra.empty() && fix.rfind("pour", 0) == 0) continue;    // LAMMPS: no pour with kk
       Lmp l(extra);
       l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "comm_modify vel yes",
@@ -528,7 +531,8 @@ TEST(AtomStyle, CoreInsertionFixesRefused)
       const std::string e = l.error_of("run 10");
       const std::string style = fix.substr(0, fix.find(' '));
       EXPECT_NE(e.find("fix " + style + " cannot insert atom_style polyhedron particles"),
-                std::string::npos) << e;
+                std::string::npos)
+          << e;
       EXPECT_NE(e.find("use fix insert/polyhedron"), std::string::npos) << e;
       EXPECT_EQ(l.lmp->atom->natoms, 0);
     }

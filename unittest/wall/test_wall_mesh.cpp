@@ -782,7 +782,9 @@ TEST(WallMesh, OverflowingStiffnessRefused)
     l.cmd("fix w all wall/mesh " + good + " youngs 1e300");
     const std::string msg = l.error_of("run 0");
     EXPECT_NE(msg.find("fix wall/mesh w: the contact stiffness of 1 atom(s) overflows (youngs "
-                       "1e+300"), std::string::npos) << msg;
+                       "1e+300"),
+              std::string::npos)
+        << msg;
   }
   Lmp l;
   l.cmds(one_particle());
