@@ -5,11 +5,15 @@
 #include "atom_vec_polyhedron.h"
 
 #include "atom.h"
+#include "domain.h"
 #include "error.h"
+#include "fix.h"
+#include "modify.h"
 #include "polydem_shape_record.h"
 #include "polydem_shape_template.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -25,6 +29,14 @@ AtomVecPolyhedron::AtomVecPolyhedron(LAMMPS *lmp) : AtomVec(lmp), version(0)
   atom->radius_flag = atom->rmass_flag = atom->omega_flag = atom->torque_flag =
       atom->angmom_flag = 1;
   atom->quat_flag = atom->pshape_flag = 1;
+
+  // LAMMPS 2021's main() answers error->one (LAMMPSAbortException) with
+  // MPI_Abort and no flush: with the screen redirected to a file the message
+  // and the log were lost (issue 17). Line buffering keeps both; glibc
+  // allows it on a stream already in use (it changes only the flags).
+  if (screen) setvbuf(screen, nullptr, _IOLBF, BUFSIZ);
+  if (logfile) setvbuf(logfile, nullptr, _IOLBF, BUFSIZ);
+  check_dimension();
 
   // ghosts get template index, scale, quaternion (+ radius and mass for the
   // neighbor cutoff and the effective mass), never vertices (seed §2.6)
@@ -68,6 +80,43 @@ void AtomVecPolyhedron::process_args(int narg, char **arg)
   }
   version++;
   setup_fields();
+}
+
+/* ----------------------------------------------------------------------
+   3-d only: the rigid-body integration and contacts are three-dimensional
+   (in 2-d particles left the plane)
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedron::init()
+{
+  AtomVec::init();
+  check_dimension();
+  check_inserting_fixes();
+}
+
+void AtomVecPolyhedron::check_dimension()
+{
+  if (domain->dimension != 3)
+    error->all(FLERR, "atom_style polyhedron: 3-d only, got 'dimension {}'", domain->dimension);
+}
+
+/* ----------------------------------------------------------------------
+   LAMMPS's inserting fixes give their atoms a sphere's radius and mass and
+   no shape, scale or orientation of ours (fix pour then segfaulted at its
+   first insertion): refused before the run starts
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedron::check_inserting_fixes()
+{
+  for (int i = 0; i < modify->nfix; i++) {
+    const std::string style = modify->fix[i]->style;
+    if (style == "pour" || style == "deposit")
+      error->all(FLERR,
+                 "fix {} cannot insert atom_style polyhedron particles (it creates atoms "
+                 "without a polyhedron's shape, scale, orientation and mass): use fix "
+                 "insert/polyhedron",
+                 style);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -140,6 +189,19 @@ void AtomVecPolyhedron::inertia(int i, double *moments) const
   for (int k = 0; k < 3; k++) moments[k] = f * v.inertia[k];
 }
 
+// mass and moments of inertia of atom i are normal numbers, the mass at
+// most MASS_MAX (a zero mass gave NaN energies, a zero moment no rotation,
+// density 1e308 an infinite kinetic energy: m v^2 must not overflow)
+static constexpr double MASS_MAX = 1e250;
+bool AtomVecPolyhedron::mass_is_normal(int i) const
+{
+  double m[3];
+  inertia(i, m);
+  bool ok = std::isnormal(rmass[i]) && rmass[i] > 0.0 && rmass[i] <= MASS_MAX;
+  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(m[k]) && m[k] > 0.0;
+  return ok;
+}
+
 /* ----------------------------------------------------------------------
    create_atoms: first template, scale 1, density 1, identity orientation
 ------------------------------------------------------------------------- */
@@ -179,6 +241,11 @@ void AtomVecPolyhedron::data_atom_post(int ilocal)
   const auto v = templates[ishape - 1]->view();
   rmass[ilocal] = rho * v.volume * s * s * s;
   radius[ilocal] = v.radius * s;
+  if (!mass_is_normal(ilocal))
+    error->one(FLERR,
+               "Invalid density {} or scale {} in Atoms section of data file: the mass "
+               "{} must be in (0, 1e250] and the moments of inertia non-zero and finite",
+               rho, s, rmass[ilocal]);
 
   double *q = quat[ilocal];
   const double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);

@@ -37,6 +37,7 @@ class AtomVecPolyhedron : public AtomVec {
   void data_atom_post(int) override;
   void pack_data_pre(int) override;
   void pack_data_post(int) override;
+  void init() override;
   int property_atom(char *) override;
   void pack_property_atom(int, double *, int, int) override;
 
@@ -57,6 +58,9 @@ class AtomVecPolyhedron : public AtomVec {
   void set_shape_scale(int i, int ishape, double scale);
   // principal moments of atom i (body frame): I_k = m s^2 J_k / V
   void inertia(int i, double *moments) const;
+  bool mass_is_normal(int i) const;    // mass in (0, 1e250], moments normal
+  void check_dimension();              // error unless 3-d
+  void check_inserting_fixes();        // error for fix pour, fix deposit
   double density(int i) const;
 
  private:

@@ -1272,6 +1272,8 @@ void AtomVecPolyhedronKokkos::init()
 {
   sync_args();
   AtomVecPolyhedronKokkosBase::init();
+  check_dimension();
+  check_inserting_fixes();
 }
 
 void AtomVecPolyhedronKokkos::grow(int n)

@@ -12,6 +12,8 @@
 #include "update.h"
 
 #include <cmath>
+#include <cstdio>
+#include <unistd.h>
 
 using namespace LAMMPS_NS;
 
@@ -39,9 +41,15 @@ void DumpPolyhedronVTK::init_style()
 {
   avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "dump polyhedron/vtk requires atom_style polyhedron");
-  if (!multifile && me == 0)
-    error->warning(FLERR, "dump polyhedron/vtk: without '*' in the file name every snapshot "
-                   "is appended to one file, which VTK readers show as the first only");
+  // without '*' one file holds the latest snapshot, rewritten each time
+  // (several datasets in one legacy VTK file are read as the first only)
+  if (!multifile) {
+    if (append_flag)
+      error->all(FLERR,
+                 "dump polyhedron/vtk: dump_modify append yes would put several VTK "
+                 "datasets in one file; use '*' in the file name for one file per snapshot");
+    openfile();
+  }
 }
 
 void DumpPolyhedronVTK::write_header(bigint n)
@@ -129,6 +137,7 @@ const DumpPolyhedronVTK::DrawMesh &DumpPolyhedronVTK::mesh_of(int shape)
 
 void DumpPolyhedronVTK::write_snapshot()
 {
+  if (!multifile) rewind(fp);
   const size_t np = records.size() / NREC;
   bigint nv = 0, nf = 0, nidx = 0;
   for (size_t p = 0; p < np; p++) {
@@ -174,5 +183,9 @@ void DumpPolyhedronVTK::write_snapshot()
     }
   }
   fflush(fp);
+  // a single file: drop what is left of a longer earlier snapshot
+  if (!multifile && ftruncate(fileno(fp), ftell(fp)) != 0)
+    error->one(FLERR, "dump polyhedron/vtk: cannot truncate {}: {}", filename,
+               utils::getsyserror());
   records.clear();
 }

@@ -372,19 +372,11 @@ void FixWallMesh::init()
   check_timestep();
 }
 
-// zeta(e, a, q) table of restitution e (polydem_wall_contact.h): the ranks
-// share its entries (the sum is exact: each entry comes from one rank), and
-// every process remembers it per e (the same e on all ranks, so every rank
-// takes the same branch)
+// zeta(e, a, q) table of restitution e (polydem_wall_contact.h; closed
+// form, polydem_damping.h)
 polydem::WallDamping<double> FixWallMesh::damping_table(double e)
 {
-  static std::vector<std::pair<double, polydem::WallDamping<double>>> cache;
-  for (auto &c : cache)
-    if (c.first == e) return c.second;
-  polydem::WallDamping<double> d = polydem::wall_damping_table(e, comm->me, comm->nprocs);
-  MPI_Allreduce(MPI_IN_PLACE, &d.z[0][0], 2 * polydem::WALL_DAMP_N, MPI_DOUBLE, MPI_SUM, world);
-  cache.emplace_back(e, d);
-  return d;
+  return polydem::wall_damping_table(e);
 }
 
 // A face lying flat on the wall in the core has the largest stiffness of the
@@ -394,6 +386,7 @@ polydem::WallDamping<double> FixWallMesh::damping_table(double e)
 void FixWallMesh::check_timestep()
 {
   double dtmin = 1e300;
+  bigint nover = 0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
     const double s = atom->pscale[i];
@@ -401,9 +394,19 @@ void FixWallMesh::check_timestep()
     p.meff /= force->ftm2v;
     const double dtf =
         polydem::face_contact_stable_dt(p, avec->shape(atom->pshape[i]).max_face_area() * s * s);
-    if (dtf > 0.0) dtmin = MIN(dtmin, dtf);
+    if (dtf > 0.0 && std::isfinite(dtf))
+      dtmin = MIN(dtmin, dtf);
+    else
+      nover++;
   }
   MPI_Allreduce(MPI_IN_PLACE, &dtmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  // a stiffness that overflows (youngs 1e300) made every contact NaN
+  MPI_Allreduce(MPI_IN_PLACE, &nover, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (nover)
+    error->all(FLERR,
+               "fix wall/mesh {}: the contact stiffness of {} atom(s) overflows (youngs "
+               "{:.4g} of the wall, the particles' from pair_coeff): lower youngs",
+               id, nover, wall_E > 0.0 ? wall_E : tE[1]);
   if (dtmin >= 1e300 || comm->me != 0) return;
   utils::logmesg(lmp, "fix wall/mesh {}: a face flat on the wall in the core (core {}) is stable "
                  "for timesteps below {:.4g}, resolved below about {:.4g}\n", id, core, dtmin,

@@ -24,8 +24,9 @@
      law is far stiffer near its maximum overlap, and with that k the
      measured restitution of face-to-face cubes is 0.99 for e = 0.85. So k is
      the local normal stiffness W''(V) A_n^2 = K A_n^2 / (3 V^(2/3)) and zeta
-     is calibrated so that a face-to-face contact (force ~ delta^(1/3)) gives
-     exactly e, whatever the impact speed (damping_factor(e), host only).
+     is chosen so that a face-to-face contact (force ~ delta^(1/3)) gives
+     exactly e, whatever the impact speed (damping_factor(e), closed form in
+     polydem_damping.h).
      The dashpot is capped at g_n dt <= m_eff, the explicit stability limit
      (it binds only in the first steps of a flat contact, where k -> inf).
    Tangential (Cundall-Strack, Eqs. 17-20): accumulated displacement s kept
@@ -38,6 +39,7 @@
 #ifndef POLYDEM_CONTACT_MODEL_H
 #define POLYDEM_CONTACT_MODEL_H
 
+#include "polydem_damping.h"
 #include "polydem_math.h"
 
 #include <cmath>
@@ -56,60 +58,6 @@ template <typename T> struct ContactParams {
   T dt;       // time step (tangential displacement increment)
   T V0 = T(0);    // volume below which W is quadratic (0: pure V^{1/3} law)
 };
-
-// Restitution of the normalised face contact x'' = -x^(1/3) - 2 zeta
-// sqrt(x^(-2/3)/3) x', x(0) = 0, x'(0) = 1 (m = 1, K A^(4/3) = 1): the exit
-// speed when x returns to 0. Host only (setup). Velocity Verlet with an
-// implicit dashpot, step 2e-5 of a contact lasting about 3.
-inline double face_contact_restitution(double zeta)
-{
-  const double h = 2e-5;
-  double x = 0.0, v = 1.0;
-  for (int n = 0; n < 2000000; n++) {
-    const double xp = x > 0.0 ? x : 0.0;
-    const double g = xp > 0.0 ? 2.0 * zeta * std::sqrt(1.0 / (3.0 * std::cbrt(xp * xp))) : 0.0;
-    // half kick (elastic explicit, damping implicit), drift, half kick
-    v = (v - 0.5 * h * std::cbrt(xp)) / (1.0 + 0.5 * h * g);
-    x += h * v;
-    if (x <= 0.0 && n > 0) return -v;
-    const double xq = x > 0.0 ? x : 0.0;
-    const double g2 = xq > 0.0 ? 2.0 * zeta * std::sqrt(1.0 / (3.0 * std::cbrt(xq * xq))) : 0.0;
-    v = (v - 0.5 * h * std::cbrt(xq)) / (1.0 + 0.5 * h * g2);
-    if (v < 0.0 && x < 1e-300) return -v;
-  }
-  return 0.0;    // did not come back: fully damped
-}
-
-// zeta such that face_contact_restitution(zeta) = e, by bisection (e in (0, 1])
-inline double damping_ratio_for_restitution(double e)
-{
-  if (!(e > 0.0)) return 0.0;
-  if (e >= 1.0) return 0.0;
-  double lo = 0.0, hi = 1.0;
-  while (face_contact_restitution(hi) > e && hi < 1e3) hi *= 2.0;
-  for (int it = 0; it < 45; it++) {
-    const double mid = 0.5 * (lo + hi);
-    if (face_contact_restitution(mid) > e) lo = mid;
-    else hi = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-// Damping ratio for restitution e (host only; remembered per value, since
-// the calibration takes a few ms).
-inline double damping_factor(double e)
-{
-  static double keys[64], values[64];
-  static int n = 0;
-  for (int i = 0; i < n; i++)
-    if (keys[i] == e) return values[i];
-  const double z = damping_ratio_for_restitution(e);
-  if (n < 64) {
-    keys[n] = e;
-    values[n++] = z;
-  }
-  return z;
-}
 
 // Parameters of one contact from the two particles' Young's moduli, Poisson
 // ratios, volumes (already scaled) and masses (Eqs. 13, 19; R: radius of the

@@ -47,6 +47,12 @@ constexpr double PLANE_TOL = 1e-10;
 // truly equal moments by ~1e-15; keeping input axes for a split below
 // 1e-11 leaves products of inertia below 1e-11 of the largest moment.
 constexpr double MOMENT_TOL = 1e-11;
+// Sizes (length units) a template may have: its volume ~ size^3 and moments
+// ~ size^5 must be normal doubles, and CGAL's exact arithmetic (GMP) dies
+// with SIGFPE on degree-5 products that overflow a double (coordinates
+// above ~1e61). Coordinates may lie at most SHAPE_OFFSET_MAX sizes from the
+// origin (beyond, the body frame loses every digit of the shape).
+constexpr double SHAPE_SIZE_MIN = 1e-50, SHAPE_SIZE_MAX = 1e50, SHAPE_OFFSET_MAX = 1e12;
 
 std::string fmt_num(double x)
 {
@@ -510,6 +516,16 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     }
   double diam = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
                           (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  double cmax = 0.0;
+  for (int i = 0; i < 3; ++i) cmax = std::max(cmax, std::max(std::fabs(lo[i]), std::fabs(hi[i])));
+  if (!(diam >= SHAPE_SIZE_MIN && diam <= SHAPE_SIZE_MAX) || !(cmax <= SHAPE_SIZE_MAX))
+    throw ShapeError(head + ": the shape's size " + fmt_num(diam) + " (largest coordinate " +
+                     fmt_num(cmax) +
+                     ") is outside [1e-50, 1e50]: its volume and moments would not "
+                     "be normal numbers (use the file's or the command's scale)");
+  if (cmax > SHAPE_OFFSET_MAX * diam)
+    throw ShapeError(head + ": the shape (size " + fmt_num(diam) + ") lies " + fmt_num(cmax) +
+                     " from the origin, more than 1e12 times its size: translate it");
   const long double tol = PLANE_TOL * diam;
 
   // full-dimensionality, decided exactly
@@ -702,7 +718,13 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     int start = nx.begin()->first, v = start;    // smallest vertex index first
     do {
       loops[g].push_back(v);
-      v = nx.at(v);
+      const auto it = nx.find(v);
+      if (it == nx.end())
+        throw ShapeError(src +
+                         ": degenerate hull: a merged face boundary is open (the shape is "
+                         "thinner than the coplanarity tolerance " +
+                         fmt_num(PLANE_TOL) + " times its size: a sliver?)");
+      v = it->second;
     } while (v != start && loops[g].size() <= nx.size());
     if (loops[g].size() != nx.size())
       throw ShapeError(src + ": face merging failed: a merged face boundary is not one loop "
@@ -743,6 +765,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   radius_ = 0;
   for (const auto &p : bv)
     radius_ = std::max(radius_, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
+
+  check_mass_properties(head);
 
   face_start_.assign(1, 0);
   face_verts_.clear();
@@ -787,7 +811,21 @@ PolyShapeTemplate PolyShapeTemplate::ellipsoid(double a, double b, double c,
   t.radius_ = std::max(a, std::max(b, c));
   t.moments_ = {t.volume_ * (b * b + c * c) / 5.0, t.volume_ * (a * a + c * c) / 5.0,
                 t.volume_ * (a * a + b * b) / 5.0};
+  t.check_mass_properties(name + ": ellipsoid " + fmt_num(a) + " " + fmt_num(b) + " " + fmt_num(c));
   return t;
+}
+
+// volume and principal moments must be finite, normal numbers (issue 17: a
+// zero volume or moment gave NaN kinetic energy or silently dropped rotation)
+void PolyShapeTemplate::check_mass_properties(const std::string &what) const
+{
+  bool ok = std::isnormal(volume_) && volume_ > 0.0 && std::isnormal(radius_);
+  for (double m : moments_) ok = ok && std::isnormal(m) && m > 0.0;
+  if (!ok)
+    throw ShapeError(what + ": volume " + fmt_num(volume_) + " or principal moments " +
+                     fmt_num(moments_[0]) + " " + fmt_num(moments_[1]) + " " +
+                     fmt_num(moments_[2]) +
+                     " are zero or not finite (size outside [1e-50, 1e50]?)");
 }
 
 void PolyShapeTemplate::make_float_copy()

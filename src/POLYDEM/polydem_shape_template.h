@@ -114,6 +114,7 @@ class PolyShapeTemplate {
              const std::vector<int> &vlines, const std::vector<int> &flines, int vkey,
              const ShapeOptions &opt);
   void make_float_copy();
+  void check_mass_properties(const std::string &what) const;
 
   std::string name_, file_;
   std::vector<std::string> warnings_;

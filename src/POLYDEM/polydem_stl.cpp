@@ -18,6 +18,8 @@
 #include <set>
 #include <sstream>
 
+#include <sys/stat.h>
+
 namespace polydem {
 
 namespace {
@@ -214,9 +216,20 @@ static bool starts_solid(const std::string &data)
 
 StlMesh read_stl(const std::string &path, const StlTransform &xf)
 {
+  // a directory opens as a stream and then fails while being read (an
+  // uncaught std::ios_failure); devices and FIFOs may never end
+  struct stat st;
+  if (stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+    throw StlError(
+        path + ": cannot read: " + (S_ISDIR(st.st_mode) ? "is a directory" : "not a regular file"));
   std::ifstream f(path, std::ios::binary);
   if (!f) throw StlError(path + ": cannot open file: " + std::strerror(errno));
-  std::string data((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+  std::string data;
+  try {
+    data.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+  } catch (std::exception &e) {
+    throw StlError(path + ": cannot read: " + e.what());
+  }
   if (data.empty()) throw StlError(path + ": empty file");
   if (!(xf.scale > 0.0) || !std::isfinite(xf.scale))
     throw StlError(path + ": scale must be > 0");

@@ -613,12 +613,13 @@ template <typename T> struct MeshPose {
 // contact: with V ~ delta^a (a = A delta / V: 1 face, 2 edge, 3 vertex) and
 // W' ~ V^q (q = dlnW'/dlnV: 1/3 for Feng's law, 1 deep in the quadratic
 // core V << V0), F = W'(V) A ~ delta^(a(q+1) - 1) and the model's local
-// stiffness W''(V) A^2 = q a F / delta. The restitution then depends on
-// (a, q), and the contact point sees the mass m_c = 1 / (1/m + (r x n).
-// I^-1 (r x n)) (r: centre to contact point), not m. The wall contact uses
-// m_c and zeta(e, a, q) interpolated in a table calibrated on the host, so
-// that a corner impact reverses the contact point's normal velocity by e
-// (the assumption of seed Eqs. 27-28).
+// stiffness W''(V) A^2 = q a F / delta. The damping ratio for restitution e
+// then depends on q (exactly, not on a: polydem_damping.h), and the contact
+// point sees the mass m_c = 1 / (1/m + (r x n).I^-1 (r x n)) (r: centre to
+// contact point), not m. The wall contact uses m_c and zeta(e, q) from a
+// table filled on the host (its a axis holds equal values), so that a corner
+// impact reverses the contact point's normal velocity by e (the assumption
+// of seed Eqs. 27-28).
 constexpr int WALL_DAMP_N = 9;    // a = 1, 1.25, ..., 3; q = 1/3 and 1
 template <typename T> struct WallDamping {
   T z[2][WALL_DAMP_N];
@@ -639,59 +640,13 @@ template <typename T> POLYDEM_FN T wall_damping_ratio(const WallDamping<T> &d, T
   return (T(1) - wq) * z0 + wq * z1;
 }
 
-// Restitution of x'' = -x^p - 2 zeta sqrt(b x^(p-1)) x', x(0) = 0, x'(0) = 1,
-// p = a(q+1) - 1, b = q a (host only; a = 1, q = 1/3 is the pair's face
-// contact, damping_factor).
-inline double wall_contact_restitution(double zeta, double a, double q)
-{
-  const double p = a * (q + 1.0) - 1.0, b = q * a, h = 5e-5;
-  double x = 0.0, v = 1.0;
-  // half kicks; a step's closing kick and the next step's opening kick see
-  // the same x, so its force x^p and damping g are computed once
-  double xp = 0.0, g = 0.0;
-  auto kick = [&](double xx, double vv) {
-    if (!(xx > 0.0)) return vv;
-    return (vv - 0.5 * h * xp) / (1.0 + 0.5 * h * g);
-  };
-  for (int n = 0; n < 4000000; n++) {
-    v = kick(x, v);
-    x += h * v;
-    if (x <= 0.0 && n > 0) return -v;
-    if (x > 0.0) {
-      xp = std::pow(x, p);
-      g = 2.0 * zeta * std::sqrt(b * xp / x);
-    }
-    v = kick(x, v);
-    if (v < 0.0 && x < 1e-300) return -v;
-  }
-  return 0.0;
-}
-
-// zeta(e, a, q) table for restitution e (host only): the entries whose
-// index (iq * WALL_DAMP_N + k) is rank modulo nranks, the others 0, so that
-// MPI ranks can share the work and sum the tables (fix wall/mesh).
-inline WallDamping<double> wall_damping_table(double e, int rank = 0, int nranks = 1)
+// zeta(e, a, q) table for restitution e (host only; polydem_damping.h: the
+// exact ratio does not depend on a, and interpolation in q is linear)
+inline WallDamping<double> wall_damping_table(double e)
 {
   WallDamping<double> d;
   for (int iq = 0; iq < 2; iq++)
-    for (int k = 0; k < WALL_DAMP_N; k++) {
-      const double a = 1.0 + 0.25 * k, q = iq == 0 ? 1.0 / 3.0 : 1.0;
-      d.z[iq][k] = 0.0;
-      if ((iq * WALL_DAMP_N + k) % nranks != rank) continue;
-      if (!(e > 0.0) || e >= 1.0) continue;
-      if (iq == 0 && k == 0) {    // the pair's calibration, same value
-        d.z[iq][k] = damping_factor(e);
-        continue;
-      }
-      double lo = 0.0, hi = 1.0;
-      while (wall_contact_restitution(hi, a, q) > e && hi < 1e3) hi *= 2.0;
-      for (int it = 0; it < 30; it++) {
-        const double mid = 0.5 * (lo + hi);
-        if (wall_contact_restitution(mid, a, q) > e) lo = mid;
-        else hi = mid;
-      }
-      d.z[iq][k] = 0.5 * (lo + hi);
-    }
+    for (int k = 0; k < WALL_DAMP_N; k++) d.z[iq][k] = damping_ratio(e, iq == 0 ? 1.0 / 3.0 : 1.0);
   return d;
 }
 

@@ -18,6 +18,7 @@
 #include "random_park.h"
 #include "region.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -177,6 +178,23 @@ void PolyhedronSet::command(int narg, char **arg)
       error->all(FLERR, "polyhedron_set: unknown keyword '{}'", kw);
   }
 
+  // mass and moments must stay finite and non-zero (density 1e308, scale 1e-300)
+  bigint nbad = 0;
+  tagint first = MAXTAGINT;
+  for (int i = 0; i < nlocal; i++)
+    if (select[i] && !avec->mass_is_normal(i)) {
+      nbad++;
+      first = std::min(first, atom->tag[i]);
+    }
+  bigint allbad;
+  tagint allfirst;
+  MPI_Allreduce(&nbad, &allbad, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  MPI_Allreduce(&first, &allfirst, 1, MPI_LMP_TAGINT, MPI_MIN, world);
+  if (allbad)
+    error->all(FLERR,
+               "polyhedron_set: {} atom(s) (first: ID {}) get a mass outside (0, 1e250] or "
+               "a moment of inertia that is zero or not finite: check density, mass and scale",
+               allbad, allfirst);
   if (lmp->kokkos) atomKK->modified(Host, ALL_MASK);
 
   // keep omega consistent with angmom, orientation and inertia

@@ -28,6 +28,7 @@ void PolyhedronShape::command(int narg, char **arg)
   if (narg < 2) error->all(FLERR, "Illegal polyhedron_shape command: expected ID and file");
   auto avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "polyhedron_shape requires atom_style polyhedron");
+  avec->check_dimension();
 
   const std::string id = arg[0];
   if (id.empty() || !utils::is_id(id))

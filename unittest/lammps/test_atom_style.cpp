@@ -14,6 +14,9 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 using polydem_test::Lmp;
 using polydem_test::potentials;
 
@@ -22,6 +25,14 @@ namespace {
 std::string tmpfile(const std::string &name)
 {
   return ::testing::TempDir() + "polydem_" + name;
+}
+
+std::string read_text(const std::string &path)
+{
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
 }
 
 // a periodic box of non-interacting, randomly oriented, spinning particles
@@ -228,6 +239,38 @@ TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
   std::remove(tmpfile("snap.0.vtk").c_str());
 }
 
+// Issue 17 item 3: a file name without '*' (snap.vtk, snap, dir/snap.vtk)
+// crashed in fwrite (the file was never opened); now the file holds the
+// latest snapshot, one valid dataset, on plain and kk
+TEST(AtomStyle, DumpVTKSingleFileHoldsTheLatestSnapshot)
+{
+  const std::string dir = tmpfile("vtkdir");
+  mkdir(dir.c_str(), 0755);
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}})
+    for (const std::string &name : {tmpfile("single.vtk"), tmpfile("single"), dir + "/snap.vtk"}) {
+      std::remove(name.c_str());
+      {
+        Lmp l(extra);
+        gas(l, 10);
+        l.cmds({"dump d all polyhedron/vtk 10 " + name, "run 20"});
+        const std::string e = l.error_of("dump_modify d append yes");
+        if (e.empty()) EXPECT_NE(l.error_of("run 0").find("append yes"), std::string::npos);
+      }
+      const std::string text = read_text(name);
+      size_t n = 0;
+      for (size_t p = text.find("# vtk DataFile"); p != std::string::npos;
+           p = text.find("# vtk DataFile", p + 1))
+        n++;
+      EXPECT_EQ(n, 1u) << name;
+      EXPECT_NE(text.find("timestep 20\n"), std::string::npos) << name;
+      EXPECT_NE(text.find("POINTS 140 double"), std::string::npos) << name;
+      EXPECT_NE(text.find("POLYGONS 90 "), std::string::npos) << name;
+      std::remove(name.c_str());
+    }
+  rmdir(dir.c_str());
+}
+
 // dump polyhedron/vtk draws an ellipsoid as 114 points of its surface and 128
 // faces: every point, taken back to the body frame, satisfies
 // (x/a)^2 + (y/b)^2 + (z/c)^2 = 1 (to the 9 digits written), rotated and scaled.
@@ -375,4 +418,122 @@ TEST(AtomStyle, BadDataFile)
     EXPECT_NE(e.find("Invalid scale"), std::string::npos) << e;
   }
   std::remove(f.c_str());
+}
+
+// Issue 17 item 7: atom_style polyhedron is 3-d only (in 2-d particles left
+// the plane): dimension 2 before or after the atom style is an error
+TEST(AtomStyle, TwoDimensionsRefused)
+{
+  {
+    Lmp l;
+    l.cmd("dimension 2");
+    const std::string e = l.error_of("atom_style polyhedron");
+    EXPECT_NE(e.find("atom_style polyhedron: 3-d only, got 'dimension 2'"), std::string::npos) << e;
+  }
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+    Lmp l(extra);
+    l.cmds({"units si", "atom_style polyhedron", "dimension 2",
+            "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box"});
+    std::string e = l.error_of("polyhedron_shape c " + potentials() + "/cube.shape");
+    EXPECT_NE(e.find("3-d only, got 'dimension 2'"), std::string::npos) << e;
+    e = l.error_of("run 0");
+    EXPECT_NE(e.find("3-d only, got 'dimension 2'"), std::string::npos) << e;
+  }
+}
+
+// Issue 17 item 8: a mass or moment that is zero, subnormal or huge (NaN or
+// inf kinetic energy later) is refused by polyhedron_set and read_data
+TEST(AtomStyle, MassMustBeNormal)
+{
+  auto one = [](Lmp &l) {
+    l.cmds({"units si", "atom_style polyhedron",
+            "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box",
+            "polyhedron_shape c " + potentials() + "/cube.shape", "create_atoms 1 single 0 0 0"});
+  };
+  for (const char *kw : {"density 1e308", "scale 1e-300", "density 1e-320", "mass 1e-320",
+                         "scale 1e-100 density 1"}) {
+    Lmp l;
+    one(l);
+    const std::string e = l.error_of(std::string("polyhedron_set atom 1 ") + kw);
+    EXPECT_NE(e.find("polyhedron_set: 1 atom(s) (first: ID 1) get a mass outside (0, 1e250]"),
+              std::string::npos)
+        << kw << ": " << e;
+  }
+  {
+    Lmp l;
+    one(l);
+    l.cmd("polyhedron_set atom 1 scale 1e-20 density 1e10");    // small but normal: fine
+    EXPECT_GT(l.lmp->atom->rmass[0], 0.0);
+  }
+  const std::string f = tmpfile("mass.data");
+  for (const char *cols : {"1 1 1 1e-320 1.0 5 5 5 1 0 0 0", "1 1 1 1.0 1e-320 5 5 5 1 0 0 0",
+                           "1 1 1 1e308 1.0 5 5 5 1 0 0 0"}) {
+    std::ofstream(f) << "test\n\n1 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n"
+                        "\nAtoms\n\n"
+                     << cols << "\n";
+    Lmp l;
+    l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
+    const std::string e = l.error_of("read_data " + f);
+    EXPECT_NE(e.find("in Atoms section of data file: the mass"), std::string::npos)
+        << cols << ": " << e;
+  }
+  std::remove(f.c_str());
+}
+
+// Issue 17 item 12: the documented per-atom outputs (quatw quati quatj quatk,
+// shape, scale, density) through compute property/polyhedron (compute
+// property/atom refuses quat* for styles other than ellipsoid and body)
+TEST(AtomStyle, ComputePropertyPolyhedron)
+{
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+    Lmp l(extra);
+    gas(l, 10);
+    l.cmds({"compute q all property/polyhedron quatw quati quatj quatk shape scale density",
+            "compute w all property/polyhedron quatw", "run 20"});
+    auto *a = l.lmp->atom;
+    auto *avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(a->avec);
+    auto *q = (double **) lammps_extract_compute(l.lmp, "q", LMP_STYLE_ATOM, LMP_TYPE_ARRAY);
+    auto *w = (double *) lammps_extract_compute(l.lmp, "w", LMP_STYLE_ATOM, LMP_TYPE_VECTOR);
+    ASSERT_TRUE(q && w);
+    for (int i = 0; i < a->nlocal; i++) {
+      for (int k = 0; k < 4; k++) EXPECT_EQ(q[i][k], a->quat[i][k]) << "atom " << i;
+      EXPECT_EQ(w[i], a->quat[i][0]);
+      EXPECT_EQ(q[i][4], a->pshape[i] + 1);
+      EXPECT_EQ(q[i][5], a->pscale[i]);
+      EXPECT_DOUBLE_EQ(q[i][6], avec->density(i));
+      EXPECT_NE(a->quat[i][0], 1.0);    // rotated (quat/random), so not a default
+    }
+    const std::string e = l.error_of("compute bad all property/polyhedron quatx");
+    EXPECT_NE(e.find("compute property/polyhedron: unknown keyword 'quatx'"), std::string::npos)
+        << e;
+  }
+}
+
+// Issue 17 item 13: fix pour and fix deposit create atoms without a
+// polyhedron's data (fix pour segfaulted at its first insertion): refused,
+// naming the fix to use
+TEST(AtomStyle, CoreInsertionFixesRefused)
+{
+  for (const std::vector<std::string> &extra :
+       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}})
+    for (const std::string &fix : {std::string("pour 10 1 4711 region ins diam one 0.005"),
+                                   std::string("deposit 10 1 100 4711 region ins")}) {
+      if (!extra.empty() && fix.rfind("pour", 0) == 0) continue;    // LAMMPS: no pour with kk
+      Lmp l(extra);
+      l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "comm_modify vel yes",
+              "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box",
+              "polyhedron_shape c " + potentials() + "/cube.shape",
+              "region ins block -0.04 0.04 -0.04 0.04 0.0 0.04",
+              "fix g all gravity 9.81 vector 0 0 -1", "fix 1 all nve/polyhedron",
+              "fix p all " + fix});
+      const std::string e = l.error_of("run 10");
+      const std::string style = fix.substr(0, fix.find(' '));
+      EXPECT_NE(e.find("fix " + style + " cannot insert atom_style polyhedron particles"),
+                std::string::npos)
+          << e;
+      EXPECT_NE(e.find("use fix insert/polyhedron"), std::string::npos) << e;
+      EXPECT_EQ(l.lmp->atom->natoms, 0);
+    }
 }

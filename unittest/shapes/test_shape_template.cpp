@@ -671,3 +671,59 @@ TEST(ShapeTemplate, CatalystAxisBecomesBodyX)
   for (int k = 0; k < s.nverts(); ++k)
     EXPECT_NEAR(std::fabs(s.vertex(k)[0]), 0.00275, 1e-15);
 }
+
+// Issue 17 items 5, 9, 11: extreme sizes and slivers give a clear error (the
+// file, the line, the cause) instead of SIGFPE in GMP (coordinates 1e61 ..
+// 1e199), zero moments (scale 1e-80) or 'map::at' (a 1e-11 thick sliver)
+TEST(ShapeTemplateErrors, ExtremeSizesAndSlivers)
+{
+  const std::string d = tmpdir() + "/";
+  for (const char *c : {"1e61", "1e70", "1e150", "1e199"}) {
+    const std::string m =
+        load_error("huge.shape",
+                   std::string("vertices 4\n0 0 0\n") + c + " 0 0\n0 " + c + " 0\n0 0 " + c + "\n");
+    EXPECT_MSG(m, d + "huge.shape:1: the shape's size");
+    EXPECT_MSG(m, "is outside [1e-50, 1e50]");
+  }
+  std::string m =
+      load_error("tiny80.shape", "scale 1e-80\nvertices 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  EXPECT_MSG(m, d + "tiny80.shape:2: the shape's size");
+  ShapeOptions o;
+  o.scale = 1e-80;
+  m = load_error("tiny80b.shape", "vertices 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n", o);
+  EXPECT_MSG(m, "is outside [1e-50, 1e50]");
+  m = load_error("far2.shape", "vertices 4\n1e14 0 0\n100000000000001 0 0\n1e14 1 0\n1e14 0 1\n");
+  EXPECT_MSG(m, "more than 1e12 times its size: translate it");
+  for (const char *t : {"1e-11", "1e-13", "1e-15", "1e-18"}) {
+    m = load_error("sliver.shape",
+                   std::string("vertices 4\n0 0 0\n1 0 0\n0 1 0\n0.3 0.3 ") + t + "\n");
+    EXPECT_MSG(m, d + "sliver.shape: degenerate hull");
+  }
+  // within the bounds: finite, normal mass properties (moments ~ size^5)
+  for (double c : {5e49, 1e-50}) {
+    char text[200];
+    std::snprintf(text, sizeof text, "vertices 4\n0 0 0\n%.17g 0 0\n0 %.17g 0\n0 0 %.17g\n", c, c,
+                  c);
+    const std::string p = write_tmp("edge.shape", text);
+    const auto s = PolyShapeTemplate::from_file(p);
+    expect_rel(s.volume(), c * c * c / 6.0, 1e-12, "extreme volume");
+    for (double mo : s.moments()) EXPECT_TRUE(std::isnormal(mo)) << c;
+  }
+}
+
+// Issue 17 item 8: an ellipsoid whose volume or moments are not normal
+// numbers (1e-160: volume 0, 1e120: moments inf) is an error
+TEST(ShapeTemplateErrors, EllipsoidMassPropertiesMustBeNormal)
+{
+  for (double a : {1e-160, 1e-110, 1e120, 1e160}) {
+    std::string m;
+    try {
+      PolyShapeTemplate::ellipsoid(a, a, a, "e");
+    } catch (const ShapeError &e) {
+      m = e.what();
+    }
+    EXPECT_MSG(m, "are zero or not finite");
+  }
+  const auto e = PolyShapeTemplate::ellipsoid(1e-40, 1e-40, 2e-40, "small");
+  for (double mo : e.moments()) EXPECT_TRUE(std::isnormal(mo));
+}

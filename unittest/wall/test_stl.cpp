@@ -163,6 +163,12 @@ TEST(Stl, Errors)
 {
   EXPECT_NE(error_of("/nonexistent/x.stl").find("/nonexistent/x.stl: cannot open"),
             std::string::npos);
+  // issue 17 item 4: a directory (was an uncaught std::ios_failure) and a device
+  EXPECT_NE(error_of(tmpdir()).find(tmpdir() + ": cannot read: is a directory"), std::string::npos)
+      << error_of(tmpdir());
+  EXPECT_NE(error_of("/dev/null").find("/dev/null: cannot read: not a regular file"),
+            std::string::npos)
+      << error_of("/dev/null");
   const std::string e = write_text("empty.stl", "");
   EXPECT_NE(error_of(e).find("empty file"), std::string::npos);
   const std::string es = write_text("emptysolid.stl", "solid x\nendsolid x\n");

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -609,6 +610,7 @@ TEST(WallMesh, BadInput)
   };
   const std::vector<Case> cases = {
       {"/nonexistent/wall.stl", "fix wall/mesh: /nonexistent/wall.stl: cannot open file"},
+      {tmpdir(), "fix wall/mesh: " + tmpdir() + ": cannot read: is a directory"},    // issue 17
       {trunc, "truncated binary STL"},
       {bad, "bad_lmp.stl:5: expected 'vertex x y z'"},
       {nan, "nan_lmp.stl:2: facet: non-finite coordinate"},
@@ -748,4 +750,43 @@ TEST(WallMesh, Restart)
   std::printf("[ wall     ] restart: max |difference| %.3g; without history %.3g\n", same, diff);
   EXPECT_EQ(same, 0.0);
   EXPECT_GT(diff, 1e-6);
+}
+
+// Issue 17 item 6: the damping ratio for a small restitution used to take
+// seconds (e = 0.01) or not end (e = 1e-20) at init; now a closed form
+TEST(WallMesh, SmallRestitutionSetsUpQuickly)
+{
+  const std::string good = tmpdir() + "/good_e.stl";
+  write_ascii(good, flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2));
+  for (const char *e : {"0.01", "1e-20"}) {
+    Lmp l;
+    l.cmds(one_particle());
+    const auto t0 = std::chrono::steady_clock::now();
+    l.cmds({std::string("pair_coeff * * 1e6 0.1 ") + e + " 0.5",
+            "fix w all wall/mesh " + good + " restitution " + e, "run 0"});
+    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_LT(s, 1.0) << "e = " << e;
+  }
+}
+
+// Issue 17 item 8: youngs 1e300 made every wall contact NaN; the overflowing
+// stiffness is now an error at init
+TEST(WallMesh, OverflowingStiffnessRefused)
+{
+  const std::string good = tmpdir() + "/good_y.stl";
+  write_ascii(good, flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2));
+  {
+    Lmp l;
+    l.cmds(one_particle());
+    l.cmd("polyhedron_set group all scale 0.24");    // a 6 mm cube, as in the issue
+    l.cmd("fix w all wall/mesh " + good + " youngs 1e300");
+    const std::string msg = l.error_of("run 0");
+    EXPECT_NE(msg.find("fix wall/mesh w: the contact stiffness of 1 atom(s) overflows (youngs "
+                       "1e+300"),
+              std::string::npos)
+        << msg;
+  }
+  Lmp l;
+  l.cmds(one_particle());
+  l.cmds({"fix w all wall/mesh " + good + " youngs 1e12", "run 0"});    // stiff, finite: fine
 }

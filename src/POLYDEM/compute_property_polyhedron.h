@@ -1,0 +1,42 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - compute property/polyhedron: per-atom shape index, scale,
+   density and orientation quaternion of atom_style polyhedron.
+   compute property/atom cannot give quatw..quatk for this style: LAMMPS's
+   own branch for those names accepts only ellipsoid and body styles.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(property/polyhedron,ComputePropertyPolyhedron);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_PROPERTY_POLYHEDRON_H
+#define LMP_COMPUTE_PROPERTY_POLYHEDRON_H
+
+#include "compute.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class ComputePropertyPolyhedron : public Compute {
+ public:
+  ComputePropertyPolyhedron(class LAMMPS *, int, char **);
+  ~ComputePropertyPolyhedron() override;
+  void init() override;
+  void compute_peratom() override;
+  double memory_usage() override;
+
+ private:
+  class AtomVecPolyhedron *avec;
+  std::vector<int> index;    // AtomVecPolyhedron::property_atom of each keyword
+  int nmax;
+  double *vector;
+  double **array;
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif
