@@ -447,43 +447,47 @@ void FixInsertPolyhedron::region_bbox(double *lo, double *hi)
       lo[k] = elo[k];
       hi[k] = ehi[k];
     }
-    return;
-  }
-  for (int k = 0; k < 3; k++) {
-    lo[k] = 1e300;
-    hi[k] = -1e300;
-  }
-  for (int c = 0; c < 8; c++) {
-    double p[3] = {(c & 1) ? ehi[0] : elo[0], (c & 2) ? ehi[1] : elo[1], (c & 4) ? ehi[2] : elo[2]};
-    RegionMotion::forward(region, p[0], p[1], p[2]);
+  } else {
     for (int k = 0; k < 3; k++) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
+      lo[k] = 1e300;
+      hi[k] = -1e300;
     }
+    for (int c = 0; c < 8; c++) {
+      double p[3] = {(c & 1) ? ehi[0] : elo[0], (c & 2) ? ehi[1] : elo[1], (c & 4) ? ehi[2] : elo[2]};
+      RegionMotion::forward(region, p[0], p[1], p[2]);
+      for (int k = 0; k < 3; k++) {
+        lo[k] = std::min(lo[k], p[k]);
+        hi[k] = std::max(hi[k], p[k]);
+      }
+    }
+  }
+  // only the part inside the simulation box can take particles (a block
+  // with INF bounds, a region reaching out of the box)
+  for (int k = 0; k < 3; k++) {
+    lo[k] = std::max(lo[k], domain->boxlo[k]);
+    hi[k] = std::min(hi[k], domain->boxhi[k]);
   }
 }
 
 /* ----------------------------------------------------------------------
-   region volume: its box times the fraction of 2^18 Halton points inside
-   (exact for a block; relative error ~1e-4 for smooth boundaries), the
-   same on every rank
+   region volume (within the simulation box): its box times the fraction
+   of 2^18 Halton points inside (exact for a block; relative error ~1e-4
+   for smooth boundaries), the same on every rank
 ------------------------------------------------------------------------- */
 
 double FixInsertPolyhedron::estimate_region_volume()
 {
-  const double ext[3] = {region->extent_xhi - region->extent_xlo,
-                         region->extent_yhi - region->extent_ylo,
-                         region->extent_zhi - region->extent_zlo};
+  double lo[3], hi[3];
+  region_bbox(lo, hi);
+  const double ext[3] = {hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
   if (!(ext[0] > 0.0 && ext[1] > 0.0 && ext[2] > 0.0)) return 0.0;
   const unsigned n = 1u << 18;
   unsigned hit = 0;
-  for (unsigned i = 1; i <= n; i++) {
-    double x = region->extent_xlo + ext[0] * halton(i, 2);
-    double y = region->extent_ylo + ext[1] * halton(i, 3);
-    double z = region->extent_zlo + ext[2] * halton(i, 5);
-    if (region->dynamic) RegionMotion::forward(region, x, y, z);
-    hit += region->match(x, y, z) ? 1 : 0;
-  }
+  for (unsigned i = 1; i <= n; i++)
+    hit += region->match(lo[0] + ext[0] * halton(i, 2), lo[1] + ext[1] * halton(i, 3),
+                         lo[2] + ext[2] * halton(i, 5))
+               ? 1
+               : 0;
   return ext[0] * ext[1] * ext[2] * hit / n;
 }
 
@@ -721,13 +725,11 @@ void FixInsertPolyhedron::draw_range(const double *lo, const double *hi, double 
   for (int k = 0; k < 3; k++) out[k] = lo[k] == hi[k] ? lo[k] : lo[k] + (hi[k] - lo[k]) * rng.uniform();
 }
 
+// a point uniform in the region (within the box), from its current box
 bool FixInsertPolyhedron::sample_in_region(double *x)
 {
   for (int t = 0; t < REGION_TRIES; t++) {
-    x[0] = region->extent_xlo + (region->extent_xhi - region->extent_xlo) * rng.uniform();
-    x[1] = region->extent_ylo + (region->extent_yhi - region->extent_ylo) * rng.uniform();
-    x[2] = region->extent_zlo + (region->extent_zhi - region->extent_zlo) * rng.uniform();
-    if (region->dynamic) RegionMotion::forward(region, x[0], x[1], x[2]);
+    for (int k = 0; k < 3; k++) x[k] = slo[k] + (shi[k] - slo[k]) * rng.uniform();
     if (region->match(x[0], x[1], x[2])) return true;
   }
   return false;
@@ -912,6 +914,10 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   refresh_views();
   double lo[3], hi[3];
   region_bbox(lo, hi);
+  for (int k = 0; k < 3; k++) {
+    slo[k] = lo[k];
+    shi[k] = hi[k];
+  }
   const double rcand = rmax_insert;
   double vol = 0.0;
   gather(lo, hi, rcand, vol);

@@ -109,6 +109,7 @@ class FixInsertPolyhedron : public Fix {
   double estimate_region_volume();
   void region_bbox(double *lo, double *hi);
   bool sample_in_region(double *x);
+  double slo[3], shi[3];    // box of the region now, within the simulation box
   // void cells of mode pack
   double vlo_[3], vh = 0.0, vrin = 0.0;
   int vn[3];

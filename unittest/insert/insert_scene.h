@@ -47,7 +47,7 @@ inline std::string container_file()
 }
 
 // Polyhedra poured at a rate into the container above, with contacts and
-// the mesh wall (extra: e.g. "pair_style polyhedron/kk" with -sf kk)
+// the mesh wall (or, contacts false, neither)
 inline std::vector<std::string> pour_scene(const std::string &stl, bool contacts = true)
 {
   std::vector<std::string> c = {
@@ -62,8 +62,9 @@ inline std::vector<std::string> pour_scene(const std::string &stl, bool contacts
       "vel uniform -0.05 0.05 -0.05 0.05 -0.5 -0.3 omega constant 0 0 3"};
   if (contacts) c.insert(c.end(), {"pair_style polyhedron", "pair_coeff * * 1.0e7 0.3 0.5 0.5"});
   c.insert(c.end(), {"neighbor 0.001 bin", "neigh_modify every 1 delay 0 check yes",
-                     "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1",
-                     "fix w all wall/mesh " + stl, "timestep 5e-6", "thermo 100"});
+                     "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1"});
+  if (contacts) c.push_back("fix w all wall/mesh " + stl);    // needs the pair style's material
+  c.insert(c.end(), {"timestep 5e-6", "thermo 100"});
   return c;
 }
 
