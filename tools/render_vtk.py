@@ -4,6 +4,10 @@ polydata) to a PNG with matplotlib: every face drawn, shaded by its normal,
 coloured by shape.
 
     python3 tools/render_vtk.py snapshot.vtk picture.png [--elev 20 --azim -60]
+                                [--mesh wall.stl ...]
+
+--mesh draws the edges of STL walls (ASCII or binary) as a light wireframe.
+The functions read_vtk, read_stl and draw serve other scripts (examples).
 """
 import argparse
 import sys
@@ -13,7 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+from mpl_toolkits.mplot3d.art3d import Line3DCollection, Poly3DCollection  # noqa: E402
 
 
 def read_vtk(path):
@@ -46,17 +50,20 @@ def read_vtk(path):
     return pts, polys, cell
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("vtk")
-    ap.add_argument("png")
-    ap.add_argument("--elev", type=float, default=22)
-    ap.add_argument("--azim", type=float, default=-58)
-    ap.add_argument("--title", default=None)
-    a = ap.parse_args()
+def read_stl(path):
+    """Triangles (n x 3 x 3) of an ASCII or binary STL file."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:5] == b"solid" and b"\0" not in data[:400]:
+        v = [float(x) for w in data.decode().split("vertex")[1:] for x in w.split()[:3]]
+        return np.array(v).reshape(-1, 3, 3)
+    n = int.from_bytes(data[80:84], "little")
+    rec = np.frombuffer(data[84:84 + 50 * n], dtype=np.uint8).reshape(n, 50)
+    return rec[:, 12:48].copy().view("<f4").reshape(n, 3, 3).astype(float)
 
-    pts, polys, cell = read_vtk(a.vtk)
-    shapes = cell.get("shape", np.ones(len(polys), dtype=int))
+
+def faces_colors(pts, polys, cell, color_by="shape"):
+    shapes = cell.get(color_by, cell.get("shape", np.ones(len(polys), dtype=int)))
     palette = plt.get_cmap("tab10")
     light = np.array([0.4, -0.5, 0.77])
     light /= np.linalg.norm(light)
@@ -69,22 +76,52 @@ def main():
         c = np.array(palette((int(s) - 1) % 10)[:3]) * shade
         faces.append(v)
         colors.append(np.clip(c, 0, 1))
+    return faces, colors
 
-    fig = plt.figure(figsize=(7, 7), dpi=110)
-    ax = fig.add_subplot(111, projection="3d")
-    coll = Poly3DCollection(faces, facecolors=colors, edgecolors=(0, 0, 0, 0.25),
-                            linewidths=0.2)
-    ax.add_collection3d(coll)
-    lo, hi = pts.min(axis=0), pts.max(axis=0)
+
+def draw(ax, vtk, meshes=(), elev=22, azim=-58, limits=None):
+    """Draw a snapshot (and mesh wireframes) into a 3-D axis; returns the
+    number of faces. limits: (lo, hi) arrays, else the data's box."""
+    pts, polys, cell = read_vtk(vtk)
+    faces, colors = faces_colors(pts, polys, cell)
+    allp = [pts]
+    for m in meshes:
+        tri = read_stl(m)
+        edges = np.concatenate([tri[:, [0, 1]], tri[:, [1, 2]], tri[:, [2, 0]]])
+        ax.add_collection3d(Line3DCollection(edges, colors=(0.35, 0.35, 0.4, 0.35),
+                                             linewidths=0.4))
+        allp.append(tri.reshape(-1, 3))
+    ax.add_collection3d(Poly3DCollection(faces, facecolors=colors,
+                                         edgecolors=(0, 0, 0, 0.25), linewidths=0.2))
+    if limits is None:
+        allp = np.concatenate(allp)
+        limits = (allp.min(axis=0), allp.max(axis=0))
+    lo, hi = limits
     c, r = 0.5 * (lo + hi), 0.5 * (hi - lo).max()
     ax.set_xlim(c[0] - r, c[0] + r)
     ax.set_ylim(c[1] - r, c[1] + r)
     ax.set_zlim(c[2] - r, c[2] + r)
-    ax.view_init(elev=a.elev, azim=a.azim)
+    ax.view_init(elev=elev, azim=azim)
+    return len(polys)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("vtk")
+    ap.add_argument("png")
+    ap.add_argument("--elev", type=float, default=22)
+    ap.add_argument("--azim", type=float, default=-58)
+    ap.add_argument("--title", default=None)
+    ap.add_argument("--mesh", nargs="*", default=[], help="STL walls to draw as wireframes")
+    a = ap.parse_args()
+
+    fig = plt.figure(figsize=(7, 7), dpi=110)
+    ax = fig.add_subplot(111, projection="3d")
+    nf = draw(ax, a.vtk, a.mesh, a.elev, a.azim)
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("z")
-    ax.set_title(a.title or f"{a.vtk.split('/')[-1]}: {len(polys)} faces")
+    ax.set_title(a.title or f"{a.vtk.split('/')[-1]}: {nf} faces")
     fig.tight_layout()
     fig.savefig(a.png)
     print(f"render_vtk: wrote {a.png}")

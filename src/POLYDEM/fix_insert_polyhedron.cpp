@@ -264,7 +264,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "{}: keywords rate, rate/mass and per are for mode rate", me);
   if (ntotal == 0 && masstotal == 0.0 && phi_target == 0.0)
     error->all(FLERR, "{}: N = 0 needs a limit (mass/total, or fraction in mode pack)", me);
-  if (attempts < 0) attempts = mode == MODE_PACK ? 1000 : 100;
+  if (attempts < 0) attempts = 1000;
   number_probabilities();
   for (const auto &k : kinds)
     rmax_insert = std::max(rmax_insert, avec->shape(k.ishape).radius() * k.scale.max());
@@ -904,6 +904,7 @@ bool FixInsertPolyhedron::sample_in_voids(double *x)
 
 int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
 {
+  const double t0 = MPI_Wtime();
   if (lmp->kokkos) atomKK->sync(Host, ALL_MASK);
   // ghosts are overwritten by new atoms (as in Comm::exchange)
   if (atom->map_style != Atom::MAP_NONE) atom->map_clear();
@@ -1007,6 +1008,7 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   create(placed);
   if (lmp->kokkos) atomKK->modified(Host, ALL_MASK);
   last_phi = vol / region_volume;
+  time_run += MPI_Wtime() - t0;
   return failed ? -(int) placed.size() - 1 : (int) placed.size();
 }
 
@@ -1112,6 +1114,8 @@ void FixInsertPolyhedron::do_event()
 
 void FixInsertPolyhedron::setup_pre_exchange()
 {
+  time_run = 0.0;
+  time_start = MPI_Wtime();
   if (mode == MODE_PACK) {
     if (!packdone) {
       const bigint n0 = ninserted;
@@ -1154,7 +1158,9 @@ void FixInsertPolyhedron::post_run()
 {
   if (comm->me == 0)
     utils::logmesg(lmp, "fix insert/polyhedron {}: {} particle(s) inserted (mass {:.6g}), {} not "
-                   "placed, {} attempts\n", id, ninserted, massinserted, nfailed, nattempts);
+                   "placed, {} attempts; insertion took {:.3g} s of this run ({:.2f} %)\n", id,
+                   ninserted, massinserted, nfailed, nattempts, time_run,
+                   100.0 * time_run / std::max(1e-30, MPI_Wtime() - time_start));
 }
 
 void *FixInsertPolyhedron::extract(const char *name, int &dim)
@@ -1172,6 +1178,20 @@ double FixInsertPolyhedron::max_insert_radius(LAMMPS *lmp)
     if (f) r = std::max(r, f->rmax_insert);
   }
   return r;
+}
+
+std::vector<FixInsertPolyhedron::Candidate> FixInsertPolyhedron::candidates(LAMMPS *lmp)
+{
+  std::vector<Candidate> out;
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    auto f = dynamic_cast<FixInsertPolyhedron *>(lmp->modify->fix[i]);
+    if (!f) continue;
+    for (const auto &k : f->kinds) {
+      const double s = k.scale.min();
+      out.push_back({k.ishape, s, k.density * f->avec->shape(k.ishape).volume() * s * s * s, f->itype});
+    }
+  }
+  return out;
 }
 
 double FixInsertPolyhedron::compute_scalar()

@@ -42,6 +42,14 @@ class FixInsertPolyhedron : public Fix {
   // largest bounding radius any fix insert/polyhedron may insert (0: none);
   // the pair styles size their cutoff with it, as with atoms present
   static double max_insert_radius(class LAMMPS *);
+  // the smallest particle of each kind every fix insert/polyhedron may
+  // insert (template, scale, mass, type): the pair styles' time-step checks
+  struct Candidate {
+    int ishape;
+    double scale, mass;
+    int type;
+  };
+  static std::vector<Candidate> candidates(class LAMMPS *);
 
   enum { MODE_RATE, MODE_PACK };
   enum { RATE_NONE, RATE_NUMBER, RATE_MASS, RATE_PER };
@@ -84,7 +92,8 @@ class FixInsertPolyhedron : public Fix {
   bigint ninserted, nfailed, nattempts, nevents, nstart, next_event;
   double massinserted, volinserted;
   int packdone;
-  double last_phi = 0.0;    // solid fraction after the last insertion (log)
+  double last_phi = 0.0;
+  double time_run = 0.0, time_start = 0.0;    // wall time of insertion this run, run start    // solid fraction after the last insertion (log)
   bigint nfailed_warned;
 
   // per insertion

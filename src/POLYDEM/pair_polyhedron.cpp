@@ -265,20 +265,24 @@ double PairPolyhedron::init_one(int i, int j)
 void PairPolyhedron::check_timestep()
 {
   double tc[2] = {1e300, 1e300};    // contact time, face-contact stability limit
-  for (int i = 0; i < atom->nlocal; i++) {
-    const auto &shape = avec->shape(atom->pshape[i]);
+  auto consider = [&](int ishape, double s, double m, int type) {
+    const auto &shape = avec->shape(ishape);
     const double V = shape.volume();
-    const double s = atom->pscale[i];
     const double R = s * cbrt(3.0 * V / (4.0 * MY_PI));
-    const double kn = 2.0 * youngs[atom->type[i]] * R;
-    tc[0] = MIN(tc[0], MY_PI * sqrt(0.5 * atom->rmass[i] / (kn * force->ftm2v)));
+    const double kn = 2.0 * youngs[type] * R;
+    tc[0] = MIN(tc[0], MY_PI * sqrt(0.5 * m / (kn * force->ftm2v)));
     // like pair of this particle, its largest face flat on another's
-    const auto p = polydem::make_contact_params(
-        youngs[atom->type[i]], 0.0, V * s * s * s, atom->rmass[i] / force->ftm2v,
-        youngs[atom->type[i]], 0.0, V * s * s * s, atom->rmass[i] / force->ftm2v, 0.0, 0.0, core, 0.0);
+    const auto p = polydem::make_contact_params(youngs[type], 0.0, V * s * s * s, m / force->ftm2v,
+                                                youngs[type], 0.0, V * s * s * s, m / force->ftm2v,
+                                                0.0, 0.0, core, 0.0);
     const double dtf = polydem::face_contact_stable_dt(p, shape.max_face_area() * s * s);
     if (dtf > 0.0) tc[1] = MIN(tc[1], dtf);
-  }
+  };
+  for (int i = 0; i < atom->nlocal; i++)
+    consider(atom->pshape[i], atom->pscale[i], atom->rmass[i], atom->type[i]);
+  // and the smallest of each kind an insertion fix will add
+  for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+    if (!avec->shape(c.ishape).is_ellipsoid()) consider(c.ishape, c.scale, c.mass, c.type);
   double all[2];
   MPI_Allreduce(tc, all, 2, MPI_DOUBLE, MPI_MIN, world);
   if (all[0] >= 1e300 || comm->me != 0) return;
