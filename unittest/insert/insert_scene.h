@@ -3,6 +3,7 @@
 #ifndef POLYDEM_TEST_INSERT_SCENE_H
 #define POLYDEM_TEST_INSERT_SCENE_H
 
+#include "polydem_allgather.h"
 #include "polydem_lmp.h"
 #include "wall_meshes.h"
 
@@ -82,15 +83,8 @@ inline std::vector<double> gather_state(Lmp &l, MPI_Comm comm)
     mine.insert(mine.end(), kv.second.v, kv.second.v + 3);
   }
   const int rec = 13;
-  int nprocs, n = (int) mine.size();
-  MPI_Comm_size(comm, &nprocs);
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                 comm);
+  const std::vector<double> all = polydem_test::allgather(mine, comm);
+  const int total = (int) all.size();
   std::vector<std::vector<double>> recs;
   for (int i = 0; i + rec <= total; i += rec) recs.emplace_back(all.begin() + i, all.begin() + i + rec);
   std::sort(recs.begin(), recs.end());

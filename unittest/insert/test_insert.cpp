@@ -5,6 +5,7 @@
 // and bad input.
 
 #include "insert_scene.h"
+#include "insert_stats.h"
 
 #include "atom_vec_polyhedron.h"
 #include "domain.h"
@@ -141,17 +142,6 @@ double fvec(Lmp &l, const std::string &fix, int i)
   return f->compute_vector(i);
 }
 
-double ks(std::vector<double> x, const std::function<double(double)> &F)
-{
-  std::sort(x.begin(), x.end());
-  const double n = (double) x.size();
-  double d = 0.0;
-  for (size_t i = 0; i < x.size(); i++) {
-    const double f = F(x[i]);
-    d = std::max(d, std::max(f - i / n, (i + 1) / n - f));
-  }
-  return d;
-}
 
 std::vector<std::string> mixed_box(double side = 0.06)
 {

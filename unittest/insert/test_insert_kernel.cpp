@@ -7,6 +7,7 @@
 #include "polydem_insert.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
+#include "insert_stats.h"
 
 #include <gtest/gtest.h>
 
@@ -17,23 +18,11 @@
 #include <vector>
 
 using namespace polydem;
+using insert_test::ks;
+using insert_test::ks_crit;
 
 namespace {
 
-// Kolmogorov-Smirnov statistic of the sample against the CDF F
-double ks(std::vector<double> x, const std::function<double(double)> &F)
-{
-  std::sort(x.begin(), x.end());
-  const double n = (double) x.size();
-  double d = 0.0;
-  for (size_t i = 0; i < x.size(); i++) {
-    const double f = F(x[i]);
-    d = std::max(d, std::max(f - i / n, (i + 1) / n - f));
-  }
-  return d;
-}
-// critical value of D at significance 1e-3 (asymptotic: sqrt(-ln(a/2)/2))
-double ks_crit(size_t n) { return 1.9495 / std::sqrt((double) n); }
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
 
