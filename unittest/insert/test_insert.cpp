@@ -232,6 +232,82 @@ TEST(Insert, PourIntoMeshNeverOverlapsParticlesOrWalls)
   EXPECT_EQ(outside, 0);
 }
 
+// Acceptance 1 with a mesh at full count: 5,000 polyhedra inserted at a
+// rate into the whole STL container (contacts and walls on), each apart from
+// every particle and every vertex inside the walls at the step it appears
+TEST(Insert, DenseRateFillOfAMeshContainer)
+{
+  Lmp l;
+  const std::string stl = container_file();
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.021 0.021 -0.021 0.021 -0.001 0.07",
+          "create_box 1 box", "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
+          "polyhedron_shape c " + potentials() + "/catalyst_cylinder.shape",
+          "polyhedron_shape q " + potentials() + "/cube.shape",
+          "region feed block -0.0205 0.0205 -0.0205 0.0205 -0.0005 0.06",
+          "fix ins all insert/polyhedron 5000 31 region feed per 1250 every 100 density 2500 "
+          "shape d 0.4 scale uniform 0.0006 0.0009 shape c 0.3 scale 0.3 shape q 0.3 scale 0.0014",
+          "pair_style polyhedron", "pair_coeff * * 1.0e7 0.3 0.5 0.5", "neighbor 0.0005 bin",
+          "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1",
+          "fix w all wall/mesh " + stl, "timestep 2e-6"});
+  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+  long tag0 = 0;
+  int bad = 0, outside = 0;
+  for (int e = 0; e < 4; e++) {
+    l.cmd(e == 0 ? "run 0" : "run 100");
+    bad += overlaps(l, tag0);
+    for (const auto &p : particles(l)) {
+      if (p.tag <= tag0) continue;
+      for (const auto &y : surface_points(avec->shape(p.shape), p))
+        outside += !(y.x > -0.02 && y.x < 0.02 && y.y > -0.02 && y.y < 0.02 && y.z > 0.0);
+    }
+    tag0 = (long) l.lmp->atom->natoms;
+  }
+  EXPECT_EQ(l.lmp->atom->natoms, 5000);
+  EXPECT_EQ(bad, 0);
+  EXPECT_EQ(outside, 0);
+}
+
+// A moving region: every particle appears inside the region where it is at
+// the step of its insertion (a block sliding along x, and a rotating one)
+TEST(Insert, MovingRegionsAreFollowed)
+{
+  for (int rot = 0; rot < 2; rot++) {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds({"variable dx equal 0.3*time", "variable th equal 20*time",
+            rot ? "region feed block 0.02 0.04 0.025 0.035 0.01 0.05 rotate v_th 0.03 0.03 0.03 0 0 1 "
+                  "units box"
+                : "region feed block 0.0 0.01 0.0 0.06 0.01 0.05 move v_dx NULL NULL units box",
+            "fix ins all insert/polyhedron 0 5 region feed per 20 every 100 density 1000 "
+            "mass/total 1.0 shape d 1 scale 0.0008",
+            "fix nve all nve/polyhedron", "timestep 1e-4"});
+    auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+    long tag0 = 0;
+    int outside = 0, n = 0;
+    for (int e = 0; e < 6; e++) {
+      l.cmd(e == 0 ? "run 0" : "run 100");
+      const double t = e * 100 * 1e-4;
+      const double c = std::cos(20 * t), sn = std::sin(20 * t);    // theta in radians
+      for (const auto &p : particles(l)) {
+        if (p.tag <= tag0) continue;
+        n++;
+        for (const auto &y : surface_points(avec->shape(p.shape), p)) {
+          if (rot) {    // back into the region's own frame: rotate by -theta about (0.03, 0.03)
+            const double u = y.x - 0.03, v = y.y - 0.03;
+            const double xr = 0.03 + c * u + sn * v, yr = 0.03 - sn * u + c * v;
+            outside += !(xr > 0.02 && xr < 0.04 && yr > 0.025 && yr < 0.035);
+          } else
+            outside += !(y.x > 0.3 * t && y.x < 0.01 + 0.3 * t);
+        }
+      }
+      tag0 = (long) l.lmp->atom->natoms;
+    }
+    EXPECT_EQ(n, 120) << "rotate " << rot;
+    EXPECT_EQ(outside, 0) << "rotate " << rot;
+  }
+}
+
 // Acceptance 2: exact counts per insertion (per), counts of a number rate,
 // and a mass rate within 1 %.
 TEST(Insert, ScheduleCountsAndMassFlow)
