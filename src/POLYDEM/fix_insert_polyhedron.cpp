@@ -416,7 +416,7 @@ void FixInsertPolyhedron::init()
       error->all(FLERR, "{}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
                  "polyhedra only", me, k.id);
     for (auto w : walls)
-      if (w->groupbit & groupbit)
+      if (w->groupbit & (1 | groupbit))    // inserted atoms join group-ID and all
         error->all(FLERR, "{}: shape '{}' is an ellipsoid, but fix wall/mesh '{}' acts on "
                    "group '{}' and takes polyhedra only", me, k.id, w->id, group->names[igroup]);
   }
@@ -426,7 +426,6 @@ void FixInsertPolyhedron::init()
         error->all(FLERR, "{}: shape '{}' is a polyhedron, but pair_style ellipsoid takes "
                    "ellipsoids only", me, k.id);
 
-  region->init();
   region->prematch();
   region_volume = estimate_region_volume();
   if (!(region_volume > 0.0))

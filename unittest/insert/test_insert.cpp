@@ -25,6 +25,7 @@
 
 using namespace insert_test;
 using LAMMPS_NS::AtomVecPolyhedron;
+using insert_test::ks_crit;
 
 namespace {
 
@@ -403,6 +404,41 @@ TEST(Insert, FractionsScalesAndOrientationsFollowTheRequest)
     const double crit = 1.9495;
     EXPECT_LT(ks(sd, [](double s) { return (s - 0.0005) / 0.0002; }) * std::sqrt(sd.size()), crit);
     EXPECT_LT(ks(cz, [](double c) { return 0.5 * (c + 1.0); }) * std::sqrt(cz.size()), crit);
+  }
+}
+
+// orient fixed: every particle as written in its file, turned by theta about
+// the axis; orient axis: turned by a random angle about it, so the file's z
+// axis (the pellet's axis) stays along the lab axis and the angle is uniform
+TEST(Insert, FixedAndAxisOrientations)
+{
+  for (int axis = 0; axis < 2; axis++) {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmd(std::string("fix ins all insert/polyhedron 400 3 region box mode pack density 1000 "
+                      "all_in no shape c 1 scale 0.5 orient ") +
+          (axis ? "axis 1 0 0" : "fixed 1 0 0 30"));
+    l.cmd("run 0");
+    auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+    const auto q0 = avec->shape(1).input_orientation();    // file frame -> principal frame
+    std::vector<double> ang;
+    for (const auto &p : particles(l)) {
+      // rotation taking the file's frame to the lab: q q0^-1
+      const auto r = polydem::qmul(p.q, polydem::qconj(q0));
+      const auto R = polydem::quat_to_mat(r);
+      if (!axis) {
+        const double c = std::cos(M_PI / 12), sn = std::sin(M_PI / 12);    // half of 30 deg
+        ASSERT_NEAR(std::fabs(r.w), c, 1e-12);
+        ASSERT_NEAR(std::fabs(r.x), sn, 1e-12);
+      } else {
+        ASSERT_NEAR(R.m[0][0], 1.0, 1e-12);    // the lab x axis is kept
+        ang.push_back(std::atan2(R.m[2][1], R.m[1][1]));
+      }
+    }
+    if (axis) {
+      EXPECT_EQ(ang.size(), 400u);
+      EXPECT_LT(ks(ang, [](double a) { return (a + M_PI) / (2 * M_PI); }), ks_crit(ang.size()));
+    }
   }
 }
 
