@@ -17,6 +17,7 @@
 #include "math_const.h"
 #include "modify.h"
 #include "pair.h"
+#include "polydem_parse.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
 #include "region.h"
@@ -90,11 +91,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   double density = 0.0;
   bool have_rate = false;
 
-  auto num = [&](int i) {
-    const double v = utils::numeric(FLERR, arg[i], false, lmp);
-    if (!std::isfinite(v)) error->all(FLERR, "{}: '{}' is not a finite number", me, arg[i]);
-    return v;
-  };
+  auto num = [&](int i) { return polydem_parse::number(FLERR, arg[i], lmp, me); };
   int iarg = 5;
   while (iarg < narg) {
     const std::string kw = arg[iarg];
@@ -303,8 +300,8 @@ void FixInsertPolyhedron::parse_scale(int &iarg, int narg, char **arg, polydem::
     if (iarg + n > narg) error->all(FLERR, "{}: shape '{}': scale {} needs {} value(s)", me, id, what, n);
   };
   auto num = [&](int i) {
-    const double v = utils::numeric(FLERR, arg[i], false, lmp);
-    if (!(v > 0.0) || !std::isfinite(v))
+    const double v = polydem_parse::number(FLERR, arg[i], lmp, me);
+    if (!(v > 0.0))
       error->all(FLERR, "{}: shape '{}': scale values must be finite and > 0, got '{}'", me, id, arg[i]);
     return v;
   };

@@ -13,6 +13,7 @@
 #include "error.h"
 #include "group.h"
 #include "math_const.h"
+#include "polydem_parse.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
 #include "random_park.h"
@@ -104,7 +105,7 @@ void PolyhedronSet::command(int narg, char **arg)
       iarg += 2;
     } else if (kw == "scale") {
       need(1);
-      const double s = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      const double s = polydem_parse::number(FLERR, arg[iarg + 1], lmp, "polyhedron_set");
       if (!(s > 0.0) || !std::isfinite(s))
         error->all(FLERR, "polyhedron_set: scale must be > 0, got '{}'", arg[iarg + 1]);
       for (int i = 0; i < nlocal; i++)
@@ -112,7 +113,7 @@ void PolyhedronSet::command(int narg, char **arg)
       iarg += 2;
     } else if (kw == "density" || kw == "mass") {
       need(1);
-      const double val = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      const double val = polydem_parse::number(FLERR, arg[iarg + 1], lmp, "polyhedron_set");
       if (!(val > 0.0) || !std::isfinite(val))
         error->all(FLERR, "polyhedron_set: {} must be > 0, got '{}'", kw, arg[iarg + 1]);
       for (int i = 0; i < nlocal; i++)
@@ -127,8 +128,8 @@ void PolyhedronSet::command(int narg, char **arg)
     } else if (kw == "quat") {
       need(4);
       double a[3];
-      for (int k = 0; k < 3; k++) a[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
-      const double theta = utils::numeric(FLERR, arg[iarg + 4], false, lmp) * MY_PI / 180.0;
+      for (int k = 0; k < 3; k++) a[k] = polydem_parse::number(FLERR, arg[iarg + 1 + k], lmp, "polyhedron_set");
+      const double theta = polydem_parse::number(FLERR, arg[iarg + 4], lmp, "polyhedron_set") * MY_PI / 180.0;
       const double n = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
       if (!(n > 0.0) || !std::isfinite(n) || !std::isfinite(theta))
         error->all(FLERR, "polyhedron_set: quat needs a finite non-zero axis and angle");
@@ -162,7 +163,7 @@ void PolyhedronSet::command(int narg, char **arg)
     } else if (kw == "angmom" || kw == "omega") {
       need(3);
       double w[3];
-      for (int k = 0; k < 3; k++) w[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+      for (int k = 0; k < 3; k++) w[k] = polydem_parse::number(FLERR, arg[iarg + 1 + k], lmp, "polyhedron_set");
       for (int i = 0; i < nlocal; i++)
         if (select[i]) {
           if (kw == "angmom") {

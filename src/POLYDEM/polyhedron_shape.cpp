@@ -8,6 +8,7 @@
 #include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "error.h"
+#include "polydem_parse.h"
 #include "polydem_shape_record.h"
 #include "polydem_shape_template.h"
 
@@ -40,7 +41,7 @@ void PolyhedronShape::command(int narg, char **arg)
                  "values", id, narg - 2);
     double ax[3];
     for (int k = 0; k < 3; k++) {
-      ax[k] = utils::numeric(FLERR, arg[2 + k], false, lmp);
+      ax[k] = polydem_parse::number(FLERR, arg[2 + k], lmp, "polyhedron_shape " + id + " ellipsoid");
       if (!(ax[k] > 0.0) || !std::isfinite(ax[k]))
         error->all(FLERR, "polyhedron_shape {} ellipsoid: semi-axis {} must be > 0, got '{}'",
                    id, "abc"[k], arg[2 + k]);

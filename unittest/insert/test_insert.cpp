@@ -527,6 +527,11 @@ TEST(Insert, BadInputIsRefusedClearly)
                   "unknown keyword 'colour'"));
   EXPECT_TRUE(has(err(box, f + "10 0 density 1 region box shape d 1 scale 0.001 per 1"),
                   "seed must be > 0"));
+  // numbers are read in full (LAMMPS's own reader takes "1e" as 1)
+  EXPECT_TRUE(has(err(box, f + "10 1 density 1e region box shape d 1 scale 0.001 per 1"),
+                  "'1e' is not a finite number"));
+  EXPECT_TRUE(has(err(box, "polyhedron_shape bad ellipsoid 1e 1 1"), "'1e' is not a finite number"));
+  EXPECT_TRUE(has(err(box, "polyhedron_shape bad ellipsoid 1.2.3 1 1"), "'1.2.3' is not a finite number"));
   // run-time checks: a missing or zero-volume region, an ellipsoid where
   // only polyhedra are allowed, a fraction the region cannot take
   {
