@@ -771,6 +771,20 @@ void FixInsertPolyhedron::voids_setup(const double *lo, const double *hi, double
         for (int m = 0; m < 8 && !in; m++)
           in = region->match(vlo_[0] + (i + (m & 1)) * vh, vlo_[1] + (j + ((m >> 1) & 1)) * vh,
                              vlo_[2] + (k + ((m >> 2) & 1)) * vh);
+        // with all_in, a candidate whose inscribed ball crosses the region's
+        // surface has a vertex outside (a convex region): a cell whose points
+        // all lie within vrin of the surface is dead too
+        if (in && allin) {
+          const double hd = 0.5 * sqrt(3.0) * vh;
+          const double cx = vlo_[0] + (i + 0.5) * vh, cy = vlo_[1] + (j + 0.5) * vh,
+                       cz = vlo_[2] + (k + 0.5) * vh;
+          if (region->match(cx, cy, cz)) {
+            const int nc = region->surface(cx, cy, cz, vrin);
+            double dmin = 1e300;
+            for (int m = 0; m < nc; m++) dmin = std::min(dmin, region->contact[m].r);
+            if (dmin + hd < vrin) in = false;
+          }
+        }
         if (in) valive.push_back(c);
         else vdead[c] = 1;
       }
