@@ -9,6 +9,7 @@
 
 #include "atom_vec_polyhedron.h"
 #include "domain.h"
+#include "compute.h"
 #include "fix.h"
 #include "modify.h"
 #include "polydem_ellipsoid.h"
@@ -250,12 +251,18 @@ TEST(Insert, DenseRateFillOfAMeshContainer)
           "shape d 0.4 scale uniform 0.0006 0.0009 shape c 0.3 scale 0.3 shape q 0.3 scale 0.0014",
           "pair_style polyhedron", "pair_coeff * * 1.0e7 0.3 0.5 0.5", "neighbor 0.0005 bin",
           "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1",
-          "fix w all wall/mesh " + stl, "timestep 2e-6"});
+          "fix w all wall/mesh " + stl, "timestep 2e-6", "compute cc all contact/polyhedron",
+          "thermo_style custom step atoms c_cc[1] f_w[7]", "thermo 100"});
   auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
   long tag0 = 0;
   int bad = 0, outside = 0;
   for (int e = 0; e < 4; e++) {
     l.cmd(e == 0 ? "run 0" : "run 100");
+    if (e == 0) {    // the first 1,250: no contact with each other or the mesh (contact computes)
+      auto *cc = l.lmp->modify->compute[l.lmp->modify->find_compute("cc")];
+      EXPECT_EQ(cc->vector[0], 0.0);    // computed for the thermo output of step 0
+      EXPECT_EQ(fvec(l, "w", 6), 0.0);
+    }
     bad += overlaps(l, tag0);
     for (const auto &p : particles(l)) {
       if (p.tag <= tag0) continue;
