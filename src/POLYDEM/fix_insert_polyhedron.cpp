@@ -43,10 +43,7 @@ struct RegionMotion : public Region {
 };
 
 constexpr int REGION_TRIES = 1000;    // position draws per attempt before giving up
-constexpr int MAXCELLS = 1 << 22;     // bins of the candidate grid
 constexpr int RESTART_VERSION = 1;
-constexpr int VOID_LEVELS = 2;    // deepest split of a cell check (4 x 4 x 4)
-constexpr int VOID_FAILS = 8;    // failed draws in a live cell before it is checked again
 
 // radical-inverse (van der Corput) of i in base b: the Halton sequence
 double halton(unsigned i, unsigned b)
@@ -71,7 +68,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     attempts(-1), misses(10), orientstyle(ORIENT_RANDOM), otheta(0.0), itype(1), allin(1), gap(0.0), seed(0),
     ninserted(0), nfailed(0), nattempts(0), nevents(0), nstart(0), next_event(0),
     massinserted(0.0), volinserted(0.0), packdone(0), nfailed_warned(0), region_volume(0.0),
-    gh(0.0), reach_max(0.0), rmax_insert(0.0)
+    rmax_insert(0.0)
 {
   const std::string me = "fix insert/polyhedron";
   if (narg < 5) error->all(FLERR, "{}: needs N and seed (fix ID group insert/polyhedron N seed ...)", me);
@@ -553,8 +550,10 @@ bool FixInsertPolyhedron::region_contains(const polydem::InsertBody<double> &b)
    every rank. vol_in_region: their volume with the centroid in the region
 ------------------------------------------------------------------------- */
 
-void FixInsertPolyhedron::gather(const double *lo, const double *hi, double rcand,
-                                 double &vol_in_region)
+std::vector<polydem::InsertBody<double>> FixInsertPolyhedron::gather(const double *lo,
+                                                                     const double *hi,
+                                                                     double rcand,
+                                                                     double &vol_in_region)
 {
   // per row: tag, image code, shape, scale, x (3), q (4)
   constexpr int W = 11;
@@ -600,68 +599,20 @@ void FixInsertPolyhedron::gather(const double *lo, const double *hi, double rcan
     const double *ra = &all[(size_t) W * a], *rb = &all[(size_t) W * b];
     return ra[0] != rb[0] ? ra[0] < rb[0] : ra[1] < rb[1];
   });
-  entries.clear();
+  std::vector<polydem::InsertBody<double>> bodies;
   vol_in_region = 0.0;
   for (int j = 0; j < n; j++) {
     const double *r = &all[(size_t) W * order[j]];
     const int ishape = (int) r[2];
     const auto q = polydem::make_quat(r[7], r[8], r[9], r[10]);
-    Entry e;
-    e.b = body_of(ishape, r[3], r + 4, q);
-    entries.push_back(e);
+    bodies.push_back(body_of(ishape, r[3], r + 4, q));
     if (r[1] == 13.0 && region->match(r[4], r[5], r[6]))
       vol_in_region += avec->shape(ishape).volume() * r[3] * r[3] * r[3];
   }
+  return bodies;
 }
 
-/* ----------------------------------------------------------------------
-   candidate grid over the region's box grown by the largest reach; bins of
-   edge >= reach, so a candidate's neighbours lie in the 27 bins around it
-------------------------------------------------------------------------- */
-
-void FixInsertPolyhedron::grid_setup(const double *lo, const double *hi, double rcand)
-{
-  double rmax = 0.0;
-  for (const auto &e : entries) rmax = std::max(rmax, e.b.radius);
-  reach_max = rcand + std::max(rmax, rcand) + gap;
-  gh = reach_max;
-  for (int k = 0; k < 3; k++) {
-    glo[k] = lo[k] - reach_max;
-    ghi[k] = hi[k] + reach_max;
-  }
-  for (int pass = 0; pass < 64; pass++) {
-    double ncell = 1.0;
-    for (int k = 0; k < 3; k++) ncell *= std::max(1.0, ceil((ghi[k] - glo[k]) / gh));
-    if (ncell <= MAXCELLS) break;
-    gh *= 1.25;
-  }
-  for (int k = 0; k < 3; k++) gn[k] = std::max(1, (int) ceil((ghi[k] - glo[k]) / gh));
-  cell_head.assign((size_t) gn[0] * gn[1] * gn[2], -1);
-  cell_next.clear();
-  const int n = (int) entries.size();
-  for (int i = 0; i < n; i++) link(i);
-}
-
-int FixInsertPolyhedron::cell_of(const polydem::Vec3<double> &x, int *c) const
-{
-  for (int k = 0; k < 3; k++) {
-    const double u = (x[k] - glo[k]) / gh;
-    c[k] = u > 0.0 ? (u < gn[k] ? (int) u : gn[k] - 1) : 0;    // also NaN -> 0
-    if (c[k] >= gn[k]) c[k] = gn[k] - 1;
-  }
-  return (c[2] * gn[1] + c[1]) * gn[0] + c[0];
-}
-
-void FixInsertPolyhedron::link(int i)
-{
-  int c[3];
-  const int cell = cell_of(entries[i].b.x, c);
-  if ((int) cell_next.size() <= i) cell_next.resize(i + 1);
-  cell_next[i] = cell_head[cell];
-  cell_head[cell] = i;
-}
-
-// add an accepted candidate, and its periodic images that reach the grid
+// add an accepted candidate to the grid, with its periodic images that reach it
 void FixInsertPolyhedron::grid_add(const polydem::InsertBody<double> &b)
 {
   const double *prd = domain->prd;
@@ -669,39 +620,11 @@ void FixInsertPolyhedron::grid_add(const polydem::InsertBody<double> &b)
   for (int ix = -per[0]; ix <= per[0]; ix++)
     for (int iy = -per[1]; iy <= per[1]; iy++)
       for (int iz = -per[2]; iz <= per[2]; iz++) {
-        Entry e;
-        e.b = b;
-        e.b.x = b.x + polydem::make_vec3(ix * prd[0], iy * prd[1], iz * prd[2]);
-        bool in = true;
-        for (int k = 0; k < 3; k++) in = in && e.b.x[k] > glo[k] && e.b.x[k] < ghi[k];
-        if (!in && (ix || iy || iz)) continue;
-        entries.push_back(e);
-        link((int) entries.size() - 1);
+        polydem::InsertBody<double> e = b;
+        e.x = b.x + polydem::make_vec3(ix * prd[0], iy * prd[1], iz * prd[2]);
+        if ((ix || iy || iz) && !grid.contains(e.x)) continue;
+        grid.add(e);
       }
-}
-
-bool FixInsertPolyhedron::apart_from_entries(const polydem::InsertBody<double> &b)
-{
-  // cheap tests on every neighbour first (bounding and inscribed balls),
-  // then the exact test, nearest first (the likeliest overlap)
-  int c[3];
-  cell_of(b.x, c);
-  near.clear();
-  for (int k = std::max(0, c[2] - 1); k <= std::min(gn[2] - 1, c[2] + 1); k++)
-    for (int j = std::max(0, c[1] - 1); j <= std::min(gn[1] - 1, c[1] + 1); j++)
-      for (int i = std::max(0, c[0] - 1); i <= std::min(gn[0] - 1, c[0] + 1); i++)
-        for (int e = cell_head[(k * gn[1] + j) * gn[0] + i]; e >= 0; e = cell_next[e]) {
-          const auto &o = entries[e].b;
-          const double dd = polydem::norm2(b.x - o.x);
-          const double far = b.radius + o.radius + gap, in = b.inradius + o.inradius;
-          if (dd > far * far) continue;
-          if (dd < in * in) return false;
-          near.emplace_back(dd, e);
-        }
-  std::sort(near.begin(), near.end());
-  for (const auto &n : near)
-    if (!polydem::bodies_apart(b, entries[n.second].b, gap)) return false;
-  return true;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -732,180 +655,6 @@ bool FixInsertPolyhedron::sample_in_region(double *x)
 }
 
 /* ----------------------------------------------------------------------
-   void cells (mode pack): the region's box in cells of edge rin/2, rin the
-   smallest inscribed radius of the candidates. A cell is dead once each of
-   its points lies within rin + rin_j of a particle j's centroid: no
-   candidate centred there can be apart from j (their inscribed balls would
-   overlap). Drawing a live cell uniformly, then a point in it, is uniform
-   over the live cells, which hold every place a candidate can still take,
-   so the law of the random sequential addition is unchanged while its
-   draws go to the remaining voids (what makes high fractions reachable).
-------------------------------------------------------------------------- */
-
-void FixInsertPolyhedron::voids_setup(const double *lo, const double *hi, double rin)
-{
-  vrin = rin;
-  vh = 0.25 * rin;
-  for (int pass = 0; pass < 64; pass++) {
-    double n = 1.0;
-    for (int k = 0; k < 3; k++) n *= std::max(1.0, ceil((hi[k] - lo[k]) / vh));
-    if (n <= (double) (1 << 24)) break;
-    vh *= 1.25;
-  }
-  for (int k = 0; k < 3; k++) {
-    vlo_[k] = lo[k];
-    vn[k] = std::max(1, (int) ceil((hi[k] - lo[k]) / vh));
-  }
-  const size_t ncell = (size_t) vn[0] * vn[1] * vn[2];
-  vdead.assign(ncell, 0);
-  vfail.assign(ncell, 0);
-  vchecks.assign(ncell, 0);
-  valive.clear();
-  // cells the region touches at their centre or a corner
-  for (int k = 0; k < vn[2]; k++)
-    for (int j = 0; j < vn[1]; j++)
-      for (int i = 0; i < vn[0]; i++) {
-        const int c = (k * vn[1] + j) * vn[0] + i;
-        bool in = region->match(vlo_[0] + (i + 0.5) * vh, vlo_[1] + (j + 0.5) * vh,
-                                vlo_[2] + (k + 0.5) * vh);
-        for (int m = 0; m < 8 && !in; m++)
-          in = region->match(vlo_[0] + (i + (m & 1)) * vh, vlo_[1] + (j + ((m >> 1) & 1)) * vh,
-                             vlo_[2] + (k + ((m >> 2) & 1)) * vh);
-        // with all_in, a candidate whose inscribed ball crosses the region's
-        // surface has a vertex outside (a convex region): a cell whose points
-        // all lie within vrin of the surface is dead too
-        if (in && allin) {
-          const double hd = 0.5 * sqrt(3.0) * vh;
-          const double cx = vlo_[0] + (i + 0.5) * vh, cy = vlo_[1] + (j + 0.5) * vh,
-                       cz = vlo_[2] + (k + 0.5) * vh;
-          if (region->match(cx, cy, cz)) {
-            const int nc = region->surface(cx, cy, cz, vrin);
-            double dmin = 1e300;
-            for (int m = 0; m < nc; m++) dmin = std::min(dmin, region->contact[m].r);
-            if (dmin + hd < vrin) in = false;
-          }
-        }
-        if (in) valive.push_back(c);
-        else vdead[c] = 1;
-      }
-  for (const auto &e : entries) voids_kill(e.b);
-}
-
-void FixInsertPolyhedron::voids_kill(const polydem::InsertBody<double> &b)
-{
-  // the distance to a convex body is a convex function, so its largest
-  // value on a cell is at a corner: the cell is dead if its 8 corners are
-  // within vrin of the body (exact for this one body)
-  const double R = b.radius + vrin, rin = b.inradius + vrin;
-  int clo[3], chi[3], m[3];
-  for (int k = 0; k < 3; k++) {
-    clo[k] = std::max(0, (int) floor((b.x[k] - R - vlo_[k]) / vh));
-    chi[k] = std::min(vn[k] - 1, (int) floor((b.x[k] + R - vlo_[k]) / vh));
-    if (chi[k] < clo[k]) return;
-    m[k] = chi[k] - clo[k] + 2;    // corners per direction
-  }
-  vcorner.assign((size_t) m[0] * m[1] * m[2], 0);
-  for (int k = 0; k < m[2]; k++)
-    for (int j = 0; j < m[1]; j++)
-      for (int i = 0; i < m[0]; i++) {
-        const auto p = polydem::make_vec3(vlo_[0] + (clo[0] + i) * vh, vlo_[1] + (clo[1] + j) * vh,
-                                          vlo_[2] + (clo[2] + k) * vh);
-        const double d2 = polydem::norm2(p - b.x);
-        vcorner[((size_t) k * m[1] + j) * m[0] + i] =
-            d2 <= rin * rin || (d2 <= R * R && polydem::point_within(b, p, vrin));
-      }
-  for (int k = clo[2]; k <= chi[2]; k++)
-    for (int j = clo[1]; j <= chi[1]; j++)
-      for (int i = clo[0]; i <= chi[0]; i++) {
-        const int c = (k * vn[1] + j) * vn[0] + i;
-        if (vdead[c]) continue;
-        bool all = true;
-        for (int q = 0; q < 8 && all; q++)
-          all = vcorner[((size_t) (k - clo[2] + ((q >> 2) & 1)) * m[1] + (j - clo[1] + ((q >> 1) & 1))) *
-                            m[0] + (i - clo[0] + (q & 1))];
-        if (all) vdead[c] = 1;
-      }
-}
-
-// A live cell whose draws keep failing may be covered by several bodies
-// together (each of its points within vrin of one of them) though by none
-// alone: split it into 2^L sub-cells per direction (L = 1, 2, 3 at its
-// first, second, third check) and kill it if each sub-cell has its 8
-// corners within vrin of one body (exact, as in voids_kill).
-void FixInsertPolyhedron::voids_refine(int c)
-{
-  if (vchecks[c] >= VOID_LEVELS) return;    // checked to the deepest level: a true void
-  const int level = ++vchecks[c];
-  const int ci = c % vn[0], cj = (c / vn[0]) % vn[1], ck = c / (vn[0] * vn[1]);
-  const auto c0 = polydem::make_vec3(vlo_[0] + ci * vh, vlo_[1] + cj * vh, vlo_[2] + ck * vh);
-  const auto cc = c0 + polydem::make_vec3(0.5 * vh, 0.5 * vh, 0.5 * vh);
-  const double hd = 0.5 * sqrt(3.0) * vh;
-  // the bodies whose zone can reach the cell (at most 64)
-  int g[3];
-  cell_of(cc, g);
-  std::vector<int> bodies;
-  for (int k = std::max(0, g[2] - 1); k <= std::min(gn[2] - 1, g[2] + 1); k++)
-    for (int j = std::max(0, g[1] - 1); j <= std::min(gn[1] - 1, g[1] + 1); j++)
-      for (int i = std::max(0, g[0] - 1); i <= std::min(gn[0] - 1, g[0] + 1); i++)
-        for (int e = cell_head[(k * gn[1] + j) * gn[0] + i]; e >= 0; e = cell_next[e]) {
-          const auto &o = entries[e].b;
-          const double r = o.radius + vrin + hd;
-          if (polydem::norm2(o.x - cc) <= r * r) bodies.push_back(e);
-        }
-  if (bodies.empty() || bodies.size() > 64) return;
-  const int n = 1 << level, m = n + 1;
-  const double h = vh / n;
-  std::vector<uint64_t> cover((size_t) m * m * m, 0);
-  for (int k = 0; k < m; k++)
-    for (int j = 0; j < m; j++)
-      for (int i = 0; i < m; i++) {
-        const auto p = c0 + polydem::make_vec3(i * h, j * h, k * h);
-        uint64_t bits = 0;
-        for (size_t b = 0; b < bodies.size(); b++) {
-          const auto &o = entries[bodies[b]].b;
-          const double d2 = polydem::norm2(p - o.x);
-          const double rin = o.inradius + vrin, R = o.radius + vrin;
-          if (d2 <= rin * rin || (d2 <= R * R && polydem::point_within(o, p, vrin)))
-            bits |= (uint64_t) 1 << b;
-        }
-        cover[((size_t) k * m + j) * m + i] = bits;
-      }
-  for (int k = 0; k < n; k++)
-    for (int j = 0; j < n; j++)
-      for (int i = 0; i < n; i++) {
-        uint64_t all = ~(uint64_t) 0;
-        for (int q = 0; q < 8 && all; q++)
-          all &= cover[((size_t) (k + ((q >> 2) & 1)) * m + (j + ((q >> 1) & 1))) * m + (i + (q & 1))];
-        if (!all) return;    // a sub-cell may hold a place
-      }
-  vdead[c] = 1;
-}
-
-// a point uniform over the live cells that lies in the region; false once
-// no cell is left (saturated) or after REGION_TRIES points outside it
-bool FixInsertPolyhedron::sample_in_voids(double *x)
-{
-  for (int t = 0; t < REGION_TRIES;) {
-    if (valive.empty()) return false;
-    const size_t idx = std::min(valive.size() - 1, (size_t) (rng.uniform() * valive.size()));
-    const int c = valive[idx];
-    if (vdead[c]) {    // found dead: drop it (no draw of a point)
-      valive[idx] = valive.back();
-      valive.pop_back();
-      continue;
-    }
-    const int i = c % vn[0], j = (c / vn[0]) % vn[1], k = c / (vn[0] * vn[1]);
-    vlast = c;
-    x[0] = vlo_[0] + (i + rng.uniform()) * vh;
-    x[1] = vlo_[1] + (j + rng.uniform()) * vh;
-    x[2] = vlo_[2] + (k + rng.uniform()) * vh;
-    if (region->match(x[0], x[1], x[2])) return true;
-    t++;
-  }
-  return false;
-}
-
-/* ----------------------------------------------------------------------
    one insertion: particles are drawn (kind, scale) and placed one after
    the other, each with up to `attempts` poses, until nmax particles (< 0:
    no limit), the mass mstop or the solid fraction phistop (<= 0: none) is
@@ -931,16 +680,22 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   }
   const double rcand = rmax_insert;
   double vol = 0.0;
-  gather(lo, hi, rcand, vol);
-  grid_setup(lo, hi, rcand);
+  auto bodies = gather(lo, hi, rcand, vol);
+  double rmax = rcand;
+  for (const auto &b : bodies) rmax = std::max(rmax, b.radius);
+  grid.setup(lo, hi, rcand + rmax + gap, std::move(bodies));
+  auto inside = [&](double x, double y, double z) { return region->match(x, y, z) != 0; };
   const bool voids = mode == MODE_PACK;
   if (voids) {
     double rin = 1e300;
-    for (const auto &k : kinds) {
-      const double x0[3] = {0.0, 0.0, 0.0};
-      rin = std::min(rin, body_of(k.ishape, k.scale.min(), x0, polydem::make_quat(1.0, 0.0, 0.0, 0.0)).inradius);
-    }
-    voids_setup(lo, hi, rin);
+    for (const auto &k : kinds) rin = std::min(rin, inradius[k.ishape] * k.scale.min());
+    auto surface = [&](double x, double y, double z, double cut) {
+      const int nc = region->surface(x, y, z, cut);
+      double d = 1e300;
+      for (int m = 0; m < nc; m++) d = std::min(d, region->contact[m].r);
+      return d;
+    };
+    space.setup(lo, hi, rin, allin, inside, surface, grid);
   }
 
   const double *boxlo = domain->boxlo, *boxhi = domain->boxhi;
@@ -966,8 +721,8 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
     polydem::InsertBody<double> b;
     for (int a = 0; a < attempts && !ok; a++) {
       nattempts++;
-      if (voids ? !sample_in_voids(p.x) : !sample_in_region(p.x)) {
-        if (voids && valive.empty()) break;    // saturated
+      if (voids ? !space.sample(rng, inside, p.x) : !sample_in_region(p.x)) {
+        if (voids && space.saturated()) break;
         continue;
       }
       const auto q = draw_orientation(kd.ishape);
@@ -976,11 +731,8 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
       for (int k = 0; k < 3; k++)
         inbox = inbox && (per[k] || (p.x[k] >= boxlo[k] && p.x[k] < boxhi[k]));
       if (!inbox || !region_contains(b)) continue;
-      if (!apart_from_entries(b)) {
-        if (voids && ++vfail[vlast] >= VOID_FAILS) {
-          vfail[vlast] = 0;
-          voids_refine(vlast);
-        }
+      if (!grid.apart(b, gap)) {
+        if (voids) space.failed(grid);
         continue;
       }
       ok = true;
@@ -994,7 +746,7 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
       nfailed++;
       // mode rate: the rest waits for the next insertion; mode pack: stop
       // after `misses` particles in a row found no place, or at saturation
-      if (!voids || ++miss_run >= misses || valive.empty()) {
+      if (!voids || ++miss_run >= misses || space.saturated()) {
         failed = true;
         break;
       }
@@ -1008,7 +760,7 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
     draw_range(wlo, whi, p.w);
     placed.push_back(p);
     grid_add(b);
-    if (voids) voids_kill(b);
+    if (voids) space.kill(b);
     const double v = t.volume() * s * s * s;
     vol += v;
     volinserted += v;

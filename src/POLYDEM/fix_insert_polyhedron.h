@@ -19,7 +19,7 @@ FixStyle(insert/polyhedron,FixInsertPolyhedron);
 
 #include "fix.h"
 
-#include "polydem_insert.h"
+#include "polydem_insert_space.h"
 
 #include <string>
 #include <vector>
@@ -64,9 +64,6 @@ class FixInsertPolyhedron : public Fix {
     polydem::ScaleDist scale;
     double pnum;       // number probability (cumulative over kinds)
   };
-  struct Entry {    // a particle the candidates are tested against
-    polydem::InsertBody<double> b;
-  };
 
   class AtomVecPolyhedron *avec;
   std::vector<Kind> kinds;
@@ -98,11 +95,8 @@ class FixInsertPolyhedron : public Fix {
 
   // per insertion
   double region_volume;
-  std::vector<Entry> entries;
-  std::vector<int> cell_head, cell_next;
-  double glo[3], ghi[3], gh;
-  int gn[3];
-  double reach_max;
+  polydem::InsertGrid grid;      // the particles a candidate is tested against
+  polydem::InsertVoids space;    // the void cells of mode pack
   double rmax_insert;    // largest bounding radius of a candidate
   double mean_mass;      // mean particle mass of the mixture
   std::vector<class FixWallMesh *> walls;
@@ -119,25 +113,10 @@ class FixInsertPolyhedron : public Fix {
   void region_bbox(double *lo, double *hi);
   bool sample_in_region(double *x);
   double slo[3], shi[3];    // box of the region now, within the simulation box
-  // void cells of mode pack
-  double vlo_[3], vh = 0.0, vrin = 0.0;
-  int vn[3];
-  std::vector<char> vdead, vcorner;
-  std::vector<unsigned char> vfail, vchecks;
-  int vlast = 0;
-  void voids_refine(int c);
-  std::vector<int> valive;
-  void voids_setup(const double *lo, const double *hi, double rin);
-  void voids_kill(const polydem::InsertBody<double> &b);
-  bool sample_in_voids(double *x);
   bool region_contains(const polydem::InsertBody<double> &b);
-  void gather(const double *lo, const double *hi, double rcand, double &vol_in_region);
-  void grid_setup(const double *lo, const double *hi, double rcand);
-  int cell_of(const polydem::Vec3<double> &x, int *c) const;
-  void link(int i);
+  std::vector<polydem::InsertBody<double>> gather(const double *lo, const double *hi,
+                                                  double rcand, double &vol_in_region);
   void grid_add(const polydem::InsertBody<double> &b);
-  bool apart_from_entries(const polydem::InsertBody<double> &b);
-  std::vector<std::pair<double, int>> near;
   std::vector<double> inradius;    // of every template at unit scale
   void refresh_views();
   polydem::InsertBody<double> body_of(int ishape, double s, const double *x,

@@ -5,6 +5,7 @@
 
 #include "polydem_ellipsoid.h"
 #include "polydem_insert.h"
+#include "polydem_insert_space.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
 #include "insert_stats.h"
@@ -258,4 +259,64 @@ TEST(InsertReject, PointWithinIsAnUpperBound)
     nin += w;
   }
   EXPECT_GT(nin, 500);
+}
+
+TEST(InsertVoids, DeadCellsHoldNoPlace)
+{
+  // 150 randomly oriented cubes of half edge 1 in a 12^3 box, candidates of
+  // inscribed radius 0.8: a point in a dead cell is within 0.8 of a cube
+  // (exact distance in the cube's frame), before and after the checks of
+  // cells whose draws failed (the union of several cubes' zones)
+  const std::string dir = POLYDEM_POTENTIALS_DIR;
+  const auto C = PolyShapeTemplate::from_file(dir + "/cube.shape");
+  const auto v = C.view();
+  const double half = std::fabs(C.vertex(0)[0]), s = 1.0 / half;
+  InsertRng r;
+  r.seed(3);
+  std::vector<InsertBody<double>> bodies;
+  std::vector<Quat<double>> qs;
+  for (int i = 0; i < 150; i++) {
+    qs.push_back(random_quat(r));
+    bodies.push_back(body(&v, s, make_vec3(12 * r.uniform(), 12 * r.uniform(), 12 * r.uniform()),
+                          qs.back(), C.radius(), inradius(C)));
+  }
+  auto dist = [&](const Vec3<double> &p) {
+    double d = 1e300;
+    for (const auto &b : bodies) {
+      const Vec3<double> q = matTvec(b.R, p - b.x);
+      const Vec3<double> e = make_vec3(std::max(std::fabs(q.x) - 1, 0.0), std::max(std::fabs(q.y) - 1, 0.0),
+                                       std::max(std::fabs(q.z) - 1, 0.0));
+      d = std::min(d, norm(e));
+    }
+    return d;
+  };
+  const double lo[3] = {0, 0, 0}, hi[3] = {12, 12, 12}, rin = 0.8;
+  InsertGrid grid;
+  grid.setup(lo, hi, 2 * std::sqrt(3.0) + rin, std::vector<InsertBody<double>>(bodies));
+  InsertVoids voids;
+  auto inside = [](double, double, double) { return true; };
+  auto surface = [](double, double, double, double) { return 1e300; };
+  voids.setup(lo, hi, rin, false, inside, surface, grid);
+  std::vector<double> pts(3 * 40000);
+  for (double &x : pts) x = 12 * r.uniform();
+  auto check = [&](int &ndead) {
+    ndead = 0;
+    for (size_t t = 0; t < pts.size() / 3; t++) {
+      const double *x = &pts[3 * t];
+      if (!voids.dead_at(x)) continue;
+      ndead++;
+      ASSERT_LE(dist(make_vec3(x[0], x[1], x[2])), rin * (1 + 1e-12)) << t;
+    }
+  };
+  int dead0 = 0, dead1 = 0;
+  check(dead0);
+  // draws whose point is covered fail: their cells get checked
+  for (int t = 0; t < 1000000; t++) {
+    double x[3];
+    if (!voids.sample(r, inside, x)) break;
+    if (dist(make_vec3(x[0], x[1], x[2])) <= rin) voids.failed(grid);
+  }
+  check(dead1);
+  EXPECT_GT(dead0, 4000);
+  EXPECT_GT(dead1, dead0);    // the checks killed cells no single cube covers
 }
