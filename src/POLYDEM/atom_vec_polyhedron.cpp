@@ -261,6 +261,24 @@ void AtomVecPolyhedron::data_atom_post(int ilocal)
 
 /* ---------------------------------------------------------------------- */
 
+void AtomVecPolyhedron::data_vel(int ilocal, char **values)
+{
+  AtomVec::data_vel(ilocal, values);
+  check_data_vel(error, atom->v[ilocal], angmom[ilocal]);
+}
+
+void AtomVecPolyhedron::check_data_vel(Error *error, const double *v, const double *angmom)
+{
+  for (int k = 0; k < 3; k++)
+    if (!std::isfinite(v[k]) || !std::isfinite(angmom[k]))
+      error->one(FLERR,
+                 "Invalid velocity ({} {} {}) or angular momentum ({} {} {}) in "
+                 "Velocities section of data file: not finite",
+                 v[0], v[1], v[2], angmom[0], angmom[1], angmom[2]);
+}
+
+/* ---------------------------------------------------------------------- */
+
 void AtomVecPolyhedron::pack_data_pre(int ilocal)
 {
   pshape_one = pshape[ilocal];

@@ -35,6 +35,10 @@ class AtomVecPolyhedron : public AtomVec {
   void grow_pointers() override;
   void create_atom_post(int) override;
   void data_atom_post(int) override;
+  void data_vel(int, char **) override;
+  // Velocities section: v and angmom of atom i must be finite (an overflowing
+  // number such as 1e999 parses as inf); shared with atom_style polyhedron/kk
+  static void check_data_vel(class Error *error, const double *v, const double *angmom);
   void pack_data_pre(int) override;
   void pack_data_post(int) override;
   void init() override;

@@ -807,6 +807,7 @@ void AtomVecPolyhedronKokkosBase::data_vel(int ilocal, char **values)
 {
   sync_host_all();
   AtomVec::data_vel(ilocal, values);
+  AtomVecPolyhedron::check_data_vel(error, atom->v[ilocal], atom->angmom[ilocal]);
   modified_host_all();
 }
 

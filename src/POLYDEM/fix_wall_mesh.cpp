@@ -34,10 +34,11 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 ------------------------------------------------------------------------- */
 
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0), wall_mu(-1.0),
-    core(1.0e-4), patch_angle(20.0), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0),
-    hist(nullptr), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
-    near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
+    Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
+    wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), depth_warn(0.25),
+    overlap_warn(0.05), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0), hist(nullptr),
+    reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0), near_builds_all(0),
+    near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
@@ -98,6 +99,25 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       if (yn != "yes" && yn != "no")
         error->all(FLERR, "fix wall/mesh: flip expects yes or no, got '{}'", yn);
       xf.flip = yn == "yes";
+      iarg += 2;
+    } else if (kw == "sides") {
+      need(iarg, 1, "both or front");
+      const std::string v = arg[iarg + 1];
+      if (v != "both" && v != "front")
+        error->all(FLERR, "fix wall/mesh: sides expects both or front, got '{}'", v);
+      twosided = v == "both";
+      iarg += 2;
+    } else if (kw == "depth/warn") {
+      need(iarg, 1, "fraction of the bounding radius");
+      depth_warn = num(iarg + 1);
+      if (!(depth_warn > 0.0 && depth_warn <= 2.0))
+        error->all(FLERR, "fix wall/mesh: depth/warn must be in (0, 2], got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "overlap/warn") {
+      need(iarg, 1, "fraction of the particle volume");
+      overlap_warn = num(iarg + 1);
+      if (!(overlap_warn > 0.0 && overlap_warn <= 1.0))
+        error->all(FLERR, "fix wall/mesh: overlap/warn must be in (0, 1], got '{}'", arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "youngs") {
       need(iarg, 1, "E");
@@ -296,6 +316,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
 
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
   for (int k = 0; k < NCOUNTS; k++) counts_local[k] = counts_reported[k] = 0.0;
+  for (double &c : fresh_local) c = 0.0;
   if (pertri) {
     array_flag = 1;
     size_array_rows = mesh.ntri();
@@ -504,7 +525,10 @@ bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
   pm.s = b.s;
   const polydem::PosedShape<double> a = polydem::make_posed(*b.view, pm);
   polydem::WallPatches<double> P;
-  polydem::wall_patches(a, g, cosmax, *ws, P);
+  polydem::WallSides<double> sides;    // no history: each triangle met on the centroid's side
+  sides.both = twosided;
+  sides.n = 0;
+  polydem::wall_patches(a, g, cosmax, *ws, P, (polydem::WallNear<double> *) nullptr, &sides);
   for (int k = 0; k < P.n; k++)
     if (P.p[k].volume > 0.0 || !(P.p[k].volume == P.p[k].volume)) return false;
   return P.noverflow == 0 && P.ndegenerate == 0;
@@ -551,6 +575,36 @@ polydem::ContactParams<double> FixWallMesh::params(int i, bool stepping) const
 void FixWallMesh::setup(int /*vflag*/)
 {
   compute_forces(false);
+  report_initial_overlaps();
+}
+
+// kernel counts of one particle (wall_warnings)
+void FixWallMesh::add_warnings(const polydem::WallWarnings<double> &w)
+{
+  counts_local[5] += w.behind;
+  counts_local[6] += w.deep;
+  counts_local[7] += w.large;
+  fresh_local[0] += w.fresh;
+  fresh_local[1] = MAX(fresh_local[1], w.fresh_v);
+  fresh_local[2] = MAX(fresh_local[2], w.fresh_d);
+  fresh_local[3] = MAX(fresh_local[3], w.fresh_em);
+}
+
+// Contacts without history at setup: particles created or moved into the
+// mesh (issue 17). Their elastic energy is released in the first steps.
+void FixWallMesh::report_initial_overlaps()
+{
+  double n = 0.0, mx[3];
+  MPI_Allreduce(&fresh_local[0], &n, 1, MPI_DOUBLE, MPI_SUM, world);
+  MPI_Allreduce(&fresh_local[1], mx, 3, MPI_DOUBLE, MPI_MAX, world);
+  if (n > 0.0 && comm->me == 0)
+    error->warning(FLERR,
+                   "fix wall/mesh {}: {:.0f} contact(s) overlap the mesh at the start of "
+                   "the run with no contact history (particles created or moved into it): "
+                   "largest overlap volume {:.3g} of the particle's, depth {:.3g} of its "
+                   "bounding radius; the elastic energy would launch a particle at up to "
+                   "{:.3g} (velocity units)",
+                   id, n, mx[0], mx[1], sqrt(2.0 * mx[2] / force->mvv2e));
 }
 
 void FixWallMesh::initial_integrate(int /*vflag*/)
@@ -582,6 +636,7 @@ void FixWallMesh::tally(const double *x, const polydem::WallForce<double> &wf,
 void FixWallMesh::compute_forces(bool update)
 {
   for (int k = 0; k <= NVEC; k++) local[k] = 0.0;
+  for (double &c : fresh_local) c = 0.0;
   reduced = 0;
   tri_reduced = 0;
   if (pertri) std::fill(tri_local.begin(), tri_local.end(), 0.0);
@@ -627,10 +682,14 @@ void FixWallMesh::compute_forces(bool update)
       nl.skin = near_skin * sv.radius * pose.s;
       pn = &nl;
     }
-    const auto wf = polydem::wall_particle(
-        sv, pose, mp, g, params(i, update), tdtab[atom->type[i]], cosmax,
-        polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
-        polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]), hist[i], update, *ws, P, pn);
+    const auto p = params(i, update);
+    const auto wf = polydem::wall_particle(sv, pose, mp, g, p, tdtab[atom->type[i]], cosmax,
+                                           twosided, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
+                                           polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]),
+                                           hist[i], update, *ws, P, pn);
+    const double s3 = pose.s * pose.s * pose.s;
+    add_warnings(polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, p.meff,
+                                        depth_warn, overlap_warn));
     if (pn) {
       near_builds += nl.built;
       if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) counts_local[3] += 1;
@@ -663,10 +722,22 @@ void FixWallMesh::report_counts()
       "degenerate particle-triangle contacts (NaN; triangle skipped)",
       "facets joined to the closest of the 4 contact patches",
       fmt::format("near-list overflows (more than cache = {} triangles within reach; those "
-                  "particles query the grid every step: same forces, slower)", near_cap),
+                  "particles query the grid every step: same forces, slower)",
+                  near_cap),
       fmt::format("triangle contacts left out of the per-triangle forces (more than {} "
                   "triangles under one particle; the forces on the mesh are complete)",
-                  polydem::WALL_MAX_CAND)};
+                  polydem::WALL_MAX_CAND),
+      twosided ? std::string("contacts whose particle's centroid has crossed the plane of the "
+                             "side it touches (pushed more than halfway through the wall; "
+                             "still pushed back to the side its contact began on)")
+               : std::string("contacts of particles whose centroid is behind the wall (sides "
+                             "front: the wall pushes them through; check the normals, flip, "
+                             "or sides both)"),
+      fmt::format("contacts deeper than depth/warn = {} of the particle's bounding radius",
+                  depth_warn),
+      fmt::format("contacts whose overlap volume exceeds overlap/warn = {} of the particle's "
+                  "volume",
+                  overlap_warn)};
   for (int k = 0; k < NCOUNTS; k++)
     if (all[k] > 0.0 && all[k] >= 2.0 * counts_reported[k]) {
       error->warning(FLERR, "fix wall/mesh {}: {:.0f} {} by step {}", id, all[k], what[k],
@@ -757,6 +828,14 @@ void FixWallMesh::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  // a file from a version with another history layout (7 values per
+  // contact before the two-sided walls) cannot be read as this one
+  if (static_cast<int>(extra[nlocal][m]) != NH + 1) {
+    error->one(FLERR,
+               "fix wall/mesh {}: the restart file keeps {} wall-history values per atom, "
+               "this version {}: define the fix with another ID to start without history",
+               id, static_cast<int>(extra[nlocal][m]) - 1, NH);
+  }
   m++;
   for (int k = 0; k < NH; k++) hist[nlocal][k] = extra[nlocal][m++];
 }

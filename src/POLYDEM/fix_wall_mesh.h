@@ -75,6 +75,8 @@ class FixWallMesh : public Fix {
   polydem::MergeStats merged;
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
   double core, patch_angle, cosmax;
+  int twosided;                       // keyword sides: both (1, default) or front (0)
+  double depth_warn, overlap_warn;    // warn beyond these x bounding radius, x particle volume
   int movestyle;
   double vel[3], origin[3], axis[3], omega;
   double amp[3], period;    // move wiggle
@@ -87,9 +89,15 @@ class FixWallMesh : public Fix {
   double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
   int reduced;
   // kernel failure counts (overflow, degenerate, merged patches), near-list
-  // overflows, triangles left out of the per-triangle record
-  static constexpr int NCOUNTS = 5;
+  // overflows, triangles left out of the per-triangle record; contacts with
+  // the centroid behind the side met, deeper than depth/warn, beyond overlap/warn
+  static constexpr int NCOUNTS = 8;
   double counts_local[NCOUNTS], counts_reported[NCOUNTS];
+  // contacts that begin, this call: count, largest V / V_p, depth / r,
+  // wall energy / mass (at setup: initial overlaps, reported by setup())
+  double fresh_local[4];
+  void add_warnings(const polydem::WallWarnings<double> &w);
+  void report_initial_overlaps();
   class AtomVecPolyhedron *avec;
   std::unique_ptr<polydem::WallWorkspace<double>> ws;
   // near lists (keyword cache): entries per particle, skin / bounding radius;

@@ -24,7 +24,11 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 namespace {
 
 typedef polydem::WallWorkspace<double> WallWorkspace;
-constexpr int NSUM = 15;    // + near-list overflows, builds, unrecorded triangles
+// force (3), torque (3), contacts, triangles, energy, kernel counters (3),
+// near-list overflows, builds, unrecorded triangles, warned contacts (3:
+// behind, deep, large), contacts that begin; then maxima (MAX0..): their
+// V / V_p, depth / r, wall energy / mass
+constexpr int NSUM = 22, MAX0 = 19;
 
 // device copy of a host vector (at least one element)
 template <class V, class S> void upload(V &d, const std::vector<S> &h, const char *name)
@@ -33,7 +37,7 @@ template <class V, class S> void upload(V &d, const std::vector<S> &h, const cha
   auto m = Kokkos::create_mirror_view(d);
   for (size_t k = 0; k < h.size(); k++) m(k) = h[k];
   Kokkos::deep_copy(d, m);
-}    // force (3), torque (3), contacts, triangles, energy, counters (3)
+}
 
 /* ----------------------------------------------------------------------
    one particle per thread: FixWallMesh::compute_forces statement for
@@ -79,8 +83,8 @@ template <class DeviceType> struct WallMeshKernel {
   int pertri;
   polydem::MeshGridView<double> grid;
   polydem::MeshPose<double> mp;
-  double cosmax, core, dt;
-  int update, groupbit, ibase;
+  double cosmax, core, dt, depth_warn, overlap_warn;
+  int update, groupbit, ibase, twosided;
 
   KOKKOS_INLINE_FUNCTION void init(value_type s) const
   {
@@ -88,7 +92,8 @@ template <class DeviceType> struct WallMeshKernel {
   }
   KOKKOS_INLINE_FUNCTION void join(volatile value_type d, const volatile value_type s) const
   {
-    for (int k = 0; k < NSUM; k++) d[k] += s[k];
+    for (int k = 0; k < MAX0; k++) d[k] += s[k];
+    for (int k = MAX0; k < NSUM; k++) d[k] = s[k] > d[k] ? s[k] : d[k];
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int slot, value_type sum) const
@@ -123,8 +128,11 @@ template <class DeviceType> struct WallMeshKernel {
       pn = &nl;
     }
     const auto wf = polydem::wall_particle(
-        sv, pose, mp, grid, p, dtab(t), cosmax, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
+        sv, pose, mp, grid, p, dtab(t), cosmax, twosided,
+        polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
         polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P, pn);
+    const auto w =
+        polydem::wall_warnings(P, wf, V, sv.radius * s, p.meff, depth_warn, overlap_warn);
     if (pertri) {
       TriAdd<DeviceType> add{trif};
       polydem::wall_triangle_forces(ws, P, wf, add);
@@ -154,6 +162,12 @@ template <class DeviceType> struct WallMeshKernel {
     sum[10] += P.ndegenerate;
     sum[11] += P.nmerged;
     sum[14] += P.nunrecorded;
+    sum[15] += w.behind;
+    sum[16] += w.deep;
+    sum[17] += w.large;
+    sum[18] += w.fresh;
+    const double mx[3] = {w.fresh_v, w.fresh_d, w.fresh_em};
+    for (int k = 0; k < 3; k++) sum[MAX0 + k] = mx[k] > sum[MAX0 + k] ? mx[k] : sum[MAX0 + k];
   }
 };
 
@@ -359,6 +373,9 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.dt = update->dt;
   k.update = stepping ? 1 : 0;
   k.groupbit = groupbit;
+  k.twosided = twosided;
+  k.depth_warn = depth_warn;
+  k.overlap_warn = overlap_warn;
 
   double total[NSUM];
   for (int m = 0; m < NSUM; m++) total[m] = 0.0;
@@ -366,7 +383,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
     k.ibase = i0;
     double sum[NSUM];
     Kokkos::parallel_reduce(std::min(nslots, nlocal - i0), k, sum);
-    for (int m = 0; m < NSUM; m++) total[m] += sum[m];
+    for (int m = 0; m < MAX0; m++) total[m] += sum[m];
+    for (int m = MAX0; m < NSUM; m++) total[m] = std::max(total[m], sum[m]);
   }
   atomKK->modified(execution_space, datamask_modify);
   k_hist.template modify<DeviceType>();
@@ -376,6 +394,9 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   for (int m = 0; m < 3; m++) counts_local[m] += total[9 + m];
   counts_local[3] += total[12];
   counts_local[4] += total[14];
+  for (int m = 0; m < 3; m++) counts_local[5 + m] += total[15 + m];
+  fresh_local[0] = total[18];
+  for (int m = 0; m < 3; m++) fresh_local[1 + m] = total[MAX0 + m];
   near_builds += (bigint) total[13];
   if (stepping && neighbor->ago == 0) report_counts();
 }

@@ -19,6 +19,12 @@
 
    Wall material: a half-space of (E_w, nu_w) sized like the particle
    (R_w = R_p), so K = (E_p + E_w)/R_p, K_t likewise; m_eff = m_p.
+
+   Sides (issue 17): the seed's walls act from the front (the side n_w
+   points to). Here both sides act by default: a triangle met from the back
+   is clipped reversed, (t0, t2, t1), so the part of the particle in front
+   of it is the overlap. The side is where the particle's centroid is when
+   the contact begins, and it is kept while the contact lasts (WallSides).
 ------------------------------------------------------------------------- */
 
 #ifndef POLYDEM_WALL_CONTACT_H
@@ -35,7 +41,8 @@
 namespace polydem {
 
 constexpr int WALL_MAX_PATCH = 4;    // contacts per particle and mesh
-constexpr int WALL_HIST = 3 + CONTACT_HIST;    // per patch: normal (3), shear history
+// per patch: normal (3), distance from the centroid to its plane (1), shear history
+constexpr int WALL_HIST = 4 + CONTACT_HIST;
 constexpr int WALL_HIST_SIZE = WALL_MAX_PATCH * WALL_HIST;
 constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle (more: clipped at once)
 
@@ -46,6 +53,7 @@ template <typename T> struct WallPatch {
   Vec3<T> ac;       // area-weighted sum of section centroids
   Vec3<T> vc;       // volume-weighted sum of volume centroids
   T depth;          // deepest particle vertex behind the first facet's plane
+  int behind;       // the particle's centroid is behind a clipped triangle (in its prism)
 };
 
 template <typename T> struct WallPatches {
@@ -62,11 +70,13 @@ struct WallWorkspace {
   ClipWorkspace<T, MF, ME> clip;
   T verts[3 * MAX_TEMPLATE_VERTS];
   T dist[MAX_TEMPLATE_VERTS];    // signed distances to the current plane
-  T pc[4], pbox[6];              // that plane, the box of the part behind it
-  int pvalid, pany;              // cache valid; some vertex behind the plane
+  T pc[4], pbox[6];              // that plane (as stored), the box of the part behind it
+  T po[4];                       // that plane as the particle meets it (pside x pc)
+  int pvalid, pany, pside;       // cache valid; a vertex behind it; side (+1 front, -1 back)
   // candidates of one particle, and the coplanar-group coverage test
   static constexpr int MAXH = 4 * MAX_TEMPLATE_VERTS + 8;
   int cand[WALL_MAX_CAND];
+  signed char cside[WALL_MAX_CAND];    // side each candidate is met on
   unsigned char cflag[WALL_MAX_CAND];
   int ncand;
   // per-triangle record (fix wall/mesh pertriangle yes): triangle, patch,
@@ -110,25 +120,86 @@ constexpr int NEAR_REACH = 8;    // query reach r + NEAR_REACH x skin at a build
 constexpr int NEAR_REBUILD = -1;
 constexpr int NEAR_OVERFLOW = -2;
 
+// Which side of a triangle acts on a particle (two-sided walls). The side
+// is where the centroid is when the contact begins, kept while it lasts:
+// a contact kept from the previous step (normal n_c from the particle into
+// the wall, e_c = n_c . (p_c - x) the distance from the centroid x to its
+// plane through the section centroid p_c) claims a triangle whose plane,
+// met on side s (normal -s n_t into the wall, distance e = s h, h the
+// centroid's height above the front), agrees with it: normals within 45
+// degrees, planes within WALL_SIDE_TOL x the bounding radius (the closest
+// wins). Any other triangle is met on the centroid's side. A particle pushed
+// beyond its centroid is then still pushed back, two parallel walls on
+// either side of a particle are told apart by their planes, and a closed
+// mesh acts alike with either normal convention.
+constexpr double WALL_SIDE_COS = 0.70710678118654752;    // cos 45 degrees
+constexpr double WALL_SIDE_TOL = 0.1;                    // x bounding radius
+
+template <typename T> struct WallSides {
+  int both;                      // 1: two-sided; 0: the front only (sides front)
+  int n;                         // contacts kept from the previous step
+  Vec3<T> nc[WALL_MAX_PATCH];    // their normals (mesh frame)
+  T ec[WALL_MAX_PATCH];          // their plane distances [length]
+};
+
+// +1: front, -1: back, for the plane pl (unit normal, offset) of a triangle,
+// centroid c and bounding radius r (mesh frame); s null: the front
+template <typename T>
+POLYDEM_FN int wall_side(const WallSides<T> *s, const T *pl, const Vec3<T> &c, T r)
+{
+  if (!s || !s->both) return 1;
+  const T h = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
+  int side = h >= T(0) ? 1 : -1;
+  T best = T(WALL_SIDE_TOL) * r;
+  for (int k = 0; k < s->n; ++k) {
+    const T cn = s->nc[k].x * pl[0] + s->nc[k].y * pl[1] + s->nc[k].z * pl[2];
+    const int sk = cn <= -T(WALL_SIDE_COS) ? 1 : (cn >= T(WALL_SIDE_COS) ? -1 : 0);
+    if (!sk) continue;
+    const T d = fabs(T(sk) * h - s->ec[k]);
+    if (d <= best) {
+      best = d;
+      side = sk;
+    }
+  }
+  return side;
+}
+
+// a kept contact whose centroid has crossed its plane (e_c < 0) may claim
+// the back of a triangle the centroid is in front of: the near lists'
+// side bound (wall_prism_gap) assumes there is none
+template <typename T> POLYDEM_FN bool wall_sides_crossed(const WallSides<T> *s)
+{
+  if (!s || !s->both) return false;
+  for (int k = 0; k < s->n; ++k)
+    if (!(s->ec[k] >= T(0))) return true;
+  return false;
+}
+
 template <typename T, int MF, int ME> struct WallAccumulate {
   const PosedShape<T> *a;
   const MeshGridView<T> *g;
   WallWorkspace<T, MF, ME> *ws;
   WallPatches<T> *out;
   T cosmax;    // cos(patch angle)
+  const WallSides<T> *sides;    // null: the front of every triangle
 
   // Exact cheap reject. The part of the particle behind the triangle's plane
   // is the convex hull of the vertices behind it and of the edges' crossing
   // points; separated if it is empty, if the bounding box of its projection
   // on the plane misses the triangle's, or if it lies outside one side of the
   // prism. Distances and box are kept for the next triangle of the plane.
-  POLYDEM_FN bool separated(int t, const Triangle<T> &tri) const
+  // The plane of triangle t, cached: its side (wall_side) and, for the
+  // reject below, the particle's distances to it as met on that side.
+  POLYDEM_FN void plane_of(int t) const
   {
     const ShapeView<T> &sv = *a->view;
-    const T *pl = g->plane + 4 * t;
-    if (!(ws->pvalid && pl[0] == ws->pc[0] && pl[1] == ws->pc[1] && pl[2] == ws->pc[2] &&
-          pl[3] == ws->pc[3])) {
-      for (int k = 0; k < 4; ++k) ws->pc[k] = pl[k];
+    const T *pc = g->plane + 4 * t;
+    if (!(ws->pvalid && pc[0] == ws->pc[0] && pc[1] == ws->pc[1] && pc[2] == ws->pc[2] &&
+          pc[3] == ws->pc[3])) {
+      for (int k = 0; k < 4; ++k) ws->pc[k] = pc[k];
+      ws->pside = wall_side(sides, pc, a->x, posed_radius(*a));
+      for (int k = 0; k < 4; ++k) ws->po[k] = T(ws->pside) * pc[k];
+      const T *pl = ws->po;
       ws->pvalid = 1;
       ws->pany = 0;
       for (int k = 0; k < 3; ++k) {
@@ -159,10 +230,17 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         ws->pbox[3 + k] += margin;
       }
     }
+  }
+
+  // tri: triangle t as met (plane_of(t) first)
+  POLYDEM_FN bool separated(int t, const Triangle<T> &tri) const
+  {
+    const ShapeView<T> &sv = *a->view;
     if (!ws->pany) return true;
     const T *b = g->box + 6 * t;
     for (int k = 0; k < 3; ++k)
       if (b[3 + k] < ws->pbox[k] || b[k] > ws->pbox[3 + k]) return true;
+    const T *pl = ws->po;
     const Vec3<T> nr = make_vec3(pl[0], pl[1], pl[2]);
     for (int e = 0; e < 3; ++e) {
       const Vec3<T> o = tri.v[e], side = cross(tri.v[(e + 1) % 3] - o, nr);    // outward
@@ -195,21 +273,29 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     return make_vec3(ws->verts[3 * i], ws->verts[3 * i + 1], ws->verts[3 * i + 2]);
   }
 
-  POLYDEM_FN Triangle<T> triangle(int t) const
+  // triangle t as met from side (+1 front; -1 back: reversed, (t0, t2, t1))
+  POLYDEM_FN Triangle<T> triangle(int t, int side = 1) const
   {
     Triangle<T> tri;
     const T *q = g->tri + 9 * t;
-    for (int v = 0; v < 3; ++v) tri.v[v] = make_vec3(q[3 * v], q[3 * v + 1], q[3 * v + 2]);
+    for (int v = 0; v < 3; ++v) {
+      const int w = side > 0 ? v : (3 - v) % 3;
+      tri.v[v] = make_vec3(q[3 * w], q[3 * w + 1], q[3 * w + 2]);
+    }
     return tri;
   }
 
   // candidates that survive the reject wait in ws->cand for finish()
   POLYDEM_FN void operator()(int t)
   {
-    const Triangle<T> tri = triangle(t);
+    plane_of(t);
+    const Triangle<T> tri = triangle(t, ws->pside);
     if (separated(t, tri)) return;
-    if (ws->ncand < WALL_MAX_CAND) ws->cand[ws->ncand++] = t;
-    else clip_add(tri, t);
+    if (ws->ncand < WALL_MAX_CAND) {
+      ws->cside[ws->ncand] = (signed char) ws->pside;
+      ws->cand[ws->ncand++] = t;
+    } else
+      clip_add(tri, t);
   }
 
   // Group the candidates by plane. If the coplanar triangles of a group
@@ -225,21 +311,26 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     // do not depend on the order in which the grid or the near list gave them
     for (int c = 1; c < ws->ncand; ++c) {
       const int t = ws->cand[c];
+      const signed char sd = ws->cside[c];
       int k = c;
-      for (; k > 0 && ws->cand[k - 1] > t; --k) ws->cand[k] = ws->cand[k - 1];
+      for (; k > 0 && ws->cand[k - 1] > t; --k) {
+        ws->cand[k] = ws->cand[k - 1];
+        ws->cside[k] = ws->cside[k - 1];
+      }
       ws->cand[k] = t;
+      ws->cside[k] = sd;
     }
     for (int c = 0; c < ws->ncand; ++c) ws->cflag[c] = 0;
     for (int c = 0; c < ws->ncand; ++c) {
       if (ws->cflag[c]) continue;
-      const Triangle<T> tc = triangle(ws->cand[c]);
+      const Triangle<T> tc = triangle(ws->cand[c], ws->cside[c]);
       Vec3<T> n = cross(tc.v[1] - tc.v[0], tc.v[2] - tc.v[0]);
       n = (T(1) / norm(n)) * n;
       const T d = dot(n, tc.v[0]);
       int ng = 0;    // members flagged 2
       for (int k = c; k < ws->ncand; ++k) {
         if (ws->cflag[k]) continue;
-        const Triangle<T> tk = k == c ? tc : triangle(ws->cand[k]);
+        const Triangle<T> tk = k == c ? tc : triangle(ws->cand[k], ws->cside[k]);
         Vec3<T> nk = cross(tk.v[1] - tk.v[0], tk.v[2] - tk.v[0]);
         nk = (T(1) / norm(nk)) * nk;
         const T tol = T(1e-12);
@@ -258,7 +349,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         for (int k = c; k < ws->ncand; ++k)
           if (ws->cflag[k] == 2) {
             ws->cflag[k] = 1;
-            clip_add(triangle(ws->cand[k]), ws->cand[k]);
+            clip_add(triangle(ws->cand[k], ws->cside[k]), ws->cand[k]);
           }
       }
     }
@@ -333,7 +424,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     T cov = T(0);
     for (int c = 0; c < ws->ncand; ++c) {
       if (ws->cflag[c] != 2) continue;
-      const Triangle<T> t = triangle(ws->cand[c]);
+      const Triangle<T> t = triangle(ws->cand[c], ws->cside[c]);
       T tu[3], tv[3];
       for (int k = 0; k < 3; ++k) {
         tu[k] = dot(t.v[k] - o, e1);
@@ -396,6 +487,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         p.nseed = r.normal;
         p.volume = p.area = T(0);
         p.depth = T(0);
+        p.behind = 0;
         for (int i = 0; i < a->view->nverts; ++i) {
           const T d = dot(r.normal, tri.v[0] - wall_vert(i));
           p.depth = d > p.depth ? d : p.depth;
@@ -405,6 +497,14 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         out->nmerged++;    // more facet orientations than patches: join the closest
     }
     WallPatch<T> &p = out->p[k];
+    // centroid behind the triangle as met, inside its prism (a coplanar
+    // group's large triangle covers the part behind, so the centroid too)
+    if (!p.behind && dot(r.normal, tri.v[0] - a->x) > T(0)) {
+      bool inside = true;
+      for (int e = 0; e < 3 && inside; ++e)
+        inside = dot(cross(tri.v[(e + 1) % 3] - tri.v[e], r.normal), a->x - tri.v[e]) <= T(0);
+      p.behind = inside ? 1 : 0;
+    }
     if (ws->record && t >= 0 && ws->nrec >= WALL_MAX_CAND) out->nunrecorded++;
     if (ws->record && t >= 0 && ws->nrec < WALL_MAX_CAND) {
       ws->rtri[ws->nrec] = t;
@@ -422,24 +522,33 @@ template <typename T, int MF, int ME> struct WallAccumulate {
   }
 };
 
-// Certified lower bound of the distance from the particle (posed vertices
-// ws.verts, centre c) to the part of triangle t's prism behind its plane
-// that lies within the sphere (c, reach). The plane alone bounds it when the
+// Certified lower bound of the motion (of any point of the particle: posed
+// vertices ws.verts, centre c, bounding radius r) before triangle t can meet
+// its volume within the sphere (c, reach). One-sided: the distance to the
+// part of the prism behind the plane. The plane alone bounds it when the
 // particle is in front of it; else GJK against the prism truncated at the
-// sphere's deepest point behind the plane.
+// sphere's deepest point behind the plane. Two-sided (both): the same for
+// the side opposite the centroid, as the centroid's side is what acts;
+// the other side can act only once the centroid is within WALL_SIDE_TOL r
+// of the plane (wall_side, while no kept contact has crossed its plane:
+// wall_sides_crossed), so its bound is |h_c| - WALL_SIDE_TOL r.
 template <typename T, int MF, int ME>
 POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace<T, MF, ME> &ws,
-                            int nv, const Vec3<T> &c, T reach, T stop)
+                            int nv, const Vec3<T> &c, T r, T reach, T stop, int both)
 {
-  const T *pl = g.plane + 4 * t;
+  const T *pc = g.plane + 4 * t;
+  const T hc = pc[0] * c.x + pc[1] * c.y + pc[2] * c.z - pc[3];
+  const T sd = both && hc < T(0) ? T(-1) : T(1);
+  const T pl[4] = {sd * pc[0], sd * pc[1], sd * pc[2], sd * pc[3]};
+  const T other = both ? sd * hc - T(WALL_SIDE_TOL) * r : T(1e300);
   T hmin = T(1e300);
   for (int i = 0; i < nv; ++i) {
     const T h = pl[0] * ws.verts[3 * i] + pl[1] * ws.verts[3 * i + 1] +
         pl[2] * ws.verts[3 * i + 2] - pl[3];
     hmin = h < hmin ? h : hmin;
   }
-  if (hmin > T(0)) return hmin;
-  const T depth = reach - (pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3]);
+  if (hmin > T(0)) return hmin < other ? hmin : other;
+  const T depth = reach - sd * hc;
   T B[18];
   const T *q = g.tri + 9 * t;
   for (int v = 0; v < 3; ++v)
@@ -447,7 +556,8 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
       B[3 * v + k] = q[3 * v + k];
       B[9 + 3 * v + k] = q[3 * v + k] - depth * pl[k];
     }
-  return hull_gap_lower_bound(ws.verts, nv, B, 6, T(1e-12) * reach, stop);
+  const T gap = hull_gap_lower_bound(ws.verts, nv, B, 6, T(1e-12) * reach, stop);
+  return gap < other ? gap : other;
 }
 
 // grid visitor of a near-list build. A triangle can become a candidate only
@@ -462,7 +572,7 @@ template <typename T, int MF, int ME> struct WallNearBuild {
   WallNear<T> *near;
   Vec3<T> c;
   T r, reach, skin, valid;
-  int nv, n;
+  int nv, n, both;
   POLYDEM_FN void operator()(int t)
   {
     const T *q = g->tri + 9 * t;
@@ -473,7 +583,7 @@ template <typename T, int MF, int ME> struct WallNearBuild {
       valid = ds < valid ? ds : valid;
       return;
     }
-    T gap = wall_prism_gap(*g, t, *ws, nv, c, reach, valid);
+    T gap = wall_prism_gap(*g, t, *ws, nv, c, r, reach, valid, both);
     if (!(gap == gap)) gap = T(0);    // no bound: always examined
     gap = ds > gap ? ds : gap;
     if (gap > skin) {
@@ -507,7 +617,7 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
                                 WallAccumulate<T, MF, ME> &acc)
 {
   near.built = 0;
-  if (*near.count == NEAR_OVERFLOW) return false;
+  if (*near.count == NEAR_OVERFLOW || wall_sides_crossed(acc.sides)) return false;
   const T r = posed_radius(a);
   if (!(norm2(a.x) < T(1e300)) || !(r > T(0))) return false;
   T amax = fabs(a.x.x) > fabs(a.x.y) ? fabs(a.x.x) : fabs(a.x.y);
@@ -536,6 +646,7 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     b.near = &near;
     b.c = a.x;
     b.nv = a.view->nverts;
+    b.both = acc.sides && acc.sides->both;
     b.r = r;
     b.skin = near.skin;
     b.valid = T(NEAR_REACH) * b.skin;
@@ -566,10 +677,11 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
 
 // Patches of posed particle a (mesh frame) against the mesh; r: bounding
 // radius. near: the particle's near list, or nullptr for the grid query.
+// sides: which side of each triangle acts (null: the front only).
 template <typename T, int MF, int ME>
 POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T cosmax,
                              WallWorkspace<T, MF, ME> &ws, WallPatches<T> &out,
-                             WallNear<T> *near = nullptr)
+                             WallNear<T> *near = nullptr, const WallSides<T> *sides = nullptr)
 {
   out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = out.nunrecorded = 0;
   const ShapeView<T> &sv = *a.view;
@@ -590,6 +702,7 @@ POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T
   acc.ws = &ws;
   acc.out = &out;
   acc.cosmax = cosmax;
+  acc.sides = sides;
   ws.ncand = 0;
   ws.pvalid = 0;
   ws.nrec = 0;
@@ -654,13 +767,15 @@ template <typename T> struct WallForce {
   Vec3<T> f, tau;    // on the particle (torque about its centroid)
   T energy;          // sum of W(V) over patches
   int ncontact;
+  int fresh;                         // bit k: patch k has no kept history (its contact begins)
   Vec3<T> fpatch[WALL_MAX_PATCH];    // force of each patch of P on the particle (lab)
 };
 
 // Forces of all patches on the particle (lab frame) and the update of its
 // tangential history hist[WALL_HIST_SIZE] for this mesh: each patch takes
 // the old slot whose normal is closest within the patch angle (else a fresh
-// spring); unmatched slots are cleared. p: contact parameters (meff = m_p).
+// spring); unmatched slots are cleared. Each slot also keeps its plane's
+// distance from the centroid (WallSides). p: contact parameters (meff = m_p).
 // Iinv: inverse principal moments of the particle, R its rotation.
 template <typename T>
 POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &mp,
@@ -673,6 +788,7 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
   out.f = out.tau = make_vec3(T(0), T(0), T(0));
   out.energy = T(0);
   out.ncontact = 0;
+  out.fresh = 0;
   for (int k = 0; k < WALL_MAX_PATCH; ++k) out.fpatch[k] = make_vec3(T(0), T(0), T(0));
   T newh[WALL_HIST_SIZE];
   for (int i = 0; i < WALL_HIST_SIZE; ++i) newh[i] = T(0);
@@ -706,8 +822,9 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
     for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = T(0);
     if (best >= 0) {
       used[best] = true;
-      for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = hist[WALL_HIST * best + 3 + i];
-    }
+      for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = hist[WALL_HIST * best + 4 + i];
+    } else
+      out.fresh |= 1 << k;
     // contact-point mass and damping ratio of this patch's contact shape
     ContactParams<T> p = p0;
     const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
@@ -725,7 +842,8 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
     h[0] = g.normal.x;
     h[1] = g.normal.y;
     h[2] = g.normal.z;
-    for (int i = 0; i < CONTACT_HIST; ++i) h[3 + i] = shear[i];
+    h[3] = dot(g.normal, g.centroid - x);
+    for (int i = 0; i < CONTACT_HIST; ++i) h[4 + i] = shear[i];
     out.f += cf.F_A;
     out.fpatch[k] = cf.F_A;
     out.tau += cf.tau_A;
@@ -758,28 +876,78 @@ POLYDEM_FN Vec3<T> wall_reaction_torque(const Vec3<T> &x, const WallForce<T> &wf
   return -(wf.tau + cross(x - (mp.o + mp.d), wf.f));
 }
 
+// The sides the contacts kept in hist claim (mesh frame; WallSides)
+template <typename T>
+POLYDEM_FN WallSides<T> wall_kept_sides(const T *hist, const MeshPose<T> &mp, int both)
+{
+  WallSides<T> s;
+  s.both = both;
+  s.n = 0;
+  for (int k = 0; k < WALL_MAX_PATCH && both; ++k) {
+    const T *h = hist + WALL_HIST * k;
+    if (h[0] == T(0) && h[1] == T(0) && h[2] == T(0)) continue;
+    s.nc[s.n] = matTvec(mp.R, make_vec3(h[0], h[1], h[2]));
+    s.ec[s.n++] = h[3];
+  }
+  return s;
+}
+
 // Everything for one particle (lab pose x, q, s; velocity v, spin w):
 // pose into the mesh frame, patches, forces back in the lab frame.
+// both: two-sided wall (else the front of each triangle only).
 template <typename T, int MF, int ME>
-POLYDEM_FN WallForce<T> wall_particle(const ShapeView<T> &sv, const Pose<T> &lab,
-                                      const MeshPose<T> &mp, const MeshGridView<T> &g,
-                                      const ContactParams<T> &p, const WallDamping<T> &damp,
-                                      T cosmax, const Vec3<T> &v, const Vec3<T> &w, T *hist,
-                                      bool update,
-                                      WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P,
-                                      WallNear<T> *near = nullptr)
+POLYDEM_FN WallForce<T>
+wall_particle(const ShapeView<T> &sv, const Pose<T> &lab, const MeshPose<T> &mp,
+              const MeshGridView<T> &g, const ContactParams<T> &p, const WallDamping<T> &damp,
+              T cosmax, int both, const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update,
+              WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P, WallNear<T> *near = nullptr)
 {
   Pose<T> pm;
   pm.x = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
   pm.q = qmul(qconj(mp.q), lab.q);
   pm.s = lab.s;
   const PosedShape<T> a = make_posed(sv, pm);
-  wall_patches(a, g, cosmax, ws, P, near);
+  const WallSides<T> sides = wall_kept_sides(hist, mp, both);
+  wall_patches(a, g, cosmax, ws, P, near, &sides);
   // inverse principal moments: I = rho s^5 I_unit, rho = m / (s^3 V_unit)
   const T rho = p.meff / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
   const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),
                                  T(1) / (rho * s5 * sv.inertia[2]));
   return wall_forces(P, mp, p, damp, Iinv, a.R, cosmax, lab.x, v, w, hist, update);
+}
+
+// What fix wall/mesh warns about, per particle (issue 17): contacts whose
+// particle's centroid is behind the triangle it is met on (a one-sided wall
+// met from behind, or a two-sided one pushed beyond the centroid), deeper
+// than depth_warn x the bounding radius r, or with an overlap volume beyond
+// overlap_warn x the particle's volume Vp; and contacts that begin (no kept
+// history; at setup: particles created or moved into the mesh) with their
+// largest V / Vp, depth / r, and the particle's wall energy per mass.
+template <typename T> struct WallWarnings {
+  int behind, deep, large, fresh;
+  T fresh_v, fresh_d, fresh_em;
+};
+
+template <typename T>
+POLYDEM_FN WallWarnings<T> wall_warnings(const WallPatches<T> &P, const WallForce<T> &wf, T Vp, T r,
+                                         T m, T depth_warn, T overlap_warn)
+{
+  WallWarnings<T> w;
+  w.behind = w.deep = w.large = w.fresh = 0;
+  w.fresh_v = w.fresh_d = w.fresh_em = T(0);
+  for (int k = 0; k < P.n; ++k) {
+    const WallPatch<T> &q = P.p[k];
+    if (!(q.volume > T(0))) continue;
+    w.behind += q.behind;
+    w.deep += q.depth > depth_warn * r ? 1 : 0;
+    w.large += q.volume > overlap_warn * Vp ? 1 : 0;
+    if (!((wf.fresh >> k) & 1)) continue;
+    w.fresh++;
+    w.fresh_v = q.volume / Vp > w.fresh_v ? q.volume / Vp : w.fresh_v;
+    w.fresh_d = q.depth / r > w.fresh_d ? q.depth / r : w.fresh_d;
+    w.fresh_em = wf.energy / m;
+  }
+  return w;
 }
 
 // Per-triangle forces (fix wall/mesh pertriangle yes): each patch's force on

@@ -6,6 +6,8 @@
 #ifndef POLYDEM_TEST_ELLIPSOID_GAS_H
 #define POLYDEM_TEST_ELLIPSOID_GAS_H
 
+#include "polydem_lmp.h"    // num()
+
 #include <mpi.h>
 
 #include <cmath>
@@ -16,14 +18,6 @@
 #include <vector>
 
 namespace polydem_test {
-
-// a double as LAMMPS input text, exactly (17 significant digits)
-inline std::string num(double x)
-{
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.17g", x);
-  return buf;
-}
 
 struct GasSpec {
   int n_side = 8;          // N = n_side^3

@@ -11,13 +11,33 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace polydem_test {
 
 inline std::string potentials() { return POLYDEM_POTENTIALS_DIR; }
+
+// a double as LAMMPS input text, exactly (17 significant digits)
+inline std::string num(double x)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof(buf), "%.17g", x);
+  return buf;
+}
+
+// the whole text of a file (a log), empty if it cannot be read
+inline std::string read_text(const std::string &path)
+{
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
 
 class Lmp {
  public:

@@ -420,6 +420,35 @@ TEST(AtomStyle, BadDataFile)
   std::remove(f.c_str());
 }
 
+// Found by the fuzz run (fuzz.data): an overflowing number in the
+// Velocities section (-2e0475784 parses as -inf) was taken as the angular
+// momentum; now an error, plain and /kk. A finite one is read as given.
+TEST(AtomStyle, NonFiniteVelocitiesRefused)
+{
+  const std::string f = tmpfile("vel.data");
+  for (const std::string vel :
+       {"1 0.1 -0.2 0.3 1e-7 0 -2e0475784", "1 1e999 0 0 0 0 0", "1 0.1 -0.2 0.3 1e-7 0 -2e-7"})
+    for (const std::vector<std::string> &extra :
+         {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+      {
+        std::ofstream o(f);
+        o << "test\n\n1 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\n"
+             "Atoms\n\n1 1 1 1.0 1.0 5 5 5 1 0 0 0\n\nVelocities\n\n"
+          << vel << "\n";
+      }
+      Lmp l(extra);
+      l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
+      const std::string e = l.error_of("read_data " + f);
+      if (vel.find("e-7 0 -2e-7") != std::string::npos) {
+        EXPECT_EQ(e, "") << e;
+        EXPECT_EQ(l.lmp->atom->angmom[0][2], -2e-7);
+      } else
+        EXPECT_NE(e.find("in Velocities section of data file: not finite"), std::string::npos)
+            << vel << " -> '" << e << "'";
+    }
+  std::remove(f.c_str());
+}
+
 // Issue 17 item 7: atom_style polyhedron is 3-d only (in 2-d particles left
 // the plane): dimension 2 before or after the atom style is an error
 TEST(AtomStyle, TwoDimensionsRefused)

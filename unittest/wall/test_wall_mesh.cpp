@@ -23,17 +23,11 @@
 #include <vector>
 
 using polydem_test::Lmp;
+using polydem_test::num;
 using polydem_test::potentials;
 using namespace wall_test;
 
 namespace {
-
-std::string num(double x)
-{
-  char buf[32];
-  std::snprintf(buf, sizeof(buf), "%.17g", x);
-  return buf;
-}
 
 constexpr double PI = 3.14159265358979323846;
 
@@ -44,14 +38,6 @@ constexpr double DELTA = 2.5e-5;    // penetration 1e-3 L
 constexpr double CORE = 1.0e-4;     // default core fraction
 
 // analytic W'(V) of the contact model's doc (Feng, Eqs. 12-13, C2 core)
-std::string read_file_text(const std::string &path)
-{
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 double wprime(double K, double V, double V0)
 {
   if (V < V0) return K / std::cbrt(V0 * V0) * V * (5.0 / 3.0 - 2.0 / 3.0 * V / V0);
@@ -399,7 +385,7 @@ TEST(WallMesh, PerTriangleRecordFull)
     fz = fix->compute_vector(2);
   }
   const double Fn = pertri_fn();
-  const std::string text = read_file_text(log);
+  const std::string text = polydem_test::read_text(log);
   std::printf("[ wall     ] per-triangle record full: %d triangles recorded, sum %.6g of the mesh "
               "force %.6g, largest pressure %.6g (uniform %.6g)\n", nrec, sumz, fz, pmax,
               Fn / (L * L));
@@ -584,7 +570,7 @@ std::string one_particle_log(const std::string &name, const std::vector<std::str
     for (size_t k = 0; k + 1 < cmds.size(); k++) l.cmd(cmds[k]);
     if (!cmds.empty()) l.error_of(cmds.back());
   }
-  return read_file_text(log);
+  return polydem_test::read_text(log);
 }
 
 }    // namespace

@@ -53,13 +53,13 @@ struct Result {
   double contacts_max;    // most particle-wall contacts seen at once
 };
 
-Result run(MPI_Comm comm, const std::string &data, const std::string &stl)
+Result run(MPI_Comm comm, const std::string &data, const std::string &stl, const std::string &args)
 {
   Lmp l({}, comm);
   l.cmd("processors * 1 1");    // split along x, the direction the particles slide
   l.cmds(scene_setup(data));
-  l.cmds({"fix w all wall/mesh " + stl + " friction 0.5", "thermo_style custom step atoms f_w[3]",
-          "thermo 100"});
+  l.cmds({"fix w all wall/mesh " + stl + " friction 0.5" + args,
+          "thermo_style custom step atoms f_w[3]", "thermo 100"});
   Result r;
   r.nlocal_min = 1 << 30;
   r.nlocal_max = 0;
@@ -88,33 +88,40 @@ TEST(WallRanks, OneVsTwoRanks)
   const std::string stl = ::testing::TempDir() + "wall_ranks_box.stl";
   if (me == 0) write_binary(stl, closed_box(B, 6));
   MPI_Barrier(MPI_COMM_WORLD);
-  const Result multi = run(MPI_COMM_WORLD, data, stl);
-  EXPECT_EQ(multi.natoms, 18);
-  if (np > 1) EXPECT_LT(multi.nlocal_min, multi.nlocal_max);    // atoms migrated
-  // every particle inside the box
-  for (size_t i = 0; i < multi.state.size(); i += 7)
-    for (int k = 0; k < 3; k++) {
-      EXPECT_GT(multi.state[i + 1 + k], 0.0);
-      EXPECT_LT(multi.state[i + 1 + k], B);
+  // the box as written (inward normals), and reversed: every contact met
+  // from the back, its side kept in the history that migrates with atoms
+  for (const std::string args : {"", " flip yes"}) {
+    const Result multi = run(MPI_COMM_WORLD, data, stl, args);
+    EXPECT_EQ(multi.natoms, 18);
+    if (np > 1) EXPECT_LT(multi.nlocal_min, multi.nlocal_max);    // atoms migrated
+    // every particle inside the box
+    for (size_t i = 0; i < multi.state.size(); i += 7)
+      for (int k = 0; k < 3; k++) {
+        EXPECT_GT(multi.state[i + 1 + k], 0.0);
+        EXPECT_LT(multi.state[i + 1 + k], B);
+      }
+    // the particles did hit the walls
+    EXPECT_GE(multi.contacts_max, 3.0);
+    MPI_Comm self;
+    MPI_Comm_split(MPI_COMM_WORLD, me, 0, &self);
+    if (me == 0) {
+      const Result single = run(self, data, stl, args);
+      ASSERT_EQ(single.state.size(), multi.state.size());
+      double dx = 0.0, dv = 0.0;
+      for (size_t i = 0; i < single.state.size(); i += 7) {
+        for (int k = 1; k <= 3; k++)
+          dx = std::fmax(dx, std::fabs(single.state[i + k] - multi.state[i + k]));
+        for (int k = 4; k <= 6; k++)
+          dv = std::fmax(dv, std::fabs(single.state[i + k] - multi.state[i + k]));
+      }
+      std::printf("[ wall     ] %d ranks vs 1%s: max |dx| = %.3g m, max |dv| = %.3g m/s, mesh "
+                  "force z %.6g vs %.6g N\n",
+                  np, args.c_str(), dx, dv, multi.fmesh[2], single.fmesh[2]);
+      EXPECT_LT(dx, 1e-9);
+      EXPECT_LT(dv, 1e-6);
+      for (int k = 0; k < 3; k++)
+        EXPECT_NEAR(multi.fmesh[k], single.fmesh[k], 1e-8 * (1.0 + std::fabs(single.fmesh[k])));
     }
-  // the particles did hit the walls
-  EXPECT_GE(multi.contacts_max, 3.0);
-  MPI_Comm self;
-  MPI_Comm_split(MPI_COMM_WORLD, me, 0, &self);
-  if (me == 0) {
-    const Result single = run(self, data, stl);
-    ASSERT_EQ(single.state.size(), multi.state.size());
-    double dx = 0.0, dv = 0.0;
-    for (size_t i = 0; i < single.state.size(); i += 7) {
-      for (int k = 1; k <= 3; k++) dx = std::fmax(dx, std::fabs(single.state[i + k] - multi.state[i + k]));
-      for (int k = 4; k <= 6; k++) dv = std::fmax(dv, std::fabs(single.state[i + k] - multi.state[i + k]));
-    }
-    std::printf("[ wall     ] %d ranks vs 1: max |dx| = %.3g m, max |dv| = %.3g m/s, mesh force "
-                "z %.6g vs %.6g N\n", np, dx, dv, multi.fmesh[2], single.fmesh[2]);
-    EXPECT_LT(dx, 1e-9);
-    EXPECT_LT(dv, 1e-6);
-    for (int k = 0; k < 3; k++)
-      EXPECT_NEAR(multi.fmesh[k], single.fmesh[k], 1e-8 * (1.0 + std::fabs(single.fmesh[k])));
+    MPI_Comm_free(&self);
   }
-  MPI_Comm_free(&self);
 }
