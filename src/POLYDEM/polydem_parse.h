@@ -12,7 +12,6 @@
 #include "lammps.h"
 #include "utils.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -25,9 +24,8 @@ inline double number(const char *file, int line, const char *word, LAMMPS_NS::LA
 {
   const double v = LAMMPS_NS::utils::numeric(file, line, word, false, lmp);
   char *end = nullptr;
-  errno = 0;
-  const double w = std::strtod(word, &end);
-  if (end == word || *end != '\0' || errno == ERANGE || !std::isfinite(w) || w != v)
+  const double w = std::strtod(word, &end);    // (an underflow to a subnormal is a number)
+  if (end == word || *end != '\0' || !std::isfinite(w) || w != v)
     lmp->error->all(file, line, "{}: '{}' is not a finite number", cmd, word);
   return v;
 }
