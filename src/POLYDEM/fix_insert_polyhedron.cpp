@@ -920,7 +920,7 @@ void FixInsertPolyhedron::post_run()
 {
   if (comm->me == 0)
     utils::logmesg(lmp, "fix insert/polyhedron {}: {} particle(s) inserted (mass {:.6g}), {} not "
-                   "placed, {} attempts; insertion took {:.3g} s of this run ({:.2f} %)\n", id,
+                   "placed, {} attempts; insertion took {:.3g} s of this run ({:.2g} %)\n", id,
                    ninserted, massinserted, nfailed, nattempts, time_run,
                    100.0 * time_run / std::max(1e-30, MPI_Wtime() - time_start));
 }
