@@ -10,7 +10,7 @@ cmake --build "$BUILD" -j"$(nproc)" --target lmp
 LMP=$(cd "$BUILD" && pwd)/lmp
 cd examples/hopper
 # 400 grains poured into an STL funnel, then discharged onto a floor: on two
-# MPI ranks (about 3 minutes here); the reference log is log.hopper
+# MPI ranks (1.5-4 minutes here); the reference log is log.hopper
 mpirun --allow-run-as-root --oversubscribe -np 2 "$LMP" -in in.hopper -log log.run
 /usr/bin/python3 plot_hopper.py log.run
 echo
