@@ -4,13 +4,15 @@
 # appends its line to RESULTS; a (d, seed, mu, dt) already in RESULTS is skipped.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-lmp=$1 results=$2 rundir=$3 sizes=$4 seeds=$5 mu=${6:-0.8} dt=${7:-2.5e-5}
+lmp=$1 results=$2 rundir=$3 sizes=$4 seeds=$5 mu=${6:-0.8} dt=${7:-auto}
 shift 5; shift $(( $# < 2 ? $# : 2 ))
 touch "$results"
 for d in $sizes; do
   for s in $seeds; do
-    if grep -q "^d=$d seed=$s mu=$mu dt=$dt " "$results"; then continue; fi
-    "$here/run_case.sh" "$lmp" "$rundir" "$d" "$s" "$mu" "$dt" "$@" >> "$results"
+    dtd=$dt
+    if [ "$dt" = auto ]; then dtd=$(awk "BEGIN{x=$d/0.030; printf \"%.3g\", 2.5e-5*(x<1?x:1)}"); fi
+    if grep -q "^d=$d seed=$s mu=$mu dt=$dtd " "$results"; then continue; fi
+    "$here/run_case.sh" "$lmp" "$rundir" "$d" "$s" "$mu" "$dtd" "$@" >> "$results"
     tail -1 "$results"
   done
 done

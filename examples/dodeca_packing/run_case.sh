@@ -1,12 +1,15 @@
 #!/bin/bash
-# run_case.sh LMP OUTDIR D SEED [MU] [DT] [extra lmp -var pairs...]
+# run_case.sh LMP OUTDIR D SEED [MU] [DT|auto] [extra lmp -var pairs...]
 # One packing: runs in.packing (1 MPI rank) with its output in OUTDIR, then
 # analyze.py; prints one line: d seed mu dt t_settle wall_s + analyze.py's key=value.
+# DT auto (default): 2.5e-5 s x min(1, d / 0.030 m), below half the printed
+# stability limit of a flat face contact at every size (in.packing).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-lmp=$1 outdir=$2 d=$3 seed=$4 mu=${5:-0.8} dt=${6:-2.5e-5}
+lmp=$1 outdir=$2 d=$3 seed=$4 mu=${5:-0.8} dt=${6:-auto}
 shift 4; shift $(( $# < 2 ? $# : 2 ))
 mkdir -p "$outdir"
+if [ "$dt" = auto ]; then dt=$(awk "BEGIN{d=$d/0.030; printf \"%.3g\", 2.5e-5*(d<1?d:1)}"); fi
 tag=$(printf 'd%s_s%s_mu%s_dt%s' "$d" "$seed" "$mu" "$dt")
 t0=$(date +%s.%N)
 "$lmp" -in "$here/in.packing" -screen none -log "$outdir/log.$tag" \
