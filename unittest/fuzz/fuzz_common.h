@@ -27,7 +27,10 @@ inline const std::string &scratch()
 inline void write_input(const uint8_t *data, size_t size)
 {
   FILE *f = std::fopen(scratch().c_str(), "wb");
-  if (!f) std::abort();
+  if (!f) {
+    std::perror("polydem fuzz: cannot write the scratch file");
+    std::abort();
+  }
   if (size) std::fwrite(data, 1, size, f);
   std::fclose(f);
 }
