@@ -950,7 +950,8 @@ std::vector<FixInsertPolyhedron::Candidate> FixInsertPolyhedron::candidates(LAMM
     if (!f) continue;
     for (const auto &k : f->kinds) {
       const double s = k.scale.min();
-      out.push_back({k.ishape, s, k.density * f->avec->shape(k.ishape).volume() * s * s * s, f->itype});
+      out.push_back({k.ishape, s, k.density * f->avec->shape(k.ishape).volume() * s * s * s,
+                     f->itype, 1 | f->groupbit});
     }
   }
   return out;

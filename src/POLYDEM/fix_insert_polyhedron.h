@@ -48,6 +48,7 @@ class FixInsertPolyhedron : public Fix {
     int ishape;
     double scale, mass;
     int type;
+    int mask;    // the group bits the inserted atoms get
   };
   static std::vector<Candidate> candidates(class LAMMPS *);
 

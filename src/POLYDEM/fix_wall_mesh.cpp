@@ -8,6 +8,7 @@
 #include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "error.h"
+#include "fix_insert_polyhedron.h"
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
@@ -408,18 +409,24 @@ void FixWallMesh::check_timestep()
 {
   double dtmin = 1e300;
   bigint nover = 0;
-  for (int i = 0; i < atom->nlocal; i++) {
-    if (!(atom->mask[i] & groupbit)) continue;
-    const double s = atom->pscale[i];
-    polydem::ContactParams<double> p = params(i, false);
+  auto consider = [&](int type, int ishape, double s, double m) {
+    polydem::ContactParams<double> p = params_of(type, ishape, s, m, false);
     p.meff /= force->ftm2v;
-    const double dtf =
-        polydem::face_contact_stable_dt(p, avec->shape(atom->pshape[i]).max_face_area() * s * s);
+    const double dtf = polydem::face_contact_stable_dt(p, avec->shape(ishape).max_face_area() * s * s);
     if (dtf > 0.0 && std::isfinite(dtf))
       dtmin = MIN(dtmin, dtf);
     else
       nover++;
-  }
+  };
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit)
+      consider(atom->type[i], atom->pshape[i], atom->pscale[i], atom->rmass[i]);
+  // and the smallest particle of each kind an insertion fix will add here
+  // (counted on rank 0 only: every rank sees the same candidates)
+  if (comm->me == 0)
+    for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+      if ((c.mask & groupbit) && !avec->shape(c.ishape).is_ellipsoid())
+        consider(c.type, c.ishape, c.scale, c.mass);
   MPI_Allreduce(MPI_IN_PLACE, &dtmin, 1, MPI_DOUBLE, MPI_MIN, world);
   // a stiffness that overflows (youngs 1e300) made every contact NaN
   MPI_Allreduce(MPI_IN_PLACE, &nover, 1, MPI_LMP_BIGINT, MPI_SUM, world);
@@ -562,10 +569,13 @@ polydem::MeshPose<double> FixWallMesh::mesh_pose() const
 
 polydem::ContactParams<double> FixWallMesh::params(int i, bool stepping) const
 {
-  const int t = atom->type[i];
-  const double s = atom->pscale[i];
-  const double V = avec->shape(atom->pshape[i]).volume() * s * s * s;
-  const double m = atom->rmass[i];
+  return params_of(atom->type[i], atom->pshape[i], atom->pscale[i], atom->rmass[i], stepping);
+}
+
+polydem::ContactParams<double> FixWallMesh::params_of(int t, int ishape, double s, double m,
+                                                      bool stepping) const
+{
+  const double V = avec->shape(ishape).volume() * s * s * s;
   return polydem::wall_params(tE[t], tnu[t], wE[t], wnu[t], V, m, tdamp[t], tmu[t], core,
                               stepping ? update->dt : 0.0);
 }

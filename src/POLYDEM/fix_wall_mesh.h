@@ -119,6 +119,8 @@ class FixWallMesh : public Fix {
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;
   polydem::ContactParams<double> params(int i, bool update) const;
+  polydem::ContactParams<double> params_of(int type, int ishape, double s, double m,
+                                           bool update) const;
   void build_grid();
   void report_counts();
   void check_timestep();
