@@ -925,13 +925,6 @@ void FixInsertPolyhedron::post_run()
                    100.0 * time_run / std::max(1e-30, MPI_Wtime() - time_start));
 }
 
-void *FixInsertPolyhedron::extract(const char *name, int &dim)
-{
-  dim = 0;
-  if (strcmp(name, "radius") == 0) return &rmax_insert;
-  return nullptr;
-}
-
 double FixInsertPolyhedron::max_insert_radius(LAMMPS *lmp)
 {
   double r = 0.0;

@@ -38,7 +38,6 @@ class FixInsertPolyhedron : public Fix {
   double compute_vector(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
-  void *extract(const char *, int &) override;
   // largest bounding radius any fix insert/polyhedron may insert (0: none);
   // the pair styles size their cutoff with it, as with atoms present
   static double max_insert_radius(class LAMMPS *);
@@ -90,9 +89,11 @@ class FixInsertPolyhedron : public Fix {
   bigint ninserted, nfailed, nattempts, nevents, nstart, next_event;
   double massinserted, volinserted;
   int packdone;
-  double last_phi = 0.0;
-  double time_run = 0.0, time_start = 0.0;    // wall time of insertion this run, run start    // solid fraction after the last insertion (log)
   bigint nfailed_warned;
+
+  // log
+  double last_phi = 0.0;                      // solid fraction after the last insertion
+  double time_run = 0.0, time_start = 0.0;    // wall time of insertion this run, run start
 
   // per insertion
   double region_volume;
@@ -102,6 +103,8 @@ class FixInsertPolyhedron : public Fix {
   double mean_mass;      // mean particle mass of the mixture
   std::vector<class FixWallMesh *> walls;
   std::vector<polydem::ShapeView<double>> views;    // of every template (polyhedra)
+  std::vector<double> inradius;                      // of every template at unit scale
+  double slo[3], shi[3];    // box of the region now, within the simulation box
 
   struct Placed {
     int kind;
@@ -113,12 +116,10 @@ class FixInsertPolyhedron : public Fix {
   double estimate_region_volume();
   void region_bbox(double *lo, double *hi);
   bool sample_in_region(double *x);
-  double slo[3], shi[3];    // box of the region now, within the simulation box
   bool region_contains(const polydem::InsertBody<double> &b);
   std::vector<polydem::InsertBody<double>> gather(const double *lo, const double *hi,
                                                   double rcand, double &vol_in_region);
   void grid_add(const polydem::InsertBody<double> &b);
-  std::vector<double> inradius;    // of every template at unit scale
   void refresh_views();
   polydem::InsertBody<double> body_of(int ishape, double s, const double *x,
                                       const polydem::Quat<double> &q) const;

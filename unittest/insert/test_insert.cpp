@@ -138,6 +138,20 @@ int overlaps(Lmp &l, long tag0, int *npairs_close = nullptr)
   return bad;
 }
 
+// surface points of the particles with tag > tag0 outside insert_scene's
+// container (x, y in (-0.02, 0.02), z > 0)
+int outside_container(Lmp &l, long tag0)
+{
+  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+  int n = 0;
+  for (const auto &p : particles(l)) {
+    if (p.tag <= tag0) continue;
+    for (const auto &y : surface_points(avec->shape(p.shape), p))
+      n += !(y.x > -0.02 && y.x < 0.02 && y.y > -0.02 && y.y < 0.02 && y.z > 0.0);
+  }
+  return n;
+}
+
 double fvec(Lmp &l, const std::string &fix, int i)
 {
   auto f = l.lmp->modify->fix[l.lmp->modify->find_fix(fix.c_str())];
@@ -214,17 +228,12 @@ TEST(Insert, PourIntoMeshNeverOverlapsParticlesOrWalls)
   l.cmds(pour_scene(stl));
   l.cmd("compute cc all contact/polyhedron");
   l.cmd("thermo_style custom step atoms c_cc[1] f_w[7]");
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
   long tag0 = 0;
   int bad = 0, outside = 0;
   for (int e = 0; e < 10; e++) {
     l.cmd(e == 0 ? "run 0" : "run 100");
     bad += overlaps(l, tag0);
-    for (const auto &p : particles(l)) {
-      if (p.tag <= tag0) continue;
-      for (const auto &y : surface_points(avec->shape(p.shape), p))
-        outside += !(y.x > -0.02 && y.x < 0.02 && y.y > -0.02 && y.y < 0.02 && y.z > 0.0);
-    }
+    outside += outside_container(l, tag0);
     tag0 = (long) l.lmp->atom->natoms;
   }
   // a crowded feed carries some particles to later insertions
@@ -253,7 +262,6 @@ TEST(Insert, DenseRateFillOfAMeshContainer)
           "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1",
           "fix w all wall/mesh " + stl, "timestep 2e-6", "compute cc all contact/polyhedron",
           "thermo_style custom step atoms c_cc[1] f_w[7]", "thermo 100"});
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
   long tag0 = 0;
   int bad = 0, outside = 0;
   for (int e = 0; e < 4; e++) {
@@ -264,11 +272,7 @@ TEST(Insert, DenseRateFillOfAMeshContainer)
       EXPECT_EQ(fvec(l, "w", 6), 0.0);
     }
     bad += overlaps(l, tag0);
-    for (const auto &p : particles(l)) {
-      if (p.tag <= tag0) continue;
-      for (const auto &y : surface_points(avec->shape(p.shape), p))
-        outside += !(y.x > -0.02 && y.x < 0.02 && y.y > -0.02 && y.y < 0.02 && y.z > 0.0);
-    }
+    outside += outside_container(l, tag0);
     tag0 = (long) l.lmp->atom->natoms;
   }
   EXPECT_EQ(l.lmp->atom->natoms, 5000);
