@@ -16,7 +16,8 @@
 #include "pair.h"
 #include "update.h"
 
-#include "polydem_contact_model.h"
+#include "polydem_contact_law.h"
+#include "polydem_damping.h"
 #include "polydem_shape_template.h"
 
 #include <cmath>
@@ -36,7 +37,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
-    wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), depth_warn(0.25),
+    wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(0), depth_warn(0.25),
     overlap_warn(0.05), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0), hist(nullptr),
     reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0), near_builds_all(0),
     near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
@@ -100,6 +101,13 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       if (yn != "yes" && yn != "no")
         error->all(FLERR, "fix wall/mesh: flip expects yes or no, got '{}'", yn);
       xf.flip = yn == "yes";
+      iarg += 2;
+    } else if (kw == "twist") {
+      need(iarg, 1, "yes or no");
+      const std::string yn = arg[iarg + 1];
+      if (yn != "yes" && yn != "no")
+        error->all(FLERR, "fix wall/mesh: twist expects yes or no, got '{}'", yn);
+      twist = yn == "yes";
       iarg += 2;
     } else if (kw == "sides") {
       need(iarg, 1, "both or front");
@@ -375,8 +383,8 @@ void FixWallMesh::init()
                "come from its pair_coeff)");
   const int nt = atom->ntypes;
   tE.assign(nt + 1, 0.0);
-  tnu = wE = wnu = tdamp = tmu = tE;
-  tdtab.assign(nt + 1, polydem::WallDamping<double>());
+  tnu = wE = wnu = tmu = tE;
+  tdamp.assign(nt + 1, polydem::damping_law(1.0, 1));
   for (int t = 1; t <= nt; t++) {
     tE[t] = E[t];
     tnu[t] = nu[t];
@@ -387,22 +395,14 @@ void FixWallMesh::init()
     if (!(tE[t] > 0.0) || !(et > 0.0))
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} E nu "
                  "e mu)", t, t, t);
-    tdamp[t] = polydem::damping_factor(et);
-    tdtab[t] = damping_table(et);
+    tdamp[t] = polydem::damping_law(et, 1);
   }
   build_grid();
   check_timestep();
 }
 
-// zeta(e, a, q) table of restitution e (polydem_wall_contact.h; closed
-// form, polydem_damping.h)
-polydem::WallDamping<double> FixWallMesh::damping_table(double e)
-{
-  return polydem::wall_damping_table(e);
-}
-
 // A face lying flat on the wall in the core has the largest stiffness of the
-// model (polydem_contact_model.h, face_contact_stable_dt): warn when the time
+// model (polydem_contact_law.h, face_contact_stable_dt): warn when the time
 // step exceeds its explicit stability limit, for the largest face of each
 // particle of the group.
 void FixWallMesh::check_timestep()
@@ -410,9 +410,9 @@ void FixWallMesh::check_timestep()
   double dtmin = 1e300;
   bigint nover = 0;
   auto consider = [&](int type, int ishape, double s, double m) {
-    polydem::ContactParams<double> p = params_of(type, ishape, s, m, false);
-    p.meff /= force->ftm2v;
-    const double dtf = polydem::face_contact_stable_dt(p, avec->shape(ishape).max_face_area() * s * s);
+    const auto L = law_of(type, ishape, s);
+    const double dtf = polydem::face_contact_stable_dt(L.normal, m / force->ftm2v,
+                                                       avec->shape(ishape).max_face_area() * s * s);
     if (dtf > 0.0 && std::isfinite(dtf))
       dtmin = MIN(dtmin, dtf);
     else
@@ -567,17 +567,15 @@ polydem::MeshPose<double> FixWallMesh::mesh_pose() const
   return mp;
 }
 
-polydem::ContactParams<double> FixWallMesh::params(int i, bool stepping) const
+polydem::ContactLaw<double> FixWallMesh::law(int i) const
 {
-  return params_of(atom->type[i], atom->pshape[i], atom->pscale[i], atom->rmass[i], stepping);
+  return law_of(atom->type[i], atom->pshape[i], atom->pscale[i]);
 }
 
-polydem::ContactParams<double> FixWallMesh::params_of(int t, int ishape, double s, double m,
-                                                      bool stepping) const
+polydem::ContactLaw<double> FixWallMesh::law_of(int t, int ishape, double s) const
 {
   const double V = avec->shape(ishape).volume() * s * s * s;
-  return polydem::wall_params(tE[t], tnu[t], wE[t], wnu[t], V, m, tdamp[t], tmu[t], core,
-                              stepping ? update->dt : 0.0);
+  return polydem::wall_law(tE[t], tnu[t], wE[t], wnu[t], V, tdamp[t], tmu[t], core, twist);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -586,18 +584,6 @@ void FixWallMesh::setup(int /*vflag*/)
 {
   compute_forces(false);
   report_initial_overlaps();
-}
-
-// kernel counts of one particle (wall_warnings)
-void FixWallMesh::add_warnings(const polydem::WallWarnings<double> &w)
-{
-  counts_local[5] += w.behind;
-  counts_local[6] += w.deep;
-  counts_local[7] += w.large;
-  fresh_local[0] += w.fresh;
-  fresh_local[1] = MAX(fresh_local[1], w.fresh_v);
-  fresh_local[2] = MAX(fresh_local[2], w.fresh_d);
-  fresh_local[3] = MAX(fresh_local[3], w.fresh_em);
 }
 
 // Contacts without history at setup: particles created or moved into the
@@ -625,22 +611,6 @@ void FixWallMesh::initial_integrate(int /*vflag*/)
 void FixWallMesh::post_force(int /*vflag*/)
 {
   compute_forces(true);
-}
-
-void FixWallMesh::tally(const double *x, const polydem::WallForce<double> &wf,
-                        const polydem::MeshPose<double> &mp, int ntri)
-{
-  // reaction on the mesh: -f, and the torque balancing the particle's
-  const auto tm = polydem::wall_reaction_torque(polydem::make_vec3(x[0], x[1], x[2]), wf, mp);
-  local[0] -= wf.f.x;
-  local[1] -= wf.f.y;
-  local[2] -= wf.f.z;
-  local[3] += tm.x;
-  local[4] += tm.y;
-  local[5] += tm.z;
-  local[6] += wf.ncontact;
-  local[7] += ntri;
-  local[NVEC] += wf.energy;
 }
 
 void FixWallMesh::compute_forces(bool update)
@@ -676,6 +646,7 @@ void FixWallMesh::compute_forces(bool update)
   }
   polydem::WallNear<double> nl;
   nl.cap = near_cap;
+  polydem::WallTally<double> sum;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     const auto sv = avec->shape(atom->pshape[i]).view();
@@ -692,32 +663,56 @@ void FixWallMesh::compute_forces(bool update)
       nl.skin = near_skin * sv.radius * pose.s;
       pn = &nl;
     }
-    const auto p = params(i, update);
-    const auto wf = polydem::wall_particle(sv, pose, mp, g, p, tdtab[atom->type[i]], cosmax,
-                                           twosided, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
+    const double m = atom->rmass[i];
+    const auto wf = polydem::wall_particle(sv, pose, mp, g, law(i), m, update ? lmp->update->dt : 0.0,
+                                           cosmax, twosided,
+                                           polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
                                            polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]),
                                            hist[i], update, *ws, P, pn);
     const double s3 = pose.s * pose.s * pose.s;
-    add_warnings(polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, p.meff,
-                                        depth_warn, overlap_warn));
+    sum.add(pose.x, wf, mp, P,
+            polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, m, depth_warn,
+                                   overlap_warn));
     if (pn) {
-      near_builds += nl.built;
-      if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) counts_local[3] += 1;
+      sum.near_builds += nl.built;
+      if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) sum.near_overflow += 1;
     }
     if (pertri) polydem::wall_triangle_forces(*ws, P, wf, add_tri);
-    counts_local[0] += P.noverflow;
-    counts_local[1] += P.ndegenerate;
-    counts_local[2] += P.nmerged;
-    counts_local[4] += P.nunrecorded;
     f[i][0] += wf.f.x;
     f[i][1] += wf.f.y;
     f[i][2] += wf.f.z;
     torque[i][0] += wf.tau.x;
     torque[i][1] += wf.tau.y;
     torque[i][2] += wf.tau.z;
-    tally(x[i], wf, mp, P.ntri);
   }
+  absorb(sum);
   if (update && neighbor->ago == 0) report_counts();
+}
+
+// the sums of one call (plain loop or /kk reduction) into the fix's
+// output vector, energy, kernel counts and warnings
+void FixWallMesh::absorb(const polydem::WallTally<double> &t)
+{
+  for (int k = 0; k < 3; k++) {
+    local[k] = t.force[k];
+    local[3 + k] = t.torque[k];
+  }
+  local[6] = t.ncontact;
+  local[7] = t.ntri;
+  local[NVEC] = t.energy;
+  counts_local[0] += t.noverflow;
+  counts_local[1] += t.ndegenerate;
+  counts_local[2] += t.nmerged;
+  counts_local[3] += t.near_overflow;
+  counts_local[4] += t.nunrecorded;
+  counts_local[5] += t.behind;
+  counts_local[6] += t.deep;
+  counts_local[7] += t.large;
+  fresh_local[0] = t.fresh;
+  fresh_local[1] = t.fresh_v;
+  fresh_local[2] = t.fresh_d;
+  fresh_local[3] = t.fresh_em;
+  near_builds += (bigint) t.near_builds;
 }
 
 // kernel failures are counted and reported (collectively) as warnings: the

@@ -76,6 +76,7 @@ class FixWallMesh : public Fix {
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
   double core, patch_angle, cosmax;
   int twosided;                       // keyword sides: both (1, default) or front (0)
+  int twist;                          // keyword twist: torsional friction (polydem_contact_law.h)
   double depth_warn, overlap_warn;    // warn beyond these x bounding radius, x particle volume
   int movestyle;
   double vel[3], origin[3], axis[3], omega;
@@ -83,9 +84,9 @@ class FixWallMesh : public Fix {
   double elapsed;    // time since the fix was defined (mesh motion)
 
   double **hist;     // per atom: WALL_HIST_SIZE values
-  // per type (1..ntypes): particle E, nu; wall E, nu; damping ratio; mu
-  std::vector<double> tE, tnu, wE, wnu, tdamp, tmu;
-  std::vector<polydem::WallDamping<double>> tdtab;    // zeta(e, contact shape)
+  // per type (1..ntypes): particle E, nu; wall E, nu; mu; damping law
+  std::vector<double> tE, tnu, wE, wnu, tmu;
+  std::vector<polydem::DampingLaw<double>> tdamp;
   double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
   int reduced;
   // kernel failure counts (overflow, degenerate, merged patches), near-list
@@ -96,7 +97,7 @@ class FixWallMesh : public Fix {
   // contacts that begin, this call: count, largest V / V_p, depth / r,
   // wall energy / mass (at setup: initial overlaps, reported by setup())
   double fresh_local[4];
-  void add_warnings(const polydem::WallWarnings<double> &w);
+  void absorb(const polydem::WallTally<double> &t);
   void report_initial_overlaps();
   class AtomVecPolyhedron *avec;
   std::unique_ptr<polydem::WallWorkspace<double>> ws;
@@ -118,17 +119,12 @@ class FixWallMesh : public Fix {
 
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;
-  polydem::ContactParams<double> params(int i, bool update) const;
-  polydem::ContactParams<double> params_of(int type, int ishape, double s, double m,
-                                           bool update) const;
+  polydem::ContactLaw<double> law(int i) const;
+  polydem::ContactLaw<double> law_of(int type, int ishape, double s) const;
   void build_grid();
   void report_counts();
   void check_timestep();
-  polydem::WallDamping<double> damping_table(double e);
   virtual void compute_forces(bool update);
-  // reaction of a particle force f, torque tau (about x) on the mesh
-  void tally(const double *x, const polydem::WallForce<double> &wf,
-             const polydem::MeshPose<double> &mp, int ntri);
 };
 
 }    // namespace LAMMPS_NS

@@ -24,11 +24,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 namespace {
 
 typedef polydem::WallWorkspace<double> WallWorkspace;
-// force (3), torque (3), contacts, triangles, energy, kernel counters (3),
-// near-list overflows, builds, unrecorded triangles, warned contacts (3:
-// behind, deep, large), contacts that begin; then maxima (MAX0..): their
-// V / V_p, depth / r, wall energy / mass
-constexpr int NSUM = 22, MAX0 = 19;
+typedef polydem::WallTally<double> WallTally;    // what the threads sum
 
 // device copy of a host vector (at least one element)
 template <class V, class S> void upload(V &d, const std::vector<S> &h, const char *name)
@@ -59,8 +55,7 @@ template <class DeviceType> struct TriAdd {
 template <class DeviceType> struct WallMeshKernel {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
-  typedef double value_type[];
-  const unsigned value_count = NSUM;
+  typedef WallTally value_type;
 
   typename AT::t_x_array_randomread x;
   typename AT::t_v_array_randomread v, omega;
@@ -70,8 +65,8 @@ template <class DeviceType> struct WallMeshKernel {
   polydem_view_t<tdual_quat_array, DeviceType> quat;
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> hist;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
-  Kokkos::View<double *[6], DeviceType> mat;
-  Kokkos::View<polydem::WallDamping<double> *, DeviceType> dtab;
+  Kokkos::View<double *[5], DeviceType> mat;
+  Kokkos::View<polydem::DampingLaw<double> *, DeviceType> damp;
   Kokkos::View<char *, DeviceType> workspace;
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> near_ref;
   Kokkos::View<int *, DeviceType> near_count;
@@ -84,19 +79,9 @@ template <class DeviceType> struct WallMeshKernel {
   polydem::MeshGridView<double> grid;
   polydem::MeshPose<double> mp;
   double cosmax, core, dt, depth_warn, overlap_warn;
-  int update, groupbit, ibase, twosided;
+  int update, groupbit, ibase, twosided, twist;
 
-  KOKKOS_INLINE_FUNCTION void init(value_type s) const
-  {
-    for (int k = 0; k < NSUM; k++) s[k] = 0.0;
-  }
-  KOKKOS_INLINE_FUNCTION void join(volatile value_type d, const volatile value_type s) const
-  {
-    for (int k = 0; k < MAX0; k++) d[k] += s[k];
-    for (int k = MAX0; k < NSUM; k++) d[k] = s[k] > d[k] ? s[k] : d[k];
-  }
-
-  KOKKOS_INLINE_FUNCTION void operator()(const int slot, value_type sum) const
+  KOKKOS_INLINE_FUNCTION void operator()(const int slot, value_type &sum) const
   {
     const int i = ibase + slot;
     if (!(mask(i) & groupbit)) return;
@@ -106,8 +91,8 @@ template <class DeviceType> struct WallMeshKernel {
     const int t = type(i);
     const double s = pscale(i);
     const double V = sv.volume * s * s * s;
-    const auto p = polydem::wall_params(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, rmass(i),
-                                        mat(t, 4), mat(t, 5), core, update ? dt : 0.0);
+    const auto law = polydem::wall_law(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, damp(t),
+                                       mat(t, 4), core, twist);
     polydem::Pose<double> pose;
     pose.x = polydem::make_vec3(x(i, 0), x(i, 1), x(i, 2));
     pose.q = polydem::make_quat(quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3));
@@ -128,18 +113,18 @@ template <class DeviceType> struct WallMeshKernel {
       pn = &nl;
     }
     const auto wf = polydem::wall_particle(
-        sv, pose, mp, grid, p, dtab(t), cosmax, twosided,
+        sv, pose, mp, grid, law, rmass(i), update ? dt : 0.0, cosmax, twosided,
         polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
         polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P, pn);
     const auto w =
-        polydem::wall_warnings(P, wf, V, sv.radius * s, p.meff, depth_warn, overlap_warn);
+        polydem::wall_warnings(P, wf, V, sv.radius * s, rmass(i), depth_warn, overlap_warn);
     if (pertri) {
       TriAdd<DeviceType> add{trif};
       polydem::wall_triangle_forces(ws, P, wf, add);
     }
     if (pn) {
-      sum[12] += (nl.built && near_count(i) == polydem::NEAR_OVERFLOW) ? 1.0 : 0.0;
-      sum[13] += nl.built;
+      sum.near_overflow += (nl.built && near_count(i) == polydem::NEAR_OVERFLOW) ? 1.0 : 0.0;
+      sum.near_builds += nl.built;
     }
     for (int k = 0; k < NH; k++) hist(i, k) = h[k];
     f(i, 0) += wf.f.x;
@@ -148,26 +133,7 @@ template <class DeviceType> struct WallMeshKernel {
     torque(i, 0) += wf.tau.x;
     torque(i, 1) += wf.tau.y;
     torque(i, 2) += wf.tau.z;
-    const auto tm = polydem::wall_reaction_torque(pose.x, wf, mp);
-    sum[0] -= wf.f.x;
-    sum[1] -= wf.f.y;
-    sum[2] -= wf.f.z;
-    sum[3] += tm.x;
-    sum[4] += tm.y;
-    sum[5] += tm.z;
-    sum[6] += wf.ncontact;
-    sum[7] += P.ntri;
-    sum[8] += wf.energy;
-    sum[9] += P.noverflow;
-    sum[10] += P.ndegenerate;
-    sum[11] += P.nmerged;
-    sum[14] += P.nunrecorded;
-    sum[15] += w.behind;
-    sum[16] += w.deep;
-    sum[17] += w.large;
-    sum[18] += w.fresh;
-    const double mx[3] = {w.fresh_v, w.fresh_d, w.fresh_em};
-    for (int k = 0; k < 3; k++) sum[MAX0 + k] = mx[k] > sum[MAX0 + k] ? mx[k] : sum[MAX0 + k];
+    sum.add(pose.x, wf, mp, P, w);
   }
 };
 
@@ -217,17 +183,17 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
 
   // per-type material, as FixWallMesh::params
   const int nt = atom->ntypes;
-  d_mat = Kokkos::View<double *[6], DeviceType>("wall/mesh/kk:mat", nt + 1);
-  d_dtab = Kokkos::View<polydem::WallDamping<double> *, DeviceType>("wall/mesh/kk:dtab", nt + 1);
+  d_mat = Kokkos::View<double *[5], DeviceType>("wall/mesh/kk:mat", nt + 1);
+  d_damp = Kokkos::View<polydem::DampingLaw<double> *, DeviceType>("wall/mesh/kk:damp", nt + 1);
   auto h_mat = Kokkos::create_mirror_view(d_mat);
-  auto h_dtab = Kokkos::create_mirror_view(d_dtab);
+  auto h_damp = Kokkos::create_mirror_view(d_damp);
   for (int t = 0; t <= nt; t++) {
-    const double m[6] = {tE[t], tnu[t], wE[t], wnu[t], tdamp[t], tmu[t]};
-    for (int k = 0; k < 6; k++) h_mat(t, k) = m[k];
-    h_dtab(t) = tdtab[t];
+    const double m[5] = {tE[t], tnu[t], wE[t], wnu[t], tmu[t]};
+    for (int k = 0; k < 5; k++) h_mat(t, k) = m[k];
+    h_damp(t) = tdamp[t];
   }
   Kokkos::deep_copy(d_mat, h_mat);
-  Kokkos::deep_copy(d_dtab, h_dtab);
+  Kokkos::deep_copy(d_damp, h_damp);
   shape_version = -1;
   update_shapes();
 }
@@ -358,7 +324,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.hist = k_hist.template view<DeviceType>();
   k.shapes = d_shapes;
   k.mat = d_mat;
-  k.dtab = d_dtab;
+  k.damp = d_damp;
   k.workspace = d_workspace;
   k.grid = grid_view();
   k.grid.tri = d_tri.data();
@@ -374,30 +340,21 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.update = stepping ? 1 : 0;
   k.groupbit = groupbit;
   k.twosided = twosided;
+  k.twist = twist;
   k.depth_warn = depth_warn;
   k.overlap_warn = overlap_warn;
 
-  double total[NSUM];
-  for (int m = 0; m < NSUM; m++) total[m] = 0.0;
+  WallTally total;
   for (int i0 = 0; i0 < nlocal; i0 += nslots) {
     k.ibase = i0;
-    double sum[NSUM];
+    WallTally sum;
     Kokkos::parallel_reduce(std::min(nslots, nlocal - i0), k, sum);
-    for (int m = 0; m < MAX0; m++) total[m] += sum[m];
-    for (int m = MAX0; m < NSUM; m++) total[m] = std::max(total[m], sum[m]);
+    total += sum;
   }
   atomKK->modified(execution_space, datamask_modify);
   k_hist.template modify<DeviceType>();
 
-  for (int m = 0; m < NVEC; m++) local[m] = total[m];
-  local[NVEC] = total[8];
-  for (int m = 0; m < 3; m++) counts_local[m] += total[9 + m];
-  counts_local[3] += total[12];
-  counts_local[4] += total[14];
-  for (int m = 0; m < 3; m++) counts_local[5 + m] += total[15 + m];
-  fresh_local[0] = total[18];
-  for (int m = 0; m < 3; m++) fresh_local[1 + m] = total[MAX0 + m];
-  near_builds += (bigint) total[13];
+  absorb(total);
   if (stepping && neighbor->ago == 0) report_counts();
 }
 

@@ -59,9 +59,9 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   Kokkos::View<double *, DeviceType> d_sverts, d_splanes;
   Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
-  // per type: particle E, nu; wall E, nu; damping ratio; friction; zeta table
-  Kokkos::View<double *[6], DeviceType> d_mat;
-  Kokkos::View<polydem::WallDamping<double> *, DeviceType> d_dtab;
+  // per type: particle E, nu; wall E, nu; friction; damping law
+  Kokkos::View<double *[5], DeviceType> d_mat;
+  Kokkos::View<polydem::DampingLaw<double> *, DeviceType> d_damp;
   Kokkos::View<char *, DeviceType> d_workspace;
   // near lists (keyword cache), per local atom
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> d_near_ref;

@@ -20,6 +20,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "polydem_damping.h"
 #include "polydem_ellipsoid_force.h"
 #include "polydem_shape_template.h"
 
@@ -29,7 +30,10 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
-static constexpr int SIZE_HISTORY = 3;    // tangential displacement s
+static constexpr int SIZE_HISTORY = 3;    // tangential displacement s (polydem_contact_law.h)
+// first value of the restart settings since the history convention of
+// polydem_contact_law.h (older files begin with overlap/warn, which is > 0)
+static constexpr double RESTART_VERSION = -2.0;
 
 /* ---------------------------------------------------------------------- */
 
@@ -43,6 +47,9 @@ PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
   no_virial_fdotr_compute = 1;
   centroidstressflag = CENTROID_NOTAVAIL;
   finitecutflag = 1;
+  // one history sign convention (polydem_contact_law.h): a pair's history is
+  // that of its lower-tag atom, copied to the partner unchanged
+  nondefault_history_transfer = 1;
   for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
   // compute pair ellipsoid: [1] collisions started, [2] pair-steps in contact (this run;
   // a pair with a ghost atom counts 1/2 on each rank when newton_pair is off)
@@ -248,6 +255,9 @@ double PairEllipsoid::init_one(int i, int j)
   kn[j][i] = kn[i][j];
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
+  const int nt = atom->ntypes + 1;
+  if ((int) damping.size() != nt * nt) damping.assign((size_t) nt * nt, polydem::damping_law(1.0, 1));
+  damping[i * nt + j] = damping[j * nt + i] = polydem::damping_law(restitution[i][j], 1);
   // particles present, and those an insertion fix may add later
   double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
   for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
@@ -300,6 +310,7 @@ void PairEllipsoid::compute(int eflag, int vflag)
     return p;
   };
   auto vec = [](const double *a) { return polydem::make_vec3(a[0], a[1], a[2]); };
+  const tagint *tag = atom->tag;
   int **firsttouch = use_history ? fix_history->firstflag : nullptr;
   double **firstshear = use_history ? fix_history->firstvalue : nullptr;
   const bool update_history = update->setupflag == 0;
@@ -340,22 +351,36 @@ void PairEllipsoid::compute(int eflag, int vflag)
       const double amin = MIN(MIN(MIN(A.axes.x, A.axes.y), MIN(A.axes.z, B.axes.x)),
                               MIN(B.axes.y, B.axes.z));
       const int it = type[i], jt = type[j];
-      const double meff = damping_mass == polydem::DAMPING_CONTACT
+      polydem::ContactKinematics<double> kin;
+      kin.xA = A.x;
+      kin.xB = B.x;
+      kin.vA = vec(v[i]);
+      kin.vB = vec(v[j]);
+      kin.wA = vec(omega[i]);
+      kin.wB = vec(omega[j]);
+      kin.meff = damping_mass == polydem::DAMPING_CONTACT
           ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass[i], rmass[j])
           : rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      const double gamma = polydem::ellipsoid_damping(kn[it][jt], meff, restitution[it][jt]);
-      auto cf = polydem::ellipsoid_force(c, overlap, kn[it][jt], gamma, A.x, B.x, vec(v[i]),
-                                         vec(v[j]), vec(omega[i]), vec(omega[j]));
-      if (use_history) {
+      kin.dt = update_history ? update->dt : 0.0;
+      const auto geo = polydem::ellipsoid_geometry(c, overlap, A.x, B.x);
+      const auto law = polydem::ellipsoid_law(kn[it][jt], damping[it * (atom->ntypes + 1) + jt],
+                                              use_history ? friction[it][jt] : 0.0, kt_ratio,
+                                              gt_ratio);
+      double hist[SIZE_HISTORY] = {0.0, 0.0, 0.0};
+      double *shear = use_history ? &allshear[SIZE_HISTORY * jj] : nullptr;
+      const double sign = polydem::contact_history_sign(tag[i], tag[j]);
+      if (shear) {
         touch[jj] = 1;
-        if (friction[it][jt] > 0.0)
-          polydem::ellipsoid_friction(c, cf, kt_ratio * kn[it][jt], gt_ratio * gamma,
-                                      friction[it][jt], A.x, B.x, vec(v[i]), vec(v[j]),
-                                      vec(omega[i]), vec(omega[j]), update->dt,
-                                      &allshear[SIZE_HISTORY * jj], update_history);
+        for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = shear[k];
+        polydem::history_orient(hist, SIZE_HISTORY, sign);
       }
-      if (cf.delta > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
-      if (cf.delta < cf.rate * update->dt) local_counts[CNT_COLLISIONS] += w;
+      const auto cf = polydem::contact_step(geo, law, kin, hist, SIZE_HISTORY);
+      if (shear && update_history) {
+        polydem::history_orient(hist, SIZE_HISTORY, sign);
+        for (int k = 0; k < SIZE_HISTORY; k++) shear[k] = hist[k];
+      }
+      if (geo.volume > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
+      if (geo.volume < cf.rate * update->dt) local_counts[CNT_COLLISIONS] += w;
       f[i][0] += cf.F_A.x;
       f[i][1] += cf.F_A.y;
       f[i][2] += cf.F_A.z;
@@ -440,6 +465,8 @@ void PairEllipsoid::read_restart(FILE *fp)
 
 void PairEllipsoid::write_restart_settings(FILE *fp)
 {
+  const double version = RESTART_VERSION;
+  fwrite(&version, sizeof(double), 1, fp);
   fwrite(&overlap_warn, sizeof(double), 1, fp);
   fwrite(&overlap, sizeof(int), 1, fp);
   fwrite(&damping_mass, sizeof(int), 1, fp);
@@ -449,6 +476,13 @@ void PairEllipsoid::write_restart_settings(FILE *fp)
 
 void PairEllipsoid::read_restart_settings(FILE *fp)
 {
+  double version = 0.0;
+  if (comm->me == 0) utils::sfread(FLERR, &version, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&version, 1, MPI_DOUBLE, 0, world);
+  if (version != RESTART_VERSION)
+    error->all(FLERR, "pair_style ellipsoid: this restart file was written by an older POLYDEM "
+               "(another sign convention of the friction history); restart it with that "
+               "version, or write a data file there and start from it");
   if (comm->me == 0) {
     utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
     utils::sfread(FLERR, &overlap, sizeof(int), 1, fp, nullptr, error);
@@ -461,6 +495,12 @@ void PairEllipsoid::read_restart_settings(FILE *fp)
   MPI_Bcast(&damping_mass, 1, MPI_INT, 0, world);
   MPI_Bcast(&kt_ratio, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&gt_ratio, 1, MPI_DOUBLE, 0, world);
+}
+
+// the history is that of the lower-tag atom of the pair (polydem_contact_law.h)
+void PairEllipsoid::transfer_history(double *source, double *target)
+{
+  for (int k = 0; k < SIZE_HISTORY; k++) target[k] = source[k];
 }
 
 void *PairEllipsoid::extract(const char *str, int &dim)

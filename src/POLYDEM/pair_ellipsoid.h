@@ -17,6 +17,9 @@ PairStyle(ellipsoid,PairEllipsoid);
 #define LMP_PAIR_ELLIPSOID_H
 
 #include "pair.h"
+#include "polydem_contact_law.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -44,6 +47,9 @@ class PairEllipsoid : public Pair {
  protected:
   double **kn, **restitution;    // per type pair
   double **friction;             // per type pair: Coulomb mu (0: frictionless)
+  // damping law of each type pair (damping_law(restitution, 1)), set in
+  // init_one; index i * (ntypes + 1) + j
+  std::vector<polydem::DampingLaw<double>> damping;
   double kt_ratio, gt_ratio;     // k_t / k_n, gamma_t / gamma_n (keyword tangential)
   int use_history;               // some mu > 0: per-pair tangential history
   class FixDummy *fix_dummy;
@@ -57,6 +63,7 @@ class PairEllipsoid : public Pair {
   double reported[NCOUNT];
 
   void allocate();
+  void transfer_history(double *, double *) override;
   int friction_used() const;
   void report_counters();
   void check_timestep();

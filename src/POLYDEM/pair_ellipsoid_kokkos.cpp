@@ -20,6 +20,7 @@
 
 #include "polydem_ellipsoid_force.h"
 #include "polydem_history_kokkos.h"
+#include "polydem_tally_kokkos.h"
 #include "polydem_kokkos_masks.h"
 #include "polydem_shape_template.h"
 
@@ -27,29 +28,7 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-struct EllReduce {
-  double evdwl;
-  double v[6];
-  double cnt[PairEllipsoid::NCOUNT];
-  KOKKOS_INLINE_FUNCTION EllReduce()
-  {
-    evdwl = 0.0;
-    for (int k = 0; k < 6; k++) v[k] = 0.0;
-    for (int k = 0; k < PairEllipsoid::NCOUNT; k++) cnt[k] = 0.0;
-  }
-  KOKKOS_INLINE_FUNCTION void operator+=(const EllReduce &r)
-  {
-    evdwl += r.evdwl;
-    for (int k = 0; k < 6; k++) v[k] += r.v[k];
-    for (int k = 0; k < PairEllipsoid::NCOUNT; k++) cnt[k] += r.cnt[k];
-  }
-  KOKKOS_INLINE_FUNCTION void operator+=(const volatile EllReduce &r) volatile
-  {
-    evdwl += r.evdwl;
-    for (int k = 0; k < 6; k++) v[k] += r.v[k];
-    for (int k = 0; k < PairEllipsoid::NCOUNT; k++) cnt[k] += r.cnt[k];
-  }
-};
+typedef polydem_kk::PairReduce<PairEllipsoid::NCOUNT> EllReduce;
 
 /* ----------------------------------------------------------------------
    one thread per list entry ii: the statements of PairEllipsoid::compute
@@ -70,7 +49,8 @@ template <class DeviceType> struct EllContactFunctor {
   typename AT::t_int_1d_randomread ilist, numneigh;
   typename AT::t_neighbors_2d neighbors;
   Kokkos::View<double *[3], DeviceType> axes;
-  Kokkos::View<double **, DeviceType> kn, en, mu;
+  Kokkos::View<double **, DeviceType> kn, mu;
+  Kokkos::View<polydem::DampingLaw<double> **, DeviceType> damp;
   // friction (use_history): per-pair tangential displacement, stored as the
   // displacement of the lower-tag atom's point relative to the other's (the
   // Kokkos history fix copies it to the partner unchanged; see
@@ -84,7 +64,7 @@ template <class DeviceType> struct EllContactFunctor {
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
   int nlocal, newton_pair, overlap, damping_mass;
-  int eflag_global, eflag_atom, vflag_global, vflag_atom;
+  polydem_kk::TallyFlags tally;
   double dt, overlap_warn;
 
   KOKKOS_INLINE_FUNCTION polydem::EllipsoidPose<double> pose(int i) const
@@ -139,72 +119,39 @@ template <class DeviceType> struct EllContactFunctor {
       for (int k = 0; k < 5; k++)
         if (ax[k] < amin) amin = ax[k];
       const int it = type(i), jt = type(j);
-      const double meff = damping_mass == polydem::DAMPING_CONTACT
+      polydem::ContactKinematics<double> kin;
+      kin.xA = A.x;
+      kin.xB = B.x;
+      kin.vA = polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2));
+      kin.vB = polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2));
+      kin.wA = polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2));
+      kin.wB = polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2));
+      kin.meff = damping_mass == polydem::DAMPING_CONTACT
           ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass(i), rmass(j))
           : rmass(i) * rmass(j) / (rmass(i) + rmass(j));
-      const double gamma = polydem::ellipsoid_damping(kn(it, jt), meff, en(it, jt));
-      const auto vi = polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2));
-      const auto vj = polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2));
-      const auto wi = polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2));
-      const auto wj = polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2));
-      auto cf = polydem::ellipsoid_force(c, overlap, kn(it, jt), gamma, A.x, B.x, vi, vj, wi, wj);
+      kin.dt = shearupdate ? dt : 0.0;
+      const auto geo = polydem::ellipsoid_geometry(c, overlap, A.x, B.x);
+      const auto law = polydem::ellipsoid_law(kn(it, jt), damp(it, jt),
+                                              use_history ? mu(it, jt) : 0.0, kt_ratio, gt_ratio);
+      // the history is that of the lower-tag atom (polydem_contact_law.h)
+      double hist[3] = {0.0, 0.0, 0.0};
+      const double sign = use_history ? polydem::contact_history_sign(tag(i), tag(j)) : 1.0;
       if (use_history) {
         firsttouch(i, jj) = 1;
-        if (mu(it, jt) > 0.0) {
-          const double sign = tag(i) < tag(j) ? 1.0 : -1.0;    // exact: as the plain style
-          double hist[3];
-          for (int k = 0; k < 3; k++) hist[k] = sign * firstshear(i, 3 * jj + k);
-          polydem::ellipsoid_friction(c, cf, kt_ratio * kn(it, jt), gt_ratio * gamma, mu(it, jt),
-                                      A.x, B.x, vi, vj, wi, wj, dt, hist, shearupdate != 0);
-          if (shearupdate)
-            for (int k = 0; k < 3; k++) firstshear(i, 3 * jj + k) = sign * hist[k];
-        }
+        for (int k = 0; k < 3; k++) hist[k] = firstshear(i, 3 * jj + k);
+        polydem::history_orient(hist, 3, sign);
       }
-      if (cf.delta > overlap_warn * amin) red.cnt[PairEllipsoid::CNT_BIGOVERLAP] += 1.0;
-      if (cf.delta < cf.rate * dt) red.cnt[PairEllipsoid::CNT_COLLISIONS] += w;
+      const auto cf = polydem::contact_step(geo, law, kin, hist, 3);
+      if (use_history && shearupdate) {
+        polydem::history_orient(hist, 3, sign);
+        for (int k = 0; k < 3; k++) firstshear(i, 3 * jj + k) = hist[k];
+      }
+      if (geo.volume > overlap_warn * amin) red.cnt[PairEllipsoid::CNT_BIGOVERLAP] += 1.0;
+      if (geo.volume < cf.rate * dt) red.cnt[PairEllipsoid::CNT_COLLISIONS] += w;
 
+      polydem_kk::scatter_contact(f, torque, i, j, newton_pair || j < nlocal, cf);
       const double F[3] = {cf.F_A.x, cf.F_A.y, cf.F_A.z};
-      const double tA[3] = {cf.tau_A.x, cf.tau_A.y, cf.tau_A.z};
-      const double tB[3] = {cf.tau_B.x, cf.tau_B.y, cf.tau_B.z};
-      for (int k = 0; k < 3; k++) {
-        Kokkos::atomic_add(&f(i, k), F[k]);
-        Kokkos::atomic_add(&torque(i, k), tA[k]);
-      }
-      if (newton_pair || j < nlocal)
-        for (int k = 0; k < 3; k++) {
-          Kokkos::atomic_add(&f(j, k), -F[k]);
-          Kokkos::atomic_add(&torque(j, k), tB[k]);
-        }
-
-      // Pair::ev_tally_xyz
-      const bool ti = newton_pair || i < nlocal, tj = newton_pair || j < nlocal;
-      const double e = cf.energy;
-      if (eflag_global) {
-        if (newton_pair)
-          red.evdwl += e;
-        else {
-          if (i < nlocal) red.evdwl += 0.5 * e;
-          if (j < nlocal) red.evdwl += 0.5 * e;
-        }
-      }
-      if (eflag_atom) {
-        if (ti) Kokkos::atomic_add(&eatom(i), 0.5 * e);
-        if (tj) Kokkos::atomic_add(&eatom(j), 0.5 * e);
-      }
-      if (vflag_global || vflag_atom) {
-        const double vv[6] = {delx * F[0], dely * F[1], delz * F[2],
-                              delx * F[1], delx * F[2], dely * F[2]};
-        const double wi = newton_pair ? 1.0 : (i < nlocal ? 0.5 : 0.0);
-        const double wj = newton_pair ? 0.0 : (j < nlocal ? 0.5 : 0.0);
-        if (vflag_global)
-          for (int k = 0; k < 6; k++) red.v[k] += (wi + wj) * vv[k];
-        if (vflag_atom) {
-          if (ti)
-            for (int k = 0; k < 6; k++) Kokkos::atomic_add(&vatom(i, k), 0.5 * vv[k]);
-          if (tj)
-            for (int k = 0; k < 6; k++) Kokkos::atomic_add(&vatom(j, k), 0.5 * vv[k]);
-        }
-      }
+      polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, cf.energy, F, delx, dely, delz);
     }
   }
 };
@@ -284,19 +231,20 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::update_device_
   if (params_dirty) {
     const int n = atom->ntypes;
     d_kn = Kokkos::View<double **, DeviceType>("ellipsoid/kk:kn", n + 1, n + 1);
-    d_en = Kokkos::View<double **, DeviceType>("ellipsoid/kk:en", n + 1, n + 1);
+    d_damp = Kokkos::View<polydem::DampingLaw<double> **, DeviceType>("ellipsoid/kk:damp", n + 1,
+                                                                     n + 1);
     d_mu = Kokkos::View<double **, DeviceType>("ellipsoid/kk:mu", n + 1, n + 1);
     auto hm = Kokkos::create_mirror_view(d_mu);
     auto hk = Kokkos::create_mirror_view(d_kn);
-    auto he = Kokkos::create_mirror_view(d_en);
+    auto hd = Kokkos::create_mirror_view(d_damp);
     for (int i = 1; i <= n; i++)
       for (int j = 1; j <= n; j++) {
         hk(i, j) = kn[i][j];
-        he(i, j) = restitution[i][j];
+        hd(i, j) = damping[i * (n + 1) + j];
         hm(i, j) = friction[i][j];
       }
     Kokkos::deep_copy(d_kn, hk);
-    Kokkos::deep_copy(d_en, he);
+    Kokkos::deep_copy(d_damp, hd);
     Kokkos::deep_copy(d_mu, hm);
     params_dirty = 0;
   }
@@ -341,7 +289,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   fn.neighbors = k_list->d_neighbors;
   fn.axes = d_axes;
   fn.kn = d_kn;
-  fn.en = d_en;
+  fn.damp = d_damp;
   fn.mu = d_mu;
   fn.use_history = use_history;
   fn.kt_ratio = kt_ratio;
@@ -370,10 +318,8 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   fn.newton_pair = force->newton_pair;
   fn.overlap = overlap;
   fn.damping_mass = damping_mass;
-  fn.eflag_global = eflag_global;
-  fn.eflag_atom = eflag_atom;
-  fn.vflag_global = vflag_global;
-  fn.vflag_atom = vflag_atom;
+  fn.tally = {atom->nlocal, force->newton_pair, eflag_global, eflag_atom, vflag_global,
+              vflag_atom};
   fn.dt = update->dt;
   fn.overlap_warn = overlap_warn;
 
@@ -387,10 +333,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   }
   if (fn.count_partners)
     polydem_kk::ensure_partners<DeviceType>(fix_history, d_npartner, nlocal, atom->nmax, world);
-  if (eflag_global) eng_vdwl += red.evdwl;
-  if (vflag_global)
-    for (int k = 0; k < 6; k++) virial[k] += red.v[k];
-  for (int k = 0; k < NCOUNT; k++) local_counts[k] += red.cnt[k];
+  polydem_kk::add_reduced(this, fn.tally, red, local_counts, NCOUNT);
 
   if (eflag_atom) {
     k_eatom.template modify<DeviceType>();

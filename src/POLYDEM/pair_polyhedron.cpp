@@ -21,7 +21,8 @@
 #include "update.h"
 
 #include "compute.h"
-#include "polydem_contact_model.h"
+#include "polydem_contact_law.h"
+#include "polydem_damping.h"
 #include "polydem_contact_record.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
@@ -32,14 +33,17 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
-static constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // tangential displacement, k_t
+static constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // s, k_t, twist (polydem_contact_law.h)
+// first value of the restart settings since the history has 5 values (older
+// files begin with overlap/warn, which is > 0)
+static constexpr double RESTART_VERSION = -2.0;
 
 /* ---------------------------------------------------------------------- */
 
 PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
     Pair(lmp), youngs(nullptr), poisson(nullptr), matset(nullptr), restitution(nullptr),
-    friction(nullptr), dampratio(nullptr), pairset(nullptr), overlap_warn(0.05), core(1.0e-4),
-    dt(0.0), avec(nullptr),
+    friction(nullptr), pairset(nullptr), twist(0), overlap_warn(0.05), core(1.0e-4), dt(0.0),
+    avec(nullptr),
     fix_dummy(nullptr), fix_history(nullptr), contact_step(-1)
 {
   single_enable = 0;
@@ -47,7 +51,9 @@ PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
   no_virial_fdotr_compute = 1;
   centroidstressflag = CENTROID_NOTAVAIL;
   finitecutflag = 1;
-  nondefault_history_transfer = 0;
+  // one history sign convention (polydem_contact_law.h): a pair's history is
+  // that of its lower-tag atom, copied to the partner unchanged
+  nondefault_history_transfer = 1;
   for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
 
   ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
@@ -76,7 +82,6 @@ PairPolyhedron::~PairPolyhedron()
     memory->destroy(matset);
     memory->destroy(restitution);
     memory->destroy(friction);
-    memory->destroy(dampratio);
     memory->destroy(pairset);
   }
 }
@@ -94,27 +99,34 @@ void PairPolyhedron::allocate()
   memory->create(matset, n + 1, "pair:matset");
   memory->create(restitution, n + 1, n + 1, "pair:restitution");
   memory->create(friction, n + 1, n + 1, "pair:friction");
-  memory->create(dampratio, n + 1, n + 1, "pair:dampratio");
+  damping.assign((size_t) (n + 1) * (n + 1), polydem::damping_law(1.0, 0));
   memory->create(pairset, n + 1, n + 1, "pair:pairset");
   for (int i = 0; i <= n; i++) {
     youngs[i] = poisson[i] = 0.0;
     matset[i] = 0;
     for (int j = 0; j <= n; j++) {
       setflag[i][j] = pairset[i][j] = 0;
-      restitution[i][j] = friction[i][j] = dampratio[i][j] = 0.0;
+      restitution[i][j] = friction[i][j] = 0.0;
     }
   }
 }
 
 /* ----------------------------------------------------------------------
-   pair_style polyhedron [overlap/warn f] [core f]
+   pair_style polyhedron [overlap/warn f] [core f] [twist yes|no]
 ------------------------------------------------------------------------- */
 
 void PairPolyhedron::settings(int narg, char **arg)
 {
   overlap_warn = 0.05;
   core = 1.0e-4;
+  twist = 0;
   for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (strcmp(arg[iarg], "twist") == 0) {
+      if (iarg + 1 >= narg || (strcmp(arg[iarg + 1], "yes") && strcmp(arg[iarg + 1], "no")))
+        error->all(FLERR, "pair_style polyhedron: twist expects yes or no");
+      twist = strcmp(arg[iarg + 1], "yes") == 0;
+      continue;
+    }
     if (strcmp(arg[iarg], "core") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "pair_style polyhedron: core needs a value");
       core = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
@@ -245,8 +257,9 @@ double PairPolyhedron::init_one(int i, int j)
   }
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
-  // calibrated once here (about 0.3 s per distinct e), not per contact
-  dampratio[i][j] = dampratio[j][i] = polydem::damping_factor(restitution[i][j]);
+  // closed form (polydem_damping.h), once per type pair
+  const int nt = atom->ntypes + 1;
+  damping[i * nt + j] = damping[j * nt + i] = polydem::damping_law(restitution[i][j], 0);
 
   // particles present, and those an insertion fix may add later
   double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
@@ -272,10 +285,11 @@ void PairPolyhedron::check_timestep()
     const double kn = 2.0 * youngs[type] * R;
     tc[0] = MIN(tc[0], MY_PI * sqrt(0.5 * m / (kn * force->ftm2v)));
     // like pair of this particle, its largest face flat on another's
-    const auto p = polydem::make_contact_params(youngs[type], 0.0, V * s * s * s, m / force->ftm2v,
-                                                youngs[type], 0.0, V * s * s * s, m / force->ftm2v,
-                                                0.0, 0.0, core, 0.0);
-    const double dtf = polydem::face_contact_stable_dt(p, shape.max_face_area() * s * s);
+    const double Vs = V * s * s * s, ms = m / force->ftm2v;
+    const auto law = polydem::feng_law(youngs[type], 0.0, Vs, youngs[type], 0.0, Vs,
+                                       polydem::damping_law(1.0, 0), 0.0, core, 0);
+    const double dtf = polydem::face_contact_stable_dt(law.normal, ms * ms / (ms + ms),
+                                                       shape.max_face_area() * s * s);
     if (dtf > 0.0) tc[1] = MIN(tc[1], dtf);
   };
   for (int i = 0; i < atom->nlocal; i++)
@@ -384,20 +398,28 @@ void PairPolyhedron::compute(int eflag, int vflag)
 
       // material, Eqs. 13, 19, 20
       const int itype = type[i], jtype = type[j];
-      const auto p = polydem::make_contact_params(
-          youngs[itype], poisson[itype], Vi, rmass[i], youngs[jtype], poisson[jtype], Vj,
-          rmass[j], dampratio[itype][jtype], friction[itype][jtype],
-          core, shearupdate ? dt : 0.0);
+      const auto law = polydem::feng_law(youngs[itype], poisson[itype], Vi, youngs[jtype],
+                                         poisson[jtype], Vj,
+                                         damping[itype * (atom->ntypes + 1) + jtype],
+                                         friction[itype][jtype], core, twist);
+      polydem::ContactKinematics<double> kin;
+      kin.xA = pi.x;
+      kin.xB = pj.x;
+      kin.vA = polydem::make_vec3(v[i][0], v[i][1], v[i][2]);
+      kin.vB = polydem::make_vec3(v[j][0], v[j][1], v[j][2]);
+      kin.wA = polydem::make_vec3(omega[i][0], omega[i][1], omega[i][2]);
+      kin.wB = polydem::make_vec3(omega[j][0], omega[j][1], omega[j][2]);
+      kin.meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
+      kin.dt = shearupdate ? dt : 0.0;
 
       const auto geo = polydem::contact_geometry<double>(ov);
+      const double sign = polydem::contact_history_sign(tag[i], tag[j]);
       double hist[SIZE_HISTORY];
       for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = shear[k];
-      const auto cf = polydem::contact_force(
-          geo, p, pi.x, pj.x, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
-          polydem::make_vec3(v[j][0], v[j][1], v[j][2]),
-          polydem::make_vec3(omega[i][0], omega[i][1], omega[i][2]),
-          polydem::make_vec3(omega[j][0], omega[j][1], omega[j][2]), hist);
+      polydem::history_orient(hist, SIZE_HISTORY, sign);
+      const auto cf = polydem::contact_step(geo, law, kin, hist, SIZE_HISTORY);
       if (shearupdate) {
+        polydem::history_orient(hist, SIZE_HISTORY, sign);
         for (int k = 0; k < SIZE_HISTORY; k++) shear[k] = hist[k];
       }
 
@@ -493,16 +515,41 @@ void PairPolyhedron::report_counters(bool /*final*/)
 
 void PairPolyhedron::write_restart_settings(FILE *fp)
 {
+  const double version = RESTART_VERSION, tw = twist;
+  fwrite(&version, sizeof(double), 1, fp);
   fwrite(&overlap_warn, sizeof(double), 1, fp);
   fwrite(&core, sizeof(double), 1, fp);
+  fwrite(&tw, sizeof(double), 1, fp);
 }
 
 void PairPolyhedron::read_restart_settings(FILE *fp)
 {
-  if (comm->me == 0) utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
-  if (comm->me == 0) utils::sfread(FLERR, &core, sizeof(double), 1, fp, nullptr, error);
+  double version = 0.0, tw = 0.0;
+  if (comm->me == 0) utils::sfread(FLERR, &version, sizeof(double), 1, fp, nullptr, error);
+  MPI_Bcast(&version, 1, MPI_DOUBLE, 0, world);
+  if (version != RESTART_VERSION)
+    error->all(FLERR, "pair_style polyhedron: this restart file was written by an older POLYDEM "
+               "(contact history of 4 values, another sign convention); restart it with that "
+               "version, or write a data file there and start from it");
+  if (comm->me == 0) {
+    utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &core, sizeof(double), 1, fp, nullptr, error);
+    utils::sfread(FLERR, &tw, sizeof(double), 1, fp, nullptr, error);
+  }
   MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
   MPI_Bcast(&core, 1, MPI_DOUBLE, 0, world);
+  MPI_Bcast(&tw, 1, MPI_DOUBLE, 0, world);
+  twist = tw != 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   the history is that of the lower-tag atom of the pair
+   (polydem_contact_law.h): the partner's copy is the same numbers
+------------------------------------------------------------------------- */
+
+void PairPolyhedron::transfer_history(double *source, double *target)
+{
+  for (int k = 0; k < SIZE_HISTORY; k++) target[k] = source[k];
 }
 
 void PairPolyhedron::write_restart(FILE *fp)

@@ -3,7 +3,7 @@
    between rigid convex polyhedra (polyhedral seed §2.2-2.5): bounding-sphere
    broad phase on LAMMPS's neighbor list, GJK, overlap polyhedron by dual
    Quickhull, Feng's normal force from W(V), damping, Cundall-Strack friction
-   with history. Physics in polydem_overlap.h and polydem_contact_model.h.
+   with history. Physics in polydem_overlap.h and polydem_contact_law.h.
 ------------------------------------------------------------------------- */
 
 #ifdef PAIR_CLASS
@@ -16,6 +16,7 @@ PairStyle(polyhedron,PairPolyhedron);
 #define LMP_PAIR_POLYHEDRON_H
 
 #include "pair.h"
+#include "polydem_contact_law.h"
 
 #include <memory>
 #include <vector>
@@ -58,7 +59,10 @@ class PairPolyhedron : public Pair {
   double *youngs, *poisson;    // per type
   int *matset;                 // per type: material given
   double **restitution, **friction;
-  double **dampratio;          // damping_factor(restitution), set in init_one
+  // damping law of each type pair (damping_law(restitution)), set in init_one;
+  // index i * (ntypes + 1) + j
+  std::vector<polydem::DampingLaw<double>> damping;
+  int twist;                   // torsional friction of the contact area (polydem_contact_law.h)
   int **pairset;               // explicit e, mu for an unlike pair
   double overlap_warn;         // warn for V > overlap_warn * smaller particle volume
   double core;                 // quadratic W below V0 = core * smaller particle volume
@@ -75,6 +79,7 @@ class PairPolyhedron : public Pair {
   double local_counts[NCOUNT];
   double reported[NCOUNT];
 
+  void transfer_history(double *, double *) override;
   std::vector<double> contact_data;    // CR_NFIELD doubles per stored contact
   bigint contact_step;                 // step of contact_data, -1: none
 

@@ -19,9 +19,11 @@
 #include "neighbor.h"
 #include "update.h"
 
-#include "polydem_contact_model.h"
+#include "polydem_contact_law.h"
+#include "polydem_damping.h"
 #include "polydem_contact_record.h"
 #include "polydem_history_kokkos.h"
+#include "polydem_tally_kokkos.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
 
@@ -109,29 +111,7 @@ template <class DeviceType> struct PolyScanFunctor {
 };
 
 // energy, virial and kernel-status counters of one batch
-struct PolyReduce {
-  double evdwl;
-  double v[6];
-  double cnt[PairPolyhedron::NCOUNT];
-  KOKKOS_INLINE_FUNCTION PolyReduce()
-  {
-    evdwl = 0.0;
-    for (int k = 0; k < 6; k++) v[k] = 0.0;
-    for (int k = 0; k < PairPolyhedron::NCOUNT; k++) cnt[k] = 0.0;
-  }
-  KOKKOS_INLINE_FUNCTION void operator+=(const PolyReduce &r)
-  {
-    evdwl += r.evdwl;
-    for (int k = 0; k < 6; k++) v[k] += r.v[k];
-    for (int k = 0; k < PairPolyhedron::NCOUNT; k++) cnt[k] += r.cnt[k];
-  }
-  KOKKOS_INLINE_FUNCTION void operator+=(const volatile PolyReduce &r) volatile
-  {
-    evdwl += r.evdwl;
-    for (int k = 0; k < 6; k++) v[k] += r.v[k];
-    for (int k = 0; k < PairPolyhedron::NCOUNT; k++) cnt[k] += r.cnt[k];
-  }
-};
+typedef polydem_kk::PairReduce<PairPolyhedron::NCOUNT> PolyReduce;
 
 /* ----------------------------------------------------------------------
    step 3: one thread per candidate pair; the statements of
@@ -159,7 +139,8 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   Kokkos::View<int *[2], DeviceType> pairs;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
   Kokkos::View<double *, DeviceType> youngs, poisson;
-  Kokkos::View<double **, DeviceType> damp, mu;
+  Kokkos::View<polydem::DampingLaw<double> **, DeviceType> damp;
+  Kokkos::View<double **, DeviceType> mu;
   Kokkos::View<char *, DeviceType> workspace;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
@@ -167,8 +148,8 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> records;
   int store_contacts;
   int first;    // pair index of slot 0
-  int nlocal, newton_pair, shearupdate;
-  int eflag_global, eflag_atom, vflag_global, vflag_atom;
+  int nlocal, newton_pair, shearupdate, twist;
+  polydem_kk::TallyFlags tally;
   double dt, overlap_warn, core;
 
   KOKKOS_INLINE_FUNCTION void no_contact(int i, int jj) const
@@ -216,85 +197,45 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
     if (ov.volume > overlap_warn * (Vi < Vj ? Vi : Vj))
       red.cnt[PairPolyhedron::CNT_BIGOVERLAP] += 1.0;
 
-    // material, Eqs. 13, 19, 20: the plain style's mixing (damp precomputed
-    // per type pair on the host with the same damping_factor)
+    // material, Eqs. 13, 19, 20: the plain style's law (damping per type
+    // pair from the host's damping_law)
     const int itype = type(i), jtype = type(j);
-    const auto cp = polydem::make_contact_params(
-        youngs(itype), poisson(itype), Vi, rmass(i), youngs(jtype), poisson(jtype), Vj, rmass(j),
-        damp(itype, jtype), mu(itype, jtype), core, shearupdate ? dt : 0.0);
+    const auto law = polydem::feng_law(youngs(itype), poisson(itype), Vi, youngs(jtype),
+                                       poisson(jtype), Vj, damp(itype, jtype), mu(itype, jtype),
+                                       core, twist);
+    polydem::ContactKinematics<double> kin;
+    kin.xA = pi.x;
+    kin.xB = pj.x;
+    kin.vA = polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2));
+    kin.vB = polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2));
+    kin.wA = polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2));
+    kin.wB = polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2));
+    kin.meff = rmass(i) * rmass(j) / (rmass(i) + rmass(j));
+    kin.dt = shearupdate ? dt : 0.0;
 
     const auto geo = polydem::contact_geometry<double>(ov);
-    // stored history: displacement of the lower-tag particle relative to the
-    // other one, so that it needs no sign change when the pair is listed the
-    // other way round after reneighboring (FixNeighHistoryKokkos of LAMMPS
-    // 29Sep2021 copies it to the partner unchanged; the plain FixNeighHistory
-    // negates it). Multiplying by +-1 is exact: same numbers as the plain style.
-    const double sign = tag(i) < tag(j) ? 1.0 : -1.0;
+    // the history is that of the lower-tag atom (polydem_contact_law.h);
+    // FixNeighHistoryKokkos copies it to the partner unchanged
+    const double sign = polydem::contact_history_sign(tag(i), tag(j));
     double hist[SIZE_HISTORY];
-    for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = sign * firstshear(i, SIZE_HISTORY * jj + k);
-    const auto cf =
-        polydem::contact_force(geo, cp, pi.x, pj.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
-                               polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
-                               polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)),
-                               polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2)), hist);
-    if (shearupdate)
-      for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = sign * hist[k];
-
-    const double F[3] = {cf.F_A.x, cf.F_A.y, cf.F_A.z};
-    const double tA[3] = {cf.tau_A.x, cf.tau_A.y, cf.tau_A.z};
-    const double tB[3] = {cf.tau_B.x, cf.tau_B.y, cf.tau_B.z};
-    for (int k = 0; k < 3; k++) {
-      Kokkos::atomic_add(&f(i, k), F[k]);
-      Kokkos::atomic_add(&torque(i, k), tA[k]);
+    for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = firstshear(i, SIZE_HISTORY * jj + k);
+    polydem::history_orient(hist, SIZE_HISTORY, sign);
+    const auto cf = polydem::contact_step(geo, law, kin, hist, SIZE_HISTORY);
+    if (shearupdate) {
+      polydem::history_orient(hist, SIZE_HISTORY, sign);
+      for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = hist[k];
     }
+
+    polydem_kk::scatter_contact(f, torque, i, j, newton_pair || j < nlocal, cf);
     if (store_contacts) {
       const double xi[3] = {pi.x.x, pi.x.y, pi.x.z}, xj[3] = {pj.x.x, pj.x.y, pj.x.z};
       if (polydem::contact_owned(newton_pair, j < nlocal, tag(i), tag(j), xi, xj))
         polydem::fill_contact_record(&records(p, 0), tag(i), tag(j), mask(i), mask(j),
                                      Vi < Vj ? Vi : Vj, geo, cf);
     }
-    if (newton_pair || j < nlocal)
-      for (int k = 0; k < 3; k++) {
-        Kokkos::atomic_add(&f(j, k), -F[k]);
-        Kokkos::atomic_add(&torque(j, k), tB[k]);
-      }
-
-    // Pair::ev_tally_xyz
-    const bool ti = newton_pair || i < nlocal, tj = newton_pair || j < nlocal;
-    const double e = cf.energy;
-    if (eflag_global) {
-      if (newton_pair)
-        red.evdwl += e;
-      else {
-        if (i < nlocal) red.evdwl += 0.5 * e;
-        if (j < nlocal) red.evdwl += 0.5 * e;
-      }
-    }
-    if (eflag_atom) {
-      if (ti) Kokkos::atomic_add(&eatom(i), 0.5 * e);
-      if (tj) Kokkos::atomic_add(&eatom(j), 0.5 * e);
-    }
-    if (vflag_global || vflag_atom) {
-      const double delx = pi.x.x - pj.x.x, dely = pi.x.y - pj.x.y, delz = pi.x.z - pj.x.z;
-      const double vv[6] = {delx * F[0], dely * F[1], delz * F[2],
-                            delx * F[1], delx * F[2], dely * F[2]};
-      if (vflag_global) {
-        if (newton_pair)
-          for (int k = 0; k < 6; k++) red.v[k] += vv[k];
-        else {
-          if (i < nlocal)
-            for (int k = 0; k < 6; k++) red.v[k] += 0.5 * vv[k];
-          if (j < nlocal)
-            for (int k = 0; k < 6; k++) red.v[k] += 0.5 * vv[k];
-        }
-      }
-      if (vflag_atom) {
-        if (ti)
-          for (int k = 0; k < 6; k++) Kokkos::atomic_add(&vatom(i, k), 0.5 * vv[k]);
-        if (tj)
-          for (int k = 0; k < 6; k++) Kokkos::atomic_add(&vatom(j, k), 0.5 * vv[k]);
-      }
-    }
+    const double F[3] = {cf.F_A.x, cf.F_A.y, cf.F_A.z};
+    polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, cf.energy, F, pi.x.x - pj.x.x,
+                             pi.x.y - pj.x.y, pi.x.z - pj.x.z);
   }
 };
 
@@ -473,7 +414,8 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_params
   const int n = atom->ntypes;
   d_youngs = Kokkos::View<double *, DeviceType>("polyhedron/kk:youngs", n + 1);
   d_poisson = Kokkos::View<double *, DeviceType>("polyhedron/kk:poisson", n + 1);
-  d_damp = Kokkos::View<double **, DeviceType>("polyhedron/kk:damp", n + 1, n + 1);
+  d_damp = Kokkos::View<polydem::DampingLaw<double> **, DeviceType>("polyhedron/kk:damp", n + 1,
+                                                                    n + 1);
   d_mu = Kokkos::View<double **, DeviceType>("polyhedron/kk:mu", n + 1, n + 1);
   auto h_youngs = Kokkos::create_mirror_view(d_youngs);
   auto h_poisson = Kokkos::create_mirror_view(d_poisson);
@@ -483,7 +425,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_params
     h_youngs(i) = youngs[i];
     h_poisson(i) = poisson[i];
     for (int j = 1; j <= n; j++) {
-      h_damp(i, j) = restitution[i][j] > 0.0 ? polydem::damping_factor(restitution[i][j]) : 0.0;
+      h_damp(i, j) = damping[i * (n + 1) + j];
       h_mu(i, j) = friction[i][j];
     }
   }
@@ -617,10 +559,9 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.nlocal = atom->nlocal;
   fn.newton_pair = force->newton_pair;
   fn.shearupdate = update->setupflag ? 0 : 1;
-  fn.eflag_global = eflag_global;
-  fn.eflag_atom = eflag_atom;
-  fn.vflag_global = vflag_global;
-  fn.vflag_atom = vflag_atom;
+  fn.twist = twist;
+  fn.tally = {atom->nlocal, force->newton_pair, eflag_global, eflag_atom, vflag_global,
+              vflag_atom};
   fn.dt = update->dt;
   fn.overlap_warn = overlap_warn;
   fn.core = core;
@@ -643,10 +584,7 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
     total += red;
   }
 
-  if (eflag_global) eng_vdwl += total.evdwl;
-  if (vflag_global)
-    for (int k = 0; k < 6; k++) virial[k] += total.v[k];
-  for (int k = 0; k < NCOUNT; k++) local_counts[k] += total.cnt[k];
+  polydem_kk::add_reduced(this, fn.tally, total, local_counts, NCOUNT);
 }
 
 /* ----------------------------------------------------------------------

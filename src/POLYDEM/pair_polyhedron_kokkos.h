@@ -5,7 +5,7 @@
    the polyhedral seed §2.2: candidates per particle (bounding spheres
    overlap) -> exclusive prefix sum -> (i, jj) pair array -> one thread per
    pair running the same kernels as the plain style (GJK, overlap
-   polyhedron, contact_force), forces and torques accumulated with atomics.
+   polyhedron, contact_step), forces and torques accumulated with atomics.
    Overlap workspaces (seed §2.3) are preallocated per pair slot and the
    pairs are processed in batches of at most as many slots as a memory
    budget allows; their size follows the largest face count present.
@@ -64,10 +64,11 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges, d_sdual;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
 
-  // per type / type pair: E, nu; restitution damping factor, friction
+  // per type / type pair: E, nu; damping law, friction
   int params_dirty;
   Kokkos::View<double *, DeviceType> d_youngs, d_poisson;
-  Kokkos::View<double **, DeviceType> d_damp, d_mu;
+  Kokkos::View<polydem::DampingLaw<double> **, DeviceType> d_damp;
+  Kokkos::View<double **, DeviceType> d_mu;
 
   // contact-pair array: candidates per list entry, their exclusive prefix
   // sum, and (i, jj) per candidate

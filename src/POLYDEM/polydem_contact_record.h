@@ -8,7 +8,7 @@
 #ifndef POLYDEM_CONTACT_RECORD_H
 #define POLYDEM_CONTACT_RECORD_H
 
-#include "polydem_contact_model.h"
+#include "polydem_contact_law.h"
 
 namespace polydem {
 

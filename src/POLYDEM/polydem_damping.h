@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    POLYDEM - normal damping ratio zeta for a restitution e (polyhedral seed
-   Eqs. 14-15), shared by pair polyhedron and fix wall/mesh. No LAMMPS
-   includes; host only.
+   Eqs. 14-15), shared by every contact (polydem_contact_law.h DampingLaw).
+   No LAMMPS includes; host only.
 
    A self-similar contact with V ~ delta^a (a = 1 face, 2 edge, 3 vertex)
    and W' ~ V^q (q = 1/3 Feng's law, 1 in the quadratic core) is, in units
@@ -23,6 +23,8 @@
 #ifndef POLYDEM_DAMPING_H
 #define POLYDEM_DAMPING_H
 
+#include "polydem_contact_law.h"
+
 #include <cmath>
 
 namespace polydem {
@@ -40,6 +42,18 @@ inline double damping_ratio(double e, double q)
 inline double damping_factor(double e)
 {
   return damping_ratio(e, 1.0 / 3.0);
+}
+
+// The damping law of restitution e (polydem_contact_law.h): zeta at q = 1/3
+// and q = 1; local: zeta at the contact's own exponent (walls, ellipsoids),
+// else the face contact's zeta(e, 1/3) (pair polyhedron).
+inline DampingLaw<double> damping_law(double e, int local)
+{
+  DampingLaw<double> d;
+  d.z[0] = damping_ratio(e, 1.0 / 3.0);
+  d.z[1] = damping_ratio(e, 1.0);
+  d.local = local;
+  return d;
 }
 
 }    // namespace polydem

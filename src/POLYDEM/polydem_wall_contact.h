@@ -10,7 +10,7 @@
    (polydem_clip.h: prisms of a flat triangulated wall partition the space
    behind it, so V, S, M of a flat patch equal those of the infinite plane
    whatever the triangulation), and the patch is one contact of the pair
-   model (polydem_contact_model.h, Eqs. 12-20):
+   model (polydem_contact_law.h, Eqs. 12-20):
      F = -W'(V) S,  tau = -W'(V) M   (+ damping, Cundall-Strack friction),
    so each patch force is the exact gradient of W(V_patch), with no double
    counting or spikes at shared edges and vertices. A sharp edge of the
@@ -31,7 +31,7 @@
 #define POLYDEM_WALL_CONTACT_H
 
 #include "polydem_clip.h"
-#include "polydem_contact_model.h"
+#include "polydem_contact_law.h"
 #include "polydem_mesh_grid.h"
 
 #include <cmath>
@@ -720,48 +720,18 @@ template <typename T> struct MeshPose {
   Vec3<T> vw, w;   // translation velocity, angular velocity (lab)
 };
 
-// Normal damping of a wall contact. contact_force's damping ratio is
-// calibrated for a face contact (V = A delta, W' ~ V^(1/3)) of a free
-// particle. A corner or edge hitting a wall is a different self-similar
-// contact: with V ~ delta^a (a = A delta / V: 1 face, 2 edge, 3 vertex) and
-// W' ~ V^q (q = dlnW'/dlnV: 1/3 for Feng's law, 1 deep in the quadratic
-// core V << V0), F = W'(V) A ~ delta^(a(q+1) - 1) and the model's local
-// stiffness W''(V) A^2 = q a F / delta. The damping ratio for restitution e
-// then depends on q (exactly, not on a: polydem_damping.h), and the contact
-// point sees the mass m_c = 1 / (1/m + (r x n).I^-1 (r x n)) (r: centre to
-// contact point), not m. The wall contact uses m_c and zeta(e, q) from a
-// table filled on the host (its a axis holds equal values), so that a corner
-// impact reverses the contact point's normal velocity by e (the assumption
-// of seed Eqs. 27-28).
-constexpr int WALL_DAMP_N = 9;    // a = 1, 1.25, ..., 3; q = 1/3 and 1
-template <typename T> struct WallDamping {
-  T z[2][WALL_DAMP_N];
-};
-
-template <typename T> POLYDEM_FN T wall_damping_ratio(const WallDamping<T> &d, T a, T q)
-{
-  T u = (a - T(1)) * T(4);
-  if (!(u > T(0))) u = T(0);
-  if (u > T(WALL_DAMP_N - 1)) u = T(WALL_DAMP_N - 1);
-  int k = (int) u;
-  if (k > WALL_DAMP_N - 2) k = WALL_DAMP_N - 2;
-  const T f = u - T(k);
-  T wq = (q - T(1) / T(3)) * T(1.5);
-  wq = wq < T(0) ? T(0) : (wq > T(1) ? T(1) : wq);
-  const T z0 = (T(1) - f) * d.z[0][k] + f * d.z[0][k + 1];
-  const T z1 = (T(1) - f) * d.z[1][k] + f * d.z[1][k + 1];
-  return (T(1) - wq) * z0 + wq * z1;
-}
-
-// zeta(e, a, q) table for restitution e (host only; polydem_damping.h: the
-// exact ratio does not depend on a, and interpolation in q is linear)
-inline WallDamping<double> wall_damping_table(double e)
-{
-  WallDamping<double> d;
-  for (int iq = 0; iq < 2; iq++)
-    for (int k = 0; k < WALL_DAMP_N; k++) d.z[iq][k] = damping_ratio(e, iq == 0 ? 1.0 / 3.0 : 1.0);
-  return d;
-}
+// Normal damping of a wall contact. The pair's damping ratio is that of a
+// face contact (V = A delta, W' ~ V^(1/3)) of a free particle. A corner or
+// edge hitting a wall is a different self-similar contact: with V ~ delta^a
+// (a = 1 face, 2 edge, 3 vertex) and W' ~ V^q (q = dlnW'/dlnV: 1/3 for
+// Feng's law, 1 deep in the quadratic core V << V0), F = W'(V) A ~
+// delta^(a(q+1) - 1) and the model's local stiffness W''(V) A^2 = q a F /
+// delta. The damping ratio for restitution e then depends on q (exactly, not
+// on a: polydem_damping.h), and the contact point sees the mass m_c = 1 /
+// (1/m + (r x n).I^-1 (r x n)) (r: centre to contact point), not m. The wall
+// contact uses m_c and zeta(e, q) (DampingLaw with local = 1), so that a
+// corner impact reverses the contact point's normal velocity by e (the
+// assumption of seed Eqs. 27-28).
 
 template <typename T> struct WallForce {
   Vec3<T> f, tau;    // on the particle (torque about its centroid)
@@ -775,14 +745,14 @@ template <typename T> struct WallForce {
 // tangential history hist[WALL_HIST_SIZE] for this mesh: each patch takes
 // the old slot whose normal is closest within the patch angle (else a fresh
 // spring); unmatched slots are cleared. Each slot also keeps its plane's
-// distance from the centroid (WallSides). p: contact parameters (meff = m_p).
-// Iinv: inverse principal moments of the particle, R its rotation.
+// distance from the centroid (WallSides). law: the particle's wall law
+// (wall_law); m its mass, Iinv its inverse principal moments, R its
+// rotation; dt the time step (0: no history increment, setup).
 template <typename T>
 POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &mp,
-                                    const ContactParams<T> &p0, const WallDamping<T> &damp,
-                                    const Vec3<T> &Iinv, const Mat3<T> &R, T cosmax,
-                                    const Vec3<T> &x, const Vec3<T> &v, const Vec3<T> &w,
-                                    T *hist, bool update)
+                                    const ContactLaw<T> &law, T m, const Vec3<T> &Iinv,
+                                    const Mat3<T> &R, T cosmax, const Vec3<T> &x,
+                                    const Vec3<T> &v, const Vec3<T> &w, T dt, T *hist, bool update)
 {
   WallForce<T> out;
   out.f = out.tau = make_vec3(T(0), T(0), T(0));
@@ -794,6 +764,14 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
   for (int i = 0; i < WALL_HIST_SIZE; ++i) newh[i] = T(0);
   bool used[WALL_MAX_PATCH] = {false, false, false, false};
   const Vec3<T> xw = mp.o + mp.d;    // a point of the wall's rotation axis (lab)
+  ContactKinematics<T> kin;
+  kin.xA = x;
+  kin.xB = xw;
+  kin.vA = v;
+  kin.vB = mp.vw;
+  kin.wA = w;
+  kin.wB = mp.w;
+  kin.dt = dt;
   for (int k = 0; k < P.n; ++k) {
     const WallPatch<T> &q = P.p[k];
     const T an = norm(q.S);
@@ -807,6 +785,7 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
     g.normal = (T(1) / an) * g.S_A;    // from the particle into the wall
     const Vec3<T> cm = q.area > T(0) ? (T(1) / q.area) * q.ac : (T(1) / q.volume) * q.vc;
     g.centroid = xw + matvec(mp.R, cm - mp.o);
+    g.gradient_damping = 0;
     // history slot with the closest normal (lab frame)
     int best = -1;
     T bc = cosmax;
@@ -825,19 +804,11 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
       for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = hist[WALL_HIST * best + 4 + i];
     } else
       out.fresh |= 1 << k;
-    // contact-point mass and damping ratio of this patch's contact shape
-    ContactParams<T> p = p0;
+    // the mass the contact point sees
     const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
-    const T im = T(1) / p0.meff + rn.x * rn.x * Iinv.x + rn.y * rn.y * Iinv.y + rn.z * rn.z * Iinv.z;
-    p.meff = T(1) / im;
-    // local exponent of W'(V): 1/3 above V0, -> 1 deep in the core
-    T qexp = T(1) / T(3);
-    if (q.volume < p0.V0) {
-      const T u = q.volume / p0.V0;
-      qexp = (T(5) / T(3) - T(4) / T(3) * u) / (T(5) / T(3) - T(2) / T(3) * u);
-    }
-    p.damp = wall_damping_ratio(damp, an * q.depth / q.volume, qexp);
-    const ContactForce<T> cf = contact_force(g, p, x, xw, v, mp.vw, w, mp.w, shear);
+    const T im = T(1) / m + rn.x * rn.x * Iinv.x + rn.y * rn.y * Iinv.y + rn.z * rn.z * Iinv.z;
+    kin.meff = T(1) / im;
+    const ContactForce<T> cf = contact_step(g, law, kin, shear, CONTACT_HIST);
     T *h = newh + WALL_HIST * out.ncontact;
     h[0] = g.normal.x;
     h[1] = g.normal.y;
@@ -855,16 +826,15 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
   return out;
 }
 
-// Contact parameters of a particle (volume V, mass m, type material E, nu)
-// with the wall (wE, wnu): the wall is a half-space sized like the particle
-// (R_w = R_p) and of infinite mass (m_eff = m).
+// Wall law of a particle (volume V, material E, nu) on the wall (wE, wnu):
+// the wall is a half-space sized like the particle (R_w = R_p) and of
+// infinite mass; damping of restitution e at the contact's exponent
+// (damping_law(e, 1) on the host).
 template <typename T>
-POLYDEM_FN ContactParams<T> wall_params(T E, T nu, T wE, T wnu, T V, T m, T damp, T mu, T core,
-                                        T dt)
+POLYDEM_FN ContactLaw<T> wall_law(T E, T nu, T wE, T wnu, T V, const DampingLaw<T> &d, T mu,
+                                  T core, int twist)
 {
-  ContactParams<T> p = make_contact_params(E, nu, V, m, wE, wnu, V, m, damp, mu, core, dt);
-  p.meff = m;
-  return p;
+  return feng_law(E, nu, V, wE, wnu, V, d, mu, core, twist);
 }
 
 // Torque on the mesh about its axis point o + d balancing the particle's
@@ -898,8 +868,8 @@ POLYDEM_FN WallSides<T> wall_kept_sides(const T *hist, const MeshPose<T> &mp, in
 template <typename T, int MF, int ME>
 POLYDEM_FN WallForce<T>
 wall_particle(const ShapeView<T> &sv, const Pose<T> &lab, const MeshPose<T> &mp,
-              const MeshGridView<T> &g, const ContactParams<T> &p, const WallDamping<T> &damp,
-              T cosmax, int both, const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update,
+              const MeshGridView<T> &g, const ContactLaw<T> &law, T m, T dt, T cosmax, int both,
+              const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update,
               WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P, WallNear<T> *near = nullptr)
 {
   Pose<T> pm;
@@ -910,10 +880,10 @@ wall_particle(const ShapeView<T> &sv, const Pose<T> &lab, const MeshPose<T> &mp,
   const WallSides<T> sides = wall_kept_sides(hist, mp, both);
   wall_patches(a, g, cosmax, ws, P, near, &sides);
   // inverse principal moments: I = rho s^5 I_unit, rho = m / (s^3 V_unit)
-  const T rho = p.meff / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
+  const T rho = m / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
   const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),
                                  T(1) / (rho * s5 * sv.inertia[2]));
-  return wall_forces(P, mp, p, damp, Iinv, a.R, cosmax, lab.x, v, w, hist, update);
+  return wall_forces(P, mp, law, m, Iinv, a.R, cosmax, lab.x, v, w, dt, hist, update);
 }
 
 // What fix wall/mesh warns about, per particle (issue 17): contacts whose
@@ -949,6 +919,81 @@ POLYDEM_FN WallWarnings<T> wall_warnings(const WallPatches<T> &P, const WallForc
   }
   return w;
 }
+
+// d += s for two WallTally (either may be volatile: Kokkos 3 joins)
+template <class D, class S> POLYDEM_FN void wall_tally_merge(D &d, const S &s)
+{
+  for (int k = 0; k < 3; ++k) {
+    d.force[k] += s.force[k];
+    d.torque[k] += s.torque[k];
+  }
+  d.ncontact += s.ncontact;
+  d.ntri += s.ntri;
+  d.energy += s.energy;
+  d.noverflow += s.noverflow;
+  d.ndegenerate += s.ndegenerate;
+  d.nmerged += s.nmerged;
+  d.near_overflow += s.near_overflow;
+  d.near_builds += s.near_builds;
+  d.nunrecorded += s.nunrecorded;
+  d.behind += s.behind;
+  d.deep += s.deep;
+  d.large += s.large;
+  d.fresh += s.fresh;
+  if (s.fresh_v > d.fresh_v) d.fresh_v = s.fresh_v;
+  if (s.fresh_d > d.fresh_d) d.fresh_d = s.fresh_d;
+  if (s.fresh_em > d.fresh_em) d.fresh_em = s.fresh_em;
+}
+
+// What one call of fix wall/mesh sums over its particles (plain: a loop;
+// /kk: a reduction over threads): the reaction on the mesh, contacts,
+// energy, kernel counts and warnings; maxima for the contacts that begin.
+template <typename T> struct WallTally {
+  T force[3], torque[3];    // reaction on the mesh (lab; torque about its axis point)
+  T ncontact, ntri, energy;
+  T noverflow, ndegenerate, nmerged;    // kernel counts (WallPatches)
+  T near_overflow, near_builds, nunrecorded;
+  T behind, deep, large, fresh;         // WallWarnings: counts
+  T fresh_v, fresh_d, fresh_em;         // WallWarnings: maxima
+  POLYDEM_FN WallTally()
+  {
+    for (int k = 0; k < 3; ++k) force[k] = torque[k] = T(0);
+    ncontact = ntri = energy = noverflow = ndegenerate = nmerged = T(0);
+    near_overflow = near_builds = nunrecorded = behind = deep = large = fresh = T(0);
+    fresh_v = fresh_d = fresh_em = T(0);
+  }
+  // one particle at x (lab): its forces wf, patches P, warnings w
+  POLYDEM_FN void add(const Vec3<T> &x, const WallForce<T> &wf, const MeshPose<T> &mp,
+                      const WallPatches<T> &P, const WallWarnings<T> &w)
+  {
+    const Vec3<T> tm = wall_reaction_torque(x, wf, mp);
+    force[0] -= wf.f.x;
+    force[1] -= wf.f.y;
+    force[2] -= wf.f.z;
+    torque[0] += tm.x;
+    torque[1] += tm.y;
+    torque[2] += tm.z;
+    ncontact += T(wf.ncontact);
+    ntri += T(P.ntri);
+    energy += wf.energy;
+    noverflow += T(P.noverflow);
+    ndegenerate += T(P.ndegenerate);
+    nmerged += T(P.nmerged);
+    nunrecorded += T(P.nunrecorded);
+    behind += T(w.behind);
+    deep += T(w.deep);
+    large += T(w.large);
+    fresh += T(w.fresh);
+    fresh_v = w.fresh_v > fresh_v ? w.fresh_v : fresh_v;
+    fresh_d = w.fresh_d > fresh_d ? w.fresh_d : fresh_d;
+    fresh_em = w.fresh_em > fresh_em ? w.fresh_em : fresh_em;
+  }
+  POLYDEM_FN void operator+=(const WallTally &o) { wall_tally_merge(*this, o); }
+#if defined(KOKKOS_VERSION) && KOKKOS_VERSION < 40000
+  // Kokkos 3 joins through volatile references (Kokkos 4 rejects this form)
+  POLYDEM_FN void operator+=(const volatile WallTally &o) volatile { wall_tally_merge(*this, o); }
+#endif
+};
 
 // Per-triangle forces (fix wall/mesh pertriangle yes): each patch's force on
 // the wall (-F of the patch on the particle) shared among its clipped

@@ -39,8 +39,8 @@
 #include "polydem_clip.h"
 #define POLYDEM_CHECK_CLIP 1
 #endif
-#if __has_include("polydem_contact_model.h")
-#include "polydem_contact_model.h"
+#if __has_include("polydem_contact_law.h")
+#include "polydem_contact_law.h"
 #define POLYDEM_CHECK_CONTACT_MODEL 1
 #endif
 
@@ -228,7 +228,7 @@ template <typename T> void exercise_clip(int n)
 #endif
 
 #ifdef POLYDEM_CHECK_CONTACT_MODEL
-// polydem_contact_model.h: contact force from the overlap geometry
+// polydem_contact_law.h: contact force from the overlap geometry
 template <typename T> void exercise_contact_model(int n)
 {
   Kokkos::View<T *[3], Mem> shear("shear", n);
@@ -244,16 +244,23 @@ template <typename T> void exercise_contact_model(int n)
         g.S_A = make_vec3(T(-0.1), T(0), T(0));
         g.M_A = z;
         g.M_B = z;
-        ContactParams<T> p;
-        p.K = T(1e6);
-        p.Kt = T(4e5);
-        p.damp = T(0.1);    // damping_factor(e) is host-only (calibration)
-        p.mu = T(0.3);
-        p.meff = T(0.5);
-        p.dt = T(1e-6);
-        T sh[CONTACT_HIST] = {shear(i, 0), shear(i, 1), shear(i, 2), T(0)};
-        const ContactForce<T> f = contact_force(g, p, z, make_vec3(T(1), T(0), T(0)), z,
-                                                make_vec3(T(-0.1), T(0.01), T(0)), z, z, sh);
+        DampingLaw<T> d;    // damping_law(e) is host-only
+        d.z[0] = T(0.1);
+        d.z[1] = T(0.2);
+        d.local = 1;
+        ContactLaw<T> law = feng_law(T(1e6), T(0.25), T(1e-3), T(1e6), T(0.25), T(1e-3), d,
+                                     T(0.3), T(1e-4), 1);
+        ContactKinematics<T> kin;
+        kin.xA = z;
+        kin.xB = make_vec3(T(1), T(0), T(0));
+        kin.vA = z;
+        kin.vB = make_vec3(T(-0.1), T(0.01), T(0));
+        kin.wA = z;
+        kin.wB = make_vec3(T(0), T(0), T(0.5));
+        kin.meff = T(0.5);
+        kin.dt = T(1e-6);
+        T sh[CONTACT_HIST] = {shear(i, 0), shear(i, 1), shear(i, 2), T(0), T(0)};
+        const ContactForce<T> f = contact_step(g, law, kin, sh, CONTACT_HIST);
         for (int k = 0; k < 3; ++k) shear(i, k) = sh[k];
         out(i, 0) = f.F_A.x + f.tau_A.y + f.tau_B.z;
         out(i, 1) = f.energy;

@@ -199,9 +199,16 @@ double eccentric_restitution(const std::string &damping, double e)
   const auto c = polydem::ellipsoid_contact(A, B);
   EXPECT_EQ(c.status, polydem::STATUS_OK);
   auto rate = [&](const std::map<long, Lmp::State> &s) {
-    return polydem::ellipsoid_force(c, polydem::OVERLAP_CENTRE, 1.0, 0.0, A.x, B.x,
-                                    vec(s.at(1).v), vec(s.at(2).v), vec(s.at(1).w),
-                                    vec(s.at(2).w)).rate;
+    polydem::ContactKinematics<double> kin;
+    kin.xA = A.x;
+    kin.xB = B.x;
+    kin.vA = vec(s.at(1).v);
+    kin.vB = vec(s.at(2).v);
+    kin.wA = vec(s.at(1).w);
+    kin.wB = vec(s.at(2).w);
+    // d delta / dt of the centre measure
+    return polydem::contact_rate(polydem::ellipsoid_geometry(c, polydem::OVERLAP_CENTRE, A.x, B.x),
+                                 kin);
   };
   const double lever = polydem::norm(polydem::cross(c.c - A.x, c.n));
   const double ratio = -rate(after) / rate(before);

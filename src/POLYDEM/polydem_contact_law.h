@@ -1,0 +1,400 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - the contact layer: one contact law and one contact step for
+   every geometry (pair polyhedron, pair ellipsoid, fix wall/mesh; plain and
+   /kk alike). No LAMMPS includes; host and device.
+
+   A geometry kernel (polydem_overlap.h for two polyhedra, polydem_wall_contact.h
+   for a polyhedron on a mesh patch, polydem_ellipsoid_force.h for two
+   ellipsoids) returns a ContactGeometry: an overlap measure m (the overlap
+   volume V, or an overlap length delta), its gradient with respect to both
+   bodies' positions and rotations, a unit normal n (from A towards B), a
+   contact point and the contact area. A ContactLaw, chosen per type pair
+   (and per wall), names its parts:
+     normal      W(m) and W'(m): Feng's energy-conserving law in the overlap
+                 volume with its polynomial core (polyhedral seed Eqs. 12-13),
+                 or the linear spring 1/2 k_n delta^2 (ellipsoid seed Eq. 23);
+     damping     the dashpot g = 2 zeta sqrt(k m_eff) (seed Eq. 14) on the
+                 local normal stiffness k, zeta from one restitution
+                 calibration over the contact's exponent q (polydem_damping.h);
+     tangential  one Cundall-Strack spring-slider (Eqs. 17-20) with the
+                 incremental k_t as an option, and a torsional spring-slider
+                 for area contacts (twisting friction).
+   contact_step(geometry, law, kinematics, history) is the only place where
+   forces, torques and the contact energy are made. New parts (rolling
+   resistance, cohesion) add a member to ContactLaw and a block to
+   contact_step without touching the others.
+
+   Normal (elastic): F_A = -W'(m) dm/dx_A, tau_A = -W'(m) dm/dtheta_A,
+   tau_B = -W'(m) dm/dtheta_B, F_B = -F_A: the exact negative gradient of
+   W(m) in translation and rotation (for the ellipsoids' chord measure, whose
+   "gradient" is a point force at C along n, it is not; polydem_ellipsoid_force.h).
+   Feng, m = V, K = E_A/R_A + E_B/R_B (R: volume-equivalent radii):
+     W'(V) = K V^{1/3},  W(V) = 3/4 K V^{4/3} - 5/36 K V0^{4/3}        V >= V0
+     W'(V) = K V0^{-2/3} (5/3 V - 2/3 V^2/V0),
+     W(V)  = K V0^{-2/3} (5/6 V^2 - 2/9 V^3/V0)                        V <  V0
+   (W, W', W'' continuous, W(0) = 0; the core bounds the stiffness of small
+   overlaps by 5/3 K V0^{-2/3} A_n^2: a flat face resting under gravity
+   would otherwise need vanishing time steps). The local stiffness of the
+   normal coordinate delta = V / A_n is k = W''(V) A_n^2, the local exponent
+   q = dln W'/dln V (1/3 above the core, -> 1 deep in it).
+   Linear, m = delta: W = 1/2 k_n delta^2, W' = k_n delta, k = k_n, q = 1.
+
+   Damping (Eq. 14, with the local stiffness instead of Eq. 15's K A_n: the
+   V^{1/3} law is far stiffer near its maximum overlap, and with K A_n
+   face-to-face cubes rebound with 0.99 for e = 0.85): on a point contact
+   F_A^d = -g v_n n at the contact point (v_n: normal velocity of A relative
+   to B there); with gradient damping (ellipsoids' centre measure) the
+   Rayleigh force -g (dm/dt) grad m. g dt <= m_eff (the explicit stability
+   limit; binds only in the first steps of a flat contact, where k -> inf).
+
+   Tangential (Eqs. 17-20): the accumulated displacement s is kept in the
+   current tangent plane (its length kept), F_t = -k_t s - g_t v_t with
+   k_t = K_t A_n (area contacts; K_t = sum E/(2(1+nu)R)) or a constant k_t,
+   g_t = 2 zeta_t sqrt(k_t m_eff), zeta_t = zeta_ratio x zeta; capped by
+   mu F_n (then s is reset to the capped force). Incremental k_t: a growing
+   area does not scale up the force already stored (-k_old s), only the new
+   increment uses k_t; a shrinking one scales it down (Mindlin unloading);
+   scaling a loaded spring up with the area pumped energy into dense
+   frictional packings.
+
+   Twisting (area contacts, keyword twist): a point spring cannot resist
+   spin about n, a face contact does. The patch is taken as the disk of its
+   area, a^2 = A_n / pi, with the tangential spring and dashpot spread
+   uniformly over it: k_r = k_t a^2 / 2, g_r = g_t a^2 / 2 (the polar moment
+   of the disk over its area); the twist angle phi of A relative to B about n
+   gives M = -k_r phi - g_r w_n (w_n = (w_A - w_B).n), capped by the Coulomb
+   torque of a uniform pressure on the disk, mu F_n r_eff, r_eff = 2/3 a
+   (a square face: the exact lever is 0.3826 L, the disk's 0.3761 L).
+
+   History of one contact (CONTACT_HIST values): s (3), k_old (1), phi (1).
+   One sign convention everywhere: a pair's s and phi are those of its
+   lower-tag particle relative to the other (contact_history_sign); k_old
+   is a magnitude. Walls keep theirs per particle.
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_CONTACT_LAW_H
+#define POLYDEM_CONTACT_LAW_H
+
+#include "polydem_math.h"
+
+#include <cmath>
+
+namespace polydem {
+
+using std::cbrt;
+using std::log;
+
+// ---------------------------------------------------------------------------
+// geometry -> law
+
+template <typename T> struct ContactGeometry {
+  T volume;             // overlap measure m: volume V [L^3] (Feng) or length delta [L] (linear)
+  T area;               // contact area A_n [L^2] (0: point contact)
+  Vec3<T> normal;       // unit normal, from A towards B
+  Vec3<T> centroid;     // contact point
+  Vec3<T> S_A, M_A, M_B;    // dm/dx_A, dm/dtheta_A, dm/dtheta_B (dm/dx_B = -S_A)
+  int gradient_damping = 0;    // 1: Rayleigh dashpot along grad m; 0: at the point along n
+};
+
+// The fields of an overlap result (polydem_overlap.h OverlapResult).
+template <typename T, typename Overlap>
+POLYDEM_FN ContactGeometry<T> contact_geometry(const Overlap &ov)
+{
+  ContactGeometry<T> g;
+  g.volume = ov.volume;
+  g.area = ov.area;
+  g.normal = ov.normal;
+  g.centroid = ov.centroid;
+  g.S_A = ov.S_A;
+  g.M_A = ov.M_A;
+  g.M_B = ov.M_B;
+  g.gradient_damping = 0;
+  return g;
+}
+
+// ---------------------------------------------------------------------------
+// normal law
+
+enum NormalKind : int { NORMAL_FENG = 0, NORMAL_LINEAR = 1 };
+
+template <typename T> struct NormalLaw {
+  int kind;
+  T K;     // Feng: E_A/R_A + E_B/R_B [pressure/length]; linear: k_n [force/length]
+  T V0;    // Feng: volume below which W' is the polynomial core (0: pure V^{1/3})
+};
+
+template <typename T> struct NormalValue {
+  T W;     // energy W(m)
+  T Wp;    // W'(m)
+  T k;     // stiffness of the damping coordinate: W''(V) A_n^2 (Feng), k_n (linear)
+  T q;     // local exponent dln W'/dln m
+};
+
+template <typename T> POLYDEM_FN NormalValue<T> normal_value(const NormalLaw<T> &L, T m, T area)
+{
+  NormalValue<T> r;
+  if (L.kind == NORMAL_LINEAR) {
+    r.Wp = L.K * m;
+    r.W = T(0.5) * L.K * m * m;
+    r.k = L.K;
+    r.q = T(1);
+    return r;
+  }
+  if (m < L.V0) {
+    const T c0 = cbrt(L.V0);
+    const T c = L.K / (c0 * c0);
+    const T u = m / L.V0;
+    r.Wp = c * m * (T(5) / T(3) - T(2) / T(3) * u);
+    r.W = c * m * m * (T(5) / T(6) - T(2) / T(9) * u);
+    r.k = c * (T(5) / T(3) - T(4) / T(3) * u) * area * area;
+    r.q = (T(5) / T(3) - T(4) / T(3) * u) / (T(5) / T(3) - T(2) / T(3) * u);
+  } else {
+    const T v13 = cbrt(m);
+    r.Wp = L.K * v13;
+    r.W = T(0.75) * r.Wp * m - T(5) / T(36) * L.K * L.V0 * cbrt(L.V0);
+    r.k = v13 > T(0) ? L.K * area * area / (T(3) * v13 * v13) : T(0);
+    r.q = T(1) / T(3);
+  }
+  return r;
+}
+
+// ---------------------------------------------------------------------------
+// damping law: zeta(e, q) of polydem_damping.h at q = 1/3 and q = 1 (exact
+// there; linear in q between), filled on the host (damping_law)
+
+template <typename T> struct DampingLaw {
+  T z[2];       // zeta(e, 1/3), zeta(e, 1)
+  int local;    // 1: zeta at the contact's local exponent q; 0: zeta(e, 1/3) always
+};
+
+template <typename T> POLYDEM_FN T damping_zeta(const DampingLaw<T> &d, T q)
+{
+  if (!d.local) return d.z[0];
+  T w = (q - T(1) / T(3)) * T(1.5);
+  w = w < T(0) ? T(0) : (w > T(1) ? T(1) : w);
+  return (T(1) - w) * d.z[0] + w * d.z[1];
+}
+
+// dashpot coefficient g = 2 zeta sqrt(k m_eff), capped at g dt <= m_eff (dt > 0)
+template <typename T> POLYDEM_FN T dashpot(T zeta, T k, T meff, T dt)
+{
+  T g = T(2) * zeta * sqrt(k * meff);
+  if (dt > T(0) && g * dt > meff) g = meff / dt;
+  return g;
+}
+
+// ---------------------------------------------------------------------------
+// tangential law
+
+template <typename T> struct TangentialLaw {
+  T mu;              // Coulomb coefficient (0: no tangential part, history zeroed)
+  T Kt;              // k_t = Kt A_n (area_scaled) or k_t = Kt
+  T zeta_ratio;      // zeta_t / zeta of the normal dashpot
+  int area_scaled;   // k_t proportional to the contact area
+  int incremental;   // k_old in the history (incremental k_t)
+  int twist;         // torsional spring-slider (area contacts)
+  int cap_abs;       // cap mu |F_n| (polyhedra, as in the seed) instead of mu max(F_n, 0)
+  int spring_energy; // 1/2 k_t |s|^2 counted in the contact energy
+};
+
+template <typename T> struct ContactLaw {
+  NormalLaw<T> normal;
+  DampingLaw<T> damping;
+  TangentialLaw<T> tangential;
+};
+
+// ---------------------------------------------------------------------------
+// kinematics, history, result
+
+template <typename T> struct ContactKinematics {
+  Vec3<T> xA, xB;    // reference points of the torques (centres of mass)
+  Vec3<T> vA, vB, wA, wB;
+  T meff;            // mass the contact sees (reduced mass, or contact-point mass)
+  T dt;              // time step; 0: no increment of the history (setup)
+};
+
+constexpr int CONTACT_HIST = 5;    // s (3), k_old, phi
+constexpr int HIST_K = 3, HIST_TWIST = 4;
+
+template <typename T> struct ContactForce {
+  Vec3<T> F_A;      // force on A (B gets -F_A)
+  Vec3<T> tau_A;    // torque on A about x_A
+  Vec3<T> tau_B;    // torque on B about x_B
+  T energy;         // W(m) (+ the tangential spring's, spring_energy)
+  T fn;             // normal force (elastic + damping) on A along -n
+  T ft;             // tangential force magnitude
+  T rate;           // rate of the damping coordinate (v_n, or dm/dt)
+};
+
+// a pair's history is that of its lower-tag particle relative to the other
+// (s and phi change sign with the order, k_old does not)
+POLYDEM_FN double contact_history_sign(long tag_i, long tag_j)
+{
+  return tag_i < tag_j ? 1.0 : -1.0;
+}
+template <typename T> POLYDEM_FN void history_orient(T *h, int n, T sign)
+{
+  for (int k = 0; k < n && k < 3; ++k) h[k] *= sign;
+  if (n > HIST_TWIST) h[HIST_TWIST] *= sign;
+}
+
+// velocity of A's material point at the contact point relative to B's
+template <typename T>
+POLYDEM_FN Vec3<T> contact_relative_velocity(const ContactGeometry<T> &g,
+                                             const ContactKinematics<T> &kin)
+{
+  return (kin.vA + cross(kin.wA, g.centroid - kin.xA)) -
+      (kin.vB + cross(kin.wB, g.centroid - kin.xB));
+}
+
+// rate of the damping coordinate: dm/dt (gradient damping), else v_n
+template <typename T>
+POLYDEM_FN T contact_rate(const ContactGeometry<T> &g, const ContactKinematics<T> &kin)
+{
+  if (g.gradient_damping)
+    return dot(g.S_A, kin.vA - kin.vB) + dot(g.M_A, kin.wA) + dot(g.M_B, kin.wB);
+  return dot(contact_relative_velocity(g, kin), g.normal);
+}
+
+// Forces of one contact. hist: the contact's history, nhist values in use
+// (3: s only; 4: + k_old; 5: + phi), updated in place (the caller keeps it
+// or not, e.g. at setup).
+template <typename T>
+POLYDEM_FN ContactForce<T> contact_step(const ContactGeometry<T> &g, const ContactLaw<T> &law,
+                                        const ContactKinematics<T> &kin, T *hist, int nhist)
+{
+  ContactForce<T> out;
+  const NormalValue<T> nv = normal_value(law.normal, g.volume, g.area);
+  out.energy = nv.W;
+  out.F_A = -nv.Wp * g.S_A;
+  out.tau_A = -nv.Wp * g.M_A;
+  out.tau_B = -nv.Wp * g.M_B;
+
+  const Vec3<T> n = g.normal;
+  const Vec3<T> rA = g.centroid - kin.xA, rB = g.centroid - kin.xB;
+  const Vec3<T> vr = contact_relative_velocity(g, kin);
+  const T vn = dot(vr, n);
+
+  // normal damping, Eq. 14, on the local stiffness
+  const T zeta = damping_zeta(law.damping, nv.q);
+  const T gn = dashpot(zeta, nv.k, kin.meff, kin.dt);
+  if (g.gradient_damping) {
+    out.rate = contact_rate(g, kin);
+    const T s = gn * out.rate;
+    out.F_A -= s * g.S_A;
+    out.tau_A -= s * g.M_A;
+    out.tau_B -= s * g.M_B;
+    out.fn = -dot(out.F_A, n);
+  } else {
+    out.rate = vn;
+    const Vec3<T> Fd = (-gn * vn) * n;
+    out.F_A += Fd;
+    out.tau_A += cross(rA, Fd);
+    out.tau_B -= cross(rB, Fd);
+    out.fn = law.normal.kind == NORMAL_FENG ? nv.Wp * g.area + gn * vn : -dot(out.F_A, n);
+  }
+  out.ft = T(0);
+
+  const TangentialLaw<T> &tl = law.tangential;
+  if (!(tl.mu > T(0))) {
+    for (int k = 0; k < nhist; ++k) hist[k] = T(0);
+    return out;
+  }
+
+  // tangential, Eqs. 17-20: keep s in the current tangent plane (same length)
+  Vec3<T> s = make_vec3(hist[0], hist[1], hist[2]);
+  const T s0 = norm(s);
+  s -= dot(s, n) * n;
+  const T s1 = norm(s);
+  if (s1 > T(0)) s = (s0 / s1) * s;
+  const Vec3<T> vt = vr - vn * n;
+  const T kt = tl.area_scaled ? tl.Kt * g.area : tl.Kt;
+  const T kold = tl.incremental ? hist[HIST_K] : kt;
+  if (kt > kold && kt > T(0)) s = (kold / kt) * s;
+  s += kin.dt * vt;
+  const T gt = T(2) * (tl.zeta_ratio * zeta) * sqrt(kt * kin.meff);
+  Vec3<T> Ft = (-kt) * s - gt * vt;
+  const T ftm = norm(Ft);
+  const T fnc = tl.cap_abs ? fabs(out.fn) : (out.fn > T(0) ? out.fn : T(0));
+  const T fmax = tl.mu * fnc;
+  if (ftm > fmax) {
+    // slip: cap at mu F_n and reset the spring to the capped force
+    Ft = (ftm > T(0) ? fmax / ftm : T(0)) * Ft;
+    if (kt > T(0)) s = (T(-1) / kt) * (Ft + gt * vt);
+  }
+  hist[0] = s.x;
+  hist[1] = s.y;
+  hist[2] = s.z;
+  if (tl.incremental) hist[HIST_K] = kt;
+  out.ft = norm(Ft);
+  out.F_A += Ft;
+  out.tau_A += cross(rA, Ft);
+  out.tau_B -= cross(rB, Ft);
+  if (tl.spring_energy) out.energy += T(0.5) * kt * norm2(s);
+
+  // twisting: torsional spring-slider on the disk of the contact area
+  if (tl.twist && nhist > HIST_TWIST) {
+    const T a2 = g.area * T(0.31830988618379067154);    // A_n / pi
+    const T kr = T(0.5) * kt * a2, gr = T(0.5) * gt * a2;
+    const T wn = dot(kin.wA - kin.wB, n);
+    T phi = hist[HIST_TWIST];
+    // k_r ~ k_t^2 when k_t ~ A_n: the incremental rule of the spring
+    if (tl.incremental && kt > kold && kt > T(0)) phi *= (kold / kt) * (kold / kt);
+    phi += kin.dt * wn;
+    T Mt = -kr * phi - gr * wn;
+    const T mmax = fmax * (T(2) / T(3)) * sqrt(a2);
+    if (fabs(Mt) > mmax) {
+      Mt = Mt > T(0) ? mmax : -mmax;
+      phi = kr > T(0) ? -(Mt + gr * wn) / kr : T(0);
+    }
+    hist[HIST_TWIST] = phi;
+    out.tau_A += Mt * n;
+    out.tau_B -= Mt * n;
+    if (tl.spring_energy && kr > T(0)) out.energy += T(0.5) * kr * phi * phi;
+  } else if (nhist > HIST_TWIST)
+    hist[HIST_TWIST] = T(0);
+  return out;
+}
+
+// ---------------------------------------------------------------------------
+// the laws of the package's styles
+
+// Polyhedra (Feng): K, K_t from the two particles' E, nu and (scaled)
+// volumes (Eqs. 13, 19; R: radius of the sphere of equal volume), V0 = core
+// x the smaller volume; damping d; friction mu; twist on or off.
+template <typename T>
+POLYDEM_FN ContactLaw<T> feng_law(T Ei, T nui, T Vi, T Ej, T nuj, T Vj, const DampingLaw<T> &d,
+                                  T mu, T core, int twist)
+{
+  const T f = T(3) / (T(4) * T(3.14159265358979323846));
+  const T Ri = cbrt(f * Vi), Rj = cbrt(f * Vj);
+  ContactLaw<T> L;
+  L.normal.kind = NORMAL_FENG;
+  L.normal.K = Ei / Ri + Ej / Rj;
+  L.normal.V0 = core * (Vi < Vj ? Vi : Vj);
+  L.damping = d;
+  L.tangential.mu = mu;
+  L.tangential.Kt = Ei / (T(2) * (T(1) + nui) * Ri) + Ej / (T(2) * (T(1) + nuj) * Rj);
+  L.tangential.zeta_ratio = T(1);
+  L.tangential.area_scaled = 1;
+  L.tangential.incremental = 1;
+  L.tangential.twist = twist;
+  L.tangential.cap_abs = 1;
+  L.tangential.spring_energy = 0;
+  return L;
+}
+
+// Explicit stability limit of a flat face contact (area A, e.g. the largest
+// face) resting in the core: its local stiffness W''(V) A^2 is largest at
+// V -> 0, W''(0) A^2 = 5/3 K V0^(-2/3) A^2, and velocity Verlet is stable for
+// dt < 2 sqrt(m_eff / k). 0 if there is no core (V0 = 0: no bound).
+template <typename T> POLYDEM_FN T face_contact_stable_dt(const NormalLaw<T> &L, T meff, T A)
+{
+  if (!(L.V0 > T(0)) || !(A > T(0))) return T(0);
+  const T k = T(5) / T(3) * L.K / cbrt(L.V0 * L.V0) * A * A;
+  return T(2) * sqrt(meff / k);
+}
+
+}    // namespace polydem
+
+#endif
