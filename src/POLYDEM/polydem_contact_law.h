@@ -67,9 +67,9 @@
    (a square face: the exact lever is 0.3826 L, the disk's 0.3761 L).
 
    History of one contact (CONTACT_HIST values): s (3), k_old (1), phi (1).
-   One sign convention everywhere: a pair's s and phi are those of its
-   lower-tag particle relative to the other (contact_history_sign); k_old
-   is a magnitude. Walls keep theirs per particle.
+   One sign convention everywhere: a pair's s is that of its lower-tag
+   particle relative to the other (contact_history_sign); k_old is a
+   magnitude, phi the same seen from either particle. Walls keep theirs per particle.
 ------------------------------------------------------------------------- */
 
 #ifndef POLYDEM_CONTACT_LAW_H
@@ -226,8 +226,9 @@ template <typename T> struct ContactForce {
   T rate;           // rate of the damping coordinate (v_n, or dm/dt)
 };
 
-// a pair's history is that of its lower-tag particle relative to the other
-// (s and phi change sign with the order, k_old does not)
+// a pair's history is that of its lower-tag particle relative to the other:
+// s changes sign with the order; k_old and phi do not (phi is the twist of
+// A relative to B about n, and swapping A and B negates both)
 POLYDEM_FN double contact_history_sign(long tag_i, long tag_j)
 {
   return tag_i < tag_j ? 1.0 : -1.0;
@@ -235,7 +236,6 @@ POLYDEM_FN double contact_history_sign(long tag_i, long tag_j)
 template <typename T> POLYDEM_FN void history_orient(T *h, int n, T sign)
 {
   for (int k = 0; k < n && k < 3; ++k) h[k] *= sign;
-  if (n > HIST_TWIST) h[HIST_TWIST] *= sign;
 }
 
 // velocity of A's material point at the contact point relative to B's
