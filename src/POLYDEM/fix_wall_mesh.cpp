@@ -37,7 +37,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
-    wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(0), depth_warn(0.25),
+    wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
     overlap_warn(0.05), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0), hist(nullptr),
     reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0), near_builds_all(0),
     near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)

@@ -351,50 +351,23 @@ void PairEllipsoid::compute(int eflag, int vflag)
       const double amin = MIN(MIN(MIN(A.axes.x, A.axes.y), MIN(A.axes.z, B.axes.x)),
                               MIN(B.axes.y, B.axes.z));
       const int it = type[i], jt = type[j];
-      polydem::ContactKinematics<double> kin;
-      kin.xA = A.x;
-      kin.xB = B.x;
-      kin.vA = vec(v[i]);
-      kin.vB = vec(v[j]);
-      kin.wA = vec(omega[i]);
-      kin.wB = vec(omega[j]);
-      kin.meff = damping_mass == polydem::DAMPING_CONTACT
-          ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass[i], rmass[j])
-          : rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      kin.dt = update_history ? update->dt : 0.0;
+      const auto kin = polydem::make_kinematics(
+          A.x, B.x, vec(v[i]), vec(v[j]), vec(omega[i]), vec(omega[j]),
+          damping_mass == polydem::DAMPING_CONTACT
+              ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass[i], rmass[j])
+              : rmass[i] * rmass[j] / (rmass[i] + rmass[j]),
+          update_history ? update->dt : 0.0);
       const auto geo = polydem::ellipsoid_geometry(c, overlap, A.x, B.x);
       const auto law = polydem::ellipsoid_law(kn[it][jt], damping[it * (atom->ntypes + 1) + jt],
                                               use_history ? friction[it][jt] : 0.0, kt_ratio,
                                               gt_ratio);
-      double hist[SIZE_HISTORY] = {0.0, 0.0, 0.0};
-      double *shear = use_history ? &allshear[SIZE_HISTORY * jj] : nullptr;
-      const double sign = polydem::contact_history_sign(tag[i], tag[j]);
-      if (shear) {
-        touch[jj] = 1;
-        for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = shear[k];
-        polydem::history_orient(hist, SIZE_HISTORY, sign);
-      }
-      const auto cf = polydem::contact_step(geo, law, kin, hist, SIZE_HISTORY);
-      if (shear && update_history) {
-        polydem::history_orient(hist, SIZE_HISTORY, sign);
-        for (int k = 0; k < SIZE_HISTORY; k++) shear[k] = hist[k];
-      }
+      if (use_history) touch[jj] = 1;
+      const auto cf = polydem::pair_contact_step(
+          geo, law, kin, use_history ? &allshear[SIZE_HISTORY * jj] : nullptr, SIZE_HISTORY,
+          polydem::contact_history_sign(tag[i], tag[j]), update_history);
       if (geo.volume > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
       if (geo.volume < cf.rate * update->dt) local_counts[CNT_COLLISIONS] += w;
-      f[i][0] += cf.F_A.x;
-      f[i][1] += cf.F_A.y;
-      f[i][2] += cf.F_A.z;
-      torque[i][0] += cf.tau_A.x;
-      torque[i][1] += cf.tau_A.y;
-      torque[i][2] += cf.tau_A.z;
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= cf.F_A.x;
-        f[j][1] -= cf.F_A.y;
-        f[j][2] -= cf.F_A.z;
-        torque[j][0] += cf.tau_B.x;
-        torque[j][1] += cf.tau_B.y;
-        torque[j][2] += cf.tau_B.z;
-      }
+      polydem::scatter_contact_host(f, torque, i, j, newton_pair || j < nlocal, cf);
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair, cf.energy, 0.0, cf.F_A.x, cf.F_A.y, cf.F_A.z,
                      delx, dely, delz);

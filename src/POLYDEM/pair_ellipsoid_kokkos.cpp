@@ -119,33 +119,23 @@ template <class DeviceType> struct EllContactFunctor {
       for (int k = 0; k < 5; k++)
         if (ax[k] < amin) amin = ax[k];
       const int it = type(i), jt = type(j);
-      polydem::ContactKinematics<double> kin;
-      kin.xA = A.x;
-      kin.xB = B.x;
-      kin.vA = polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2));
-      kin.vB = polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2));
-      kin.wA = polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2));
-      kin.wB = polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2));
-      kin.meff = damping_mass == polydem::DAMPING_CONTACT
-          ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass(i), rmass(j))
-          : rmass(i) * rmass(j) / (rmass(i) + rmass(j));
-      kin.dt = shearupdate ? dt : 0.0;
+      const auto kin = polydem::make_kinematics(
+          A.x, B.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
+          polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
+          polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)),
+          polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2)),
+          damping_mass == polydem::DAMPING_CONTACT
+              ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass(i), rmass(j))
+              : rmass(i) * rmass(j) / (rmass(i) + rmass(j)),
+          shearupdate ? dt : 0.0);
       const auto geo = polydem::ellipsoid_geometry(c, overlap, A.x, B.x);
       const auto law = polydem::ellipsoid_law(kn(it, jt), damp(it, jt),
                                               use_history ? mu(it, jt) : 0.0, kt_ratio, gt_ratio);
       // the history is that of the lower-tag atom (polydem_contact_law.h)
-      double hist[3] = {0.0, 0.0, 0.0};
-      const double sign = use_history ? polydem::contact_history_sign(tag(i), tag(j)) : 1.0;
-      if (use_history) {
-        firsttouch(i, jj) = 1;
-        for (int k = 0; k < 3; k++) hist[k] = firstshear(i, 3 * jj + k);
-        polydem::history_orient(hist, 3, sign);
-      }
-      const auto cf = polydem::contact_step(geo, law, kin, hist, 3);
-      if (use_history && shearupdate) {
-        polydem::history_orient(hist, 3, sign);
-        for (int k = 0; k < 3; k++) firstshear(i, 3 * jj + k) = hist[k];
-      }
+      if (use_history) firsttouch(i, jj) = 1;
+      const auto cf = polydem::pair_contact_step(
+          geo, law, kin, use_history ? &firstshear(i, 3 * jj) : nullptr, 3,
+          use_history ? polydem::contact_history_sign(tag(i), tag(j)) : 1.0, shearupdate != 0);
       if (geo.volume > overlap_warn * amin) red.cnt[PairEllipsoid::CNT_BIGOVERLAP] += 1.0;
       if (geo.volume < cf.rate * dt) red.cnt[PairEllipsoid::CNT_COLLISIONS] += w;
 

@@ -259,7 +259,7 @@ double PairPolyhedron::init_one(int i, int j)
   friction[j][i] = friction[i][j];
   // closed form (polydem_damping.h), once per type pair
   const int nt = atom->ntypes + 1;
-  damping[i * nt + j] = damping[j * nt + i] = polydem::damping_law(restitution[i][j], 0);
+  damping[i * nt + j] = damping[j * nt + i] = polydem::damping_law(restitution[i][j], 1);
 
   // particles present, and those an insertion fix may add later
   double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
@@ -402,41 +402,17 @@ void PairPolyhedron::compute(int eflag, int vflag)
                                          poisson[jtype], Vj,
                                          damping[itype * (atom->ntypes + 1) + jtype],
                                          friction[itype][jtype], core, twist);
-      polydem::ContactKinematics<double> kin;
-      kin.xA = pi.x;
-      kin.xB = pj.x;
-      kin.vA = polydem::make_vec3(v[i][0], v[i][1], v[i][2]);
-      kin.vB = polydem::make_vec3(v[j][0], v[j][1], v[j][2]);
-      kin.wA = polydem::make_vec3(omega[i][0], omega[i][1], omega[i][2]);
-      kin.wB = polydem::make_vec3(omega[j][0], omega[j][1], omega[j][2]);
-      kin.meff = rmass[i] * rmass[j] / (rmass[i] + rmass[j]);
-      kin.dt = shearupdate ? dt : 0.0;
-
+      const auto kin = polydem::make_kinematics(
+          pi.x, pj.x, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
+          polydem::make_vec3(v[j][0], v[j][1], v[j][2]),
+          polydem::make_vec3(omega[i][0], omega[i][1], omega[i][2]),
+          polydem::make_vec3(omega[j][0], omega[j][1], omega[j][2]),
+          rmass[i] * rmass[j] / (rmass[i] + rmass[j]), shearupdate ? dt : 0.0);
       const auto geo = polydem::contact_geometry<double>(ov);
-      const double sign = polydem::contact_history_sign(tag[i], tag[j]);
-      double hist[SIZE_HISTORY];
-      for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = shear[k];
-      polydem::history_orient(hist, SIZE_HISTORY, sign);
-      const auto cf = polydem::contact_step(geo, law, kin, hist, SIZE_HISTORY);
-      if (shearupdate) {
-        polydem::history_orient(hist, SIZE_HISTORY, sign);
-        for (int k = 0; k < SIZE_HISTORY; k++) shear[k] = hist[k];
-      }
-
-      f[i][0] += cf.F_A.x;
-      f[i][1] += cf.F_A.y;
-      f[i][2] += cf.F_A.z;
-      torque[i][0] += cf.tau_A.x;
-      torque[i][1] += cf.tau_A.y;
-      torque[i][2] += cf.tau_A.z;
-      if (newton_pair || j < nlocal) {
-        f[j][0] -= cf.F_A.x;
-        f[j][1] -= cf.F_A.y;
-        f[j][2] -= cf.F_A.z;
-        torque[j][0] += cf.tau_B.x;
-        torque[j][1] += cf.tau_B.y;
-        torque[j][2] += cf.tau_B.z;
-      }
+      const auto cf = polydem::pair_contact_step(geo, law, kin, shear, SIZE_HISTORY,
+                                                 polydem::contact_history_sign(tag[i], tag[j]),
+                                                 shearupdate);
+      polydem::scatter_contact_host(f, torque, i, j, newton_pair || j < nlocal, cf);
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair, cf.energy, 0.0, cf.F_A.x, cf.F_A.y, cf.F_A.z,
                      delx, dely, delz);

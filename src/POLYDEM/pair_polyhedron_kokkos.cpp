@@ -203,29 +203,19 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
     const auto law = polydem::feng_law(youngs(itype), poisson(itype), Vi, youngs(jtype),
                                        poisson(jtype), Vj, damp(itype, jtype), mu(itype, jtype),
                                        core, twist);
-    polydem::ContactKinematics<double> kin;
-    kin.xA = pi.x;
-    kin.xB = pj.x;
-    kin.vA = polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2));
-    kin.vB = polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2));
-    kin.wA = polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2));
-    kin.wB = polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2));
-    kin.meff = rmass(i) * rmass(j) / (rmass(i) + rmass(j));
-    kin.dt = shearupdate ? dt : 0.0;
-
+    const auto kin = polydem::make_kinematics(
+        pi.x, pj.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
+        polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
+        polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)),
+        polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2)),
+        rmass(i) * rmass(j) / (rmass(i) + rmass(j)), shearupdate ? dt : 0.0);
     const auto geo = polydem::contact_geometry<double>(ov);
     // the history is that of the lower-tag atom (polydem_contact_law.h);
     // FixNeighHistoryKokkos copies it to the partner unchanged
-    const double sign = polydem::contact_history_sign(tag(i), tag(j));
-    double hist[SIZE_HISTORY];
-    for (int k = 0; k < SIZE_HISTORY; k++) hist[k] = firstshear(i, SIZE_HISTORY * jj + k);
-    polydem::history_orient(hist, SIZE_HISTORY, sign);
-    const auto cf = polydem::contact_step(geo, law, kin, hist, SIZE_HISTORY);
-    if (shearupdate) {
-      polydem::history_orient(hist, SIZE_HISTORY, sign);
-      for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = hist[k];
-    }
-
+    const auto cf = polydem::pair_contact_step(geo, law, kin, &firstshear(i, SIZE_HISTORY * jj),
+                                               SIZE_HISTORY,
+                                               polydem::contact_history_sign(tag(i), tag(j)),
+                                               shearupdate != 0);
     polydem_kk::scatter_contact(f, torque, i, j, newton_pair || j < nlocal, cf);
     if (store_contacts) {
       const double xi[3] = {pi.x.x, pi.x.y, pi.x.z}, xj[3] = {pj.x.x, pj.x.y, pj.x.z};

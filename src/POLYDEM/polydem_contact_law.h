@@ -213,6 +213,23 @@ template <typename T> struct ContactKinematics {
   T dt;              // time step; 0: no increment of the history (setup)
 };
 
+template <typename T>
+POLYDEM_FN ContactKinematics<T> make_kinematics(const Vec3<T> &xA, const Vec3<T> &xB,
+                                                const Vec3<T> &vA, const Vec3<T> &vB,
+                                                const Vec3<T> &wA, const Vec3<T> &wB, T meff, T dt)
+{
+  ContactKinematics<T> k;
+  k.xA = xA;
+  k.xB = xB;
+  k.vA = vA;
+  k.vB = vB;
+  k.wA = wA;
+  k.wB = wB;
+  k.meff = meff;
+  k.dt = dt;
+  return k;
+}
+
 constexpr int CONTACT_HIST = 5;    // s (3), k_old, phi
 constexpr int HIST_K = 3, HIST_TWIST = 4;
 
@@ -354,6 +371,42 @@ POLYDEM_FN ContactForce<T> contact_step(const ContactGeometry<T> &g, const Conta
   } else if (nhist > HIST_TWIST)
     hist[HIST_TWIST] = T(0);
   return out;
+}
+
+// contact_step of a pair (A = the pair's first atom) on its stored history
+// (n values in the pair convention, sign = contact_history_sign of A and B;
+// null: none, e.g. frictionless), written back if keep (not at setup)
+template <typename T>
+POLYDEM_FN ContactForce<T> pair_contact_step(const ContactGeometry<T> &g, const ContactLaw<T> &law,
+                                             const ContactKinematics<T> &kin, T *stored, int n,
+                                             T sign, bool keep)
+{
+  T h[CONTACT_HIST];
+  for (int k = 0; k < n; ++k) h[k] = stored ? stored[k] : T(0);
+  history_orient(h, n, sign);
+  const ContactForce<T> cf = contact_step(g, law, kin, h, n);
+  if (stored && keep) {
+    history_orient(h, n, sign);
+    for (int k = 0; k < n; ++k) stored[k] = h[k];
+  }
+  return cf;
+}
+
+// forces and torques of a contact to atoms i and, if to_j, j (host arrays)
+template <typename T>
+inline void scatter_contact_host(T **f, T **torque, int i, int j, bool to_j,
+                                 const ContactForce<T> &cf)
+{
+  const T F[3] = {cf.F_A.x, cf.F_A.y, cf.F_A.z};
+  const T tA[3] = {cf.tau_A.x, cf.tau_A.y, cf.tau_A.z}, tB[3] = {cf.tau_B.x, cf.tau_B.y, cf.tau_B.z};
+  for (int k = 0; k < 3; ++k) {
+    f[i][k] += F[k];
+    torque[i][k] += tA[k];
+    if (to_j) {
+      f[j][k] -= F[k];
+      torque[j][k] += tB[k];
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------
