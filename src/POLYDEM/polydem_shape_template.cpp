@@ -62,19 +62,6 @@ std::string fmt_num(double x)
   return os.str();
 }
 
-// Where a vertex came from, for messages: "file:line" or "name: vertex i".
-struct Origin {
-  std::string src;
-  std::vector<int> lines;    // empty when built from points
-  int vline = 0;             // line of the `vertices` keyword (0 if none)
-  std::string at(int i) const
-  {
-    if (!lines.empty()) return src + ":" + std::to_string(lines[i]);
-    return src + ": vertex " + std::to_string(i);
-  }
-  std::string head() const { return vline > 0 ? src + ":" + std::to_string(vline) : src; }
-};
-
 // ---------------------------------------------------------------------
 // Exact mass properties of a closed, outward-oriented triangle surface:
 // sum over tetrahedra (0,a,b,c): det = a.(b x c), V = det/6,
@@ -473,28 +460,60 @@ PolyShapeTemplate PolyShapeTemplate::from_points(const std::vector<Point> &pts_i
 }
 
 // =====================================================================
-// geometry processing
+// geometry processing: build() runs the phases below in order; each one
+// throws ShapeError for the first problem it finds, so a bad input gets
+// the same message whatever else is wrong with it.
 // =====================================================================
 
-void PolyShapeTemplate::build(const std::vector<Point> &pts,
-                              const std::vector<std::vector<int>> &faces,
-                              const std::vector<int> &vlines, const std::vector<int> &flines,
-                              int vkey, const ShapeOptions &opt)
-{
-  const std::string src = file_.empty() ? name_ : file_;
-  auto vat = [&](int i) { return vlines.empty() ? src : src + ":" + std::to_string(vlines[i]); };
-  auto fat = [&](int f) {
+namespace {
+
+// Where things came from, for messages: "file:line" when read from a
+// file, else the name (and "name: face f" for faces).
+struct Where {
+  const std::string &src;      // file path, or the name when built from points
+  const std::string head;      // line of the `vertices` keyword, or src
+  const std::vector<int> &vlines, &flines;    // file line of each vertex / face (empty: points)
+  std::string vat(int i) const
+  {
+    return vlines.empty() ? src : src + ":" + std::to_string(vlines[i]);
+  }
+  std::string fat(int f) const
+  {
     return flines.empty() ? src + ": face " + std::to_string(f)
                           : src + ":" + std::to_string(flines[f]);
-  };
-  const std::string head = vkey > 0 ? src + ":" + std::to_string(vkey) : src;
-  warnings_.clear();
-  const int n = (int)pts.size();
-  input_ = pts;
-  if (n < 4)
-    throw ShapeError(head + ": a polyhedron needs at least 4 vertices, got " + std::to_string(n));
+  }
+};
 
-  // exact duplicates are an error: they usually mean a typo in the file
+// CGAL's hull of the input points and what the later phases read of it.
+struct Hull {
+  std::vector<P3> P;    // the input points as CGAL points (exact predicates)
+  Mesh sm;
+  Mesh::Property_map<Mesh::Vertex_index, int> vid;    // hull vertex -> input index
+  std::vector<char> on_hull;                          // input point is a hull corner
+  std::vector<std::array<int, 3>> tri_in;             // hull triangles, input indices, outward
+  std::vector<Mesh::Face_index> fidx;                 // their mesh faces
+  std::map<Mesh::Face_index, int> tri_of;             // mesh face -> triangle
+  std::vector<V3> tnorm;                              // their unit normals (long double)
+};
+
+// Hull corners renumbered in input order, and the hull triangles in that numbering.
+struct Corners {
+  std::vector<int> newid;    // input index -> corner index (-1: not a corner)
+  std::vector<Pt> hv;        // corners, input coordinates
+  std::vector<std::array<int, 3>> tri;
+};
+
+// Phase 1, input validation: at least 4 points, no exact duplicates (they
+// usually mean a typo in the file), size and distance from the origin
+// within bounds. Returns the coplanarity tolerance PLANE_TOL * diameter
+// (length units).
+long double check_points(const std::vector<Pt> &pts, const Where &w)
+{
+  const int n = (int)pts.size();
+  if (n < 4)
+    throw ShapeError(w.head + ": a polyhedron needs at least 4 vertices, got " +
+                     std::to_string(n));
+
   std::vector<int> ord(n);
   for (int i = 0; i < n; ++i) ord[i] = i;
   std::sort(ord.begin(), ord.end(),
@@ -503,8 +522,8 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     if (pts[ord[k]] == pts[ord[k - 1]]) {
       int a = std::min(ord[k], ord[k - 1]), b = std::max(ord[k], ord[k - 1]);
       throw ShapeError(
-          vat(b) + ": vertex " + std::to_string(b) + " duplicates vertex " + std::to_string(a) +
-          (vlines.empty() ? std::string() : " (line " + std::to_string(vlines[a]) + ")"));
+          w.vat(b) + ": vertex " + std::to_string(b) + " duplicates vertex " + std::to_string(a) +
+          (w.vlines.empty() ? std::string() : " (line " + std::to_string(w.vlines[a]) + ")"));
     }
 
   double lo[3], hi[3];
@@ -519,106 +538,121 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   double cmax = 0.0;
   for (int i = 0; i < 3; ++i) cmax = std::max(cmax, std::max(std::fabs(lo[i]), std::fabs(hi[i])));
   if (!(diam >= SHAPE_SIZE_MIN && diam <= SHAPE_SIZE_MAX) || !(cmax <= SHAPE_SIZE_MAX))
-    throw ShapeError(head + ": the shape's size " + fmt_num(diam) + " (largest coordinate " +
+    throw ShapeError(w.head + ": the shape's size " + fmt_num(diam) + " (largest coordinate " +
                      fmt_num(cmax) +
                      ") is outside [1e-50, 1e50]: its volume and moments would not "
                      "be normal numbers (use the file's or the command's scale)");
   if (cmax > SHAPE_OFFSET_MAX * diam)
-    throw ShapeError(head + ": the shape (size " + fmt_num(diam) + ") lies " + fmt_num(cmax) +
+    throw ShapeError(w.head + ": the shape (size " + fmt_num(diam) + ") lies " + fmt_num(cmax) +
                      " from the origin, more than 1e12 times its size: translate it");
-  const long double tol = PLANE_TOL * diam;
+  return PLANE_TOL * diam;
+}
 
-  // full-dimensionality, decided exactly
-  std::vector<P3> P;
+// Phase 2, hull: full dimensionality decided exactly, then CGAL's convex
+// hull, its triangles in input indices and their unit normals.
+void convex_hull(const std::vector<Pt> &pts, const Where &w, Hull &h)
+{
+  const int n = (int)pts.size();
+  std::vector<P3> &P = h.P;
   P.reserve(n);
   for (const auto &p : pts) P.emplace_back(p[0], p[1], p[2]);
   int i2 = -1, i3 = -1;
   for (int i = 2; i < n && i2 < 0; ++i)
     if (!CGAL::collinear(P[0], P[1], P[i])) i2 = i;
   if (i2 < 0)
-    throw ShapeError(head + ": all " + std::to_string(n) + " vertices are collinear (zero volume)");
+    throw ShapeError(w.head + ": all " + std::to_string(n) +
+                     " vertices are collinear (zero volume)");
   for (int i = 2; i < n && i3 < 0; ++i)
     if (CGAL::orientation(P[0], P[1], P[i2], P[i]) != CGAL::COPLANAR) i3 = i;
   if (i3 < 0)
-    throw ShapeError(head + ": all " + std::to_string(n) + " vertices are coplanar (zero volume)");
+    throw ShapeError(w.head + ": all " + std::to_string(n) +
+                     " vertices are coplanar (zero volume)");
 
-  Mesh sm;
+  Mesh &sm = h.sm;
   try {
     CGAL::convex_hull_3(P.begin(), P.end(), sm);
   } catch (const std::exception &e) {
-    throw ShapeError(src + ": convex hull failed: " + e.what());
+    throw ShapeError(w.src + ": convex hull failed: " + e.what());
   }
   std::map<Pt, int> index_of;
   for (int i = 0; i < n; ++i) index_of[pts[i]] = i;
-  auto vid = sm.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
-  std::vector<char> on_hull(n, 0);
+  h.vid = sm.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
+  h.on_hull.assign(n, 0);
   for (auto v : sm.vertices()) {
     const P3 &p = sm.point(v);
     auto it = index_of.find(Pt{p.x(), p.y(), p.z()});
-    if (it == index_of.end()) throw ShapeError(src + ": internal error: hull vertex not in input");
-    vid[v] = it->second;
-    on_hull[it->second] = 1;
+    if (it == index_of.end())
+      throw ShapeError(w.src + ": internal error: hull vertex not in input");
+    h.vid[v] = it->second;
+    h.on_hull[it->second] = 1;
   }
-  std::vector<std::array<int, 3>> tri_in;    // hull triangles, input indices, outward
-  std::vector<Mesh::Face_index> fidx;
   for (auto f : sm.faces()) {
     std::array<int, 3> t;
     int k = 0;
     for (auto v : CGAL::vertices_around_face(sm.halfedge(f), sm)) {
-      if (k == 3) throw ShapeError(src + ": internal error: hull face is not a triangle");
-      t[k++] = vid[v];
+      if (k == 3) throw ShapeError(w.src + ": internal error: hull face is not a triangle");
+      t[k++] = h.vid[v];
     }
-    tri_in.push_back(t);
-    fidx.push_back(f);
+    h.tri_in.push_back(t);
+    h.fidx.push_back(f);
   }
-  ntri_ = (int)tri_in.size();
+  for (size_t k = 0; k < h.fidx.size(); ++k) h.tri_of[h.fidx[k]] = (int)k;
+  for (const auto &t : h.tri_in)
+    h.tnorm.push_back(vunit(vcross(vsub(pts[t[1]], pts[t[0]]), vsub(pts[t[2]], pts[t[0]]))));
+}
 
-  // unit normal (long double) and signed distance to a hull triangle's plane
-  auto tri_normal = [&](const std::array<int, 3> &t) {
-    return vunit(vcross(vsub(pts[t[1]], pts[t[0]]), vsub(pts[t[2]], pts[t[0]])));
-  };
-  std::vector<V3> tnorm;
-  for (const auto &t : tri_in) tnorm.push_back(tri_normal(t));
-
-  // Input points that are not hull corners: on the surface (e.g. a fan
-  // centre of a triangulated cap) they are simply not corners; strictly
-  // inside, the input was not convex.
+// Phase 3a, convexity of the points: input points that are not hull
+// corners, on the surface (e.g. a fan centre of a triangulated cap), are
+// simply not corners; strictly inside, the input was not convex (an
+// error, or a warning with the 'hull' option).
+void check_interior(const std::vector<Pt> &pts, const Hull &h, long double tol, bool hull,
+                    const Where &w, std::vector<std::string> &warnings)
+{
+  const int n = (int)pts.size();
   int ninterior = 0, first_interior = -1;
   for (int i = 0; i < n; ++i) {
-    if (on_hull[i]) continue;
+    if (h.on_hull[i]) continue;
     long double dmax = -1e300L;
-    for (size_t f = 0; f < tri_in.size(); ++f)
-      dmax = std::max(dmax, vdot(tnorm[f], vsub(pts[i], pts[tri_in[f][0]])));
+    for (size_t f = 0; f < h.tri_in.size(); ++f)
+      dmax = std::max(dmax, vdot(h.tnorm[f], vsub(pts[i], pts[h.tri_in[f][0]])));
     if (dmax < -tol) {
       if (first_interior < 0) first_interior = i;
       ++ninterior;
     }
   }
   if (ninterior > 0) {
-    std::string what = vat(first_interior) + ": vertex " + std::to_string(first_interior) +
+    std::string what = w.vat(first_interior) + ": vertex " + std::to_string(first_interior) +
                        " lies inside the convex hull of the other vertices";
-    if (!opt.hull)
+    if (!hull)
       throw ShapeError(what + ": the shape is not convex (the 'hull' option uses its convex hull)");
-    warnings_.push_back(what + "; using the convex hull (" + std::to_string(ninterior) +
-                        " interior vertices dropped)");
+    warnings.push_back(what + "; using the convex hull (" + std::to_string(ninterior) +
+                       " interior vertices dropped)");
   }
+}
 
-  // Optional faces: validated, then rebuilt from the hull.
+// Phase 3b, the optional faces of the input: each must be a planar
+// polygon with all vertices on one side. They are only validated; the
+// stored faces are rebuilt from the hull.
+void check_faces(const std::vector<Pt> &pts, const std::vector<std::vector<int>> &faces,
+                 long double tol, bool hull, const Where &w, std::vector<std::string> &warnings)
+{
+  const int n = (int)pts.size();
   bool face_warned = false;
   for (size_t f = 0; f < faces.size(); ++f) {
     const auto &loop = faces[f];
     std::vector<int> s = loop;
     std::sort(s.begin(), s.end());
     if (std::adjacent_find(s.begin(), s.end()) != s.end())
-      throw ShapeError(fat((int)f) + ": face repeats a vertex index");
+      throw ShapeError(w.fat((int)f) + ": face repeats a vertex index");
     V3 nn = newell(pts, loop);
     long double len = std::sqrt(vdot(nn, nn));
-    if (!(len > 0)) throw ShapeError(fat((int)f) + ": face has zero area");
+    if (!(len > 0)) throw ShapeError(w.fat((int)f) + ": face has zero area");
     nn = vunit(nn);
     long double d0 = vdot(nn, vsub(pts[loop[0]], pts[0]));
     for (int k : loop)
       if (std::fabs(vdot(nn, vsub(pts[k], pts[0])) - d0) > tol)
-        throw ShapeError(fat((int)f) + ": face is not planar (vertex " + std::to_string(k) + ")");
+        throw ShapeError(w.fat((int)f) + ": face is not planar (vertex " + std::to_string(k) +
+                         ")");
     long double smin = 0, smax = 0;
     for (int i = 0; i < n; ++i) {
       long double sd = vdot(nn, vsub(pts[i], pts[0])) - d0;
@@ -626,68 +660,79 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
       smax = std::max(smax, sd);
     }
     if (smax > tol && smin < -tol) {
-      std::string what = fat((int)f) + ": vertices lie on both sides of this face";
-      if (!opt.hull)
+      std::string what = w.fat((int)f) + ": vertices lie on both sides of this face";
+      if (!hull)
         throw ShapeError(what +
                          ": the shape is not convex (the 'hull' option uses its convex hull)");
-      if (!face_warned) warnings_.push_back(what + "; faces ignored, using the convex hull");
+      if (!face_warned) warnings.push_back(what + "; faces ignored, using the convex hull");
       face_warned = true;
     }
   }
+}
 
-  // hull corners renumbered in input order
-  std::vector<int> newid(n, -1);
-  std::vector<Pt> hv;
+// Phase 4, corners: hull corners renumbered in input order, at most
+// MAX_TEMPLATE_VERTS. Corners closer than the coplanarity tolerance would
+// make face merging ambiguous: reported rather than left to produce
+// sliver faces.
+Corners hull_corners(const std::vector<Pt> &pts, const Hull &h, long double tol, const Where &w)
+{
+  const int n = (int)pts.size();
+  Corners c;
+  c.newid.assign(n, -1);
   for (int i = 0; i < n; ++i)
-    if (on_hull[i]) {
-      newid[i] = (int)hv.size();
-      hv.push_back(pts[i]);
+    if (h.on_hull[i]) {
+      c.newid[i] = (int)c.hv.size();
+      c.hv.push_back(pts[i]);
     }
-  const int nh = (int)hv.size();
+  const int nh = (int)c.hv.size();
   if (nh > MAX_TEMPLATE_VERTS)
-    throw ShapeError(src + ": the hull has " + std::to_string(nh) + " vertices, more than " +
+    throw ShapeError(w.src + ": the hull has " + std::to_string(nh) + " vertices, more than " +
                      "MAX_TEMPLATE_VERTS = " + std::to_string(MAX_TEMPLATE_VERTS));
-  // corners closer than the coplanarity tolerance would make face merging
-  // ambiguous: report them rather than produce sliver faces
   for (int a = 0; a < nh; ++a)
     for (int b = a + 1; b < nh; ++b) {
-      V3 d = vsub(hv[a], hv[b]);
+      V3 d = vsub(c.hv[a], c.hv[b]);
       if (std::sqrt(vdot(d, d)) <= tol) {
         int ia = -1, ib = -1;
         for (int i = 0; i < n; ++i) {
-          if (newid[i] == a) ia = i;
-          if (newid[i] == b) ib = i;
+          if (c.newid[i] == a) ia = i;
+          if (c.newid[i] == b) ib = i;
         }
-        throw ShapeError(vat(ib) + ": vertex " + std::to_string(ib) + " is within " +
+        throw ShapeError(w.vat(ib) + ": vertex " + std::to_string(ib) + " is within " +
                          fmt_num((double)std::sqrt(vdot(d, d))) + " of vertex " +
                          std::to_string(ia) + ", closer than " + fmt_num(PLANE_TOL) +
                          " times the size of the shape");
       }
     }
-  std::vector<std::array<int, 3>> tri;
-  for (const auto &t : tri_in) tri.push_back({newid[t[0]], newid[t[1]], newid[t[2]]});
+  for (const auto &t : h.tri_in) c.tri.push_back({c.newid[t[0]], c.newid[t[1]], c.newid[t[2]]});
+  return c;
+}
 
-  // ---- merge coplanar hull triangles (before any rotation: exact test
-  // first, tolerance only for rounded irrational coordinates)
-  std::map<Mesh::Face_index, int> tri_of;
-  for (size_t k = 0; k < fidx.size(); ++k) tri_of[fidx[k]] = (int)k;
-  std::vector<int> group(tri.size(), -1);
+// Phase 5a, coplanar hull triangles grouped into faces by a flood fill
+// over shared edges, before any rotation: exact coplanarity test first,
+// the tolerance only for rounded irrational coordinates. Returns the
+// number of groups, at most MAX_TEMPLATE_FACES; group[t] is triangle t's.
+int coplanar_groups(const std::vector<Pt> &pts, const Hull &h, long double tol, const Where &w,
+                    std::vector<int> &group)
+{
+  const Mesh &sm = h.sm;
+  group.assign(h.tri_in.size(), -1);
   int ngroups = 0;
-  for (size_t seed = 0; seed < tri.size(); ++seed) {
+  for (size_t seed = 0; seed < h.tri_in.size(); ++seed) {
     if (group[seed] >= 0) continue;
     group[seed] = ngroups;
     std::vector<int> stack = {(int)seed};
     while (!stack.empty()) {
       int t = stack.back();
       stack.pop_back();
-      const auto &a = tri_in[t];
-      for (auto h : CGAL::halfedges_around_face(sm.halfedge(fidx[t]), sm)) {
-        auto ho = sm.opposite(h);
-        int u = tri_of[sm.face(ho)];
+      const auto &a = h.tri_in[t];
+      for (auto he : CGAL::halfedges_around_face(sm.halfedge(h.fidx[t]), sm)) {
+        auto ho = sm.opposite(he);
+        int u = h.tri_of.at(sm.face(ho));
         if (group[u] >= 0) continue;
-        int w = vid[sm.target(sm.next(ho))];    // vertex of u not on the shared edge
-        bool flat = CGAL::orientation(P[a[0]], P[a[1]], P[a[2]], P[w]) == CGAL::COPLANAR ||
-                    std::fabs(vdot(tnorm[t], vsub(pts[w], pts[a[0]]))) <= tol;
+        int v = h.vid[sm.target(sm.next(ho))];    // vertex of u not on the shared edge
+        bool flat =
+            CGAL::orientation(h.P[a[0]], h.P[a[1]], h.P[a[2]], h.P[v]) == CGAL::COPLANAR ||
+            std::fabs(vdot(h.tnorm[t], vsub(pts[v], pts[a[0]]))) <= tol;
         if (flat) {
           group[u] = ngroups;
           stack.push_back(u);
@@ -697,21 +742,31 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     ++ngroups;
   }
   if (ngroups > MAX_TEMPLATE_FACES)
-    throw ShapeError(src + ": the hull has " + std::to_string(ngroups) + " faces, more than " +
+    throw ShapeError(w.src + ": the hull has " + std::to_string(ngroups) + " faces, more than " +
                      "MAX_TEMPLATE_FACES = " + std::to_string(MAX_TEMPLATE_FACES));
+  return ngroups;
+}
 
-  // face loops: boundary half-edges of each group, walked in mesh order
-  // (CGAL's hull faces are counter-clockwise seen from outside)
+// Phase 5b, face loops: the boundary half-edges of each group, walked in
+// mesh order (CGAL's hull faces are counter-clockwise seen from outside),
+// in corner numbering. Canonical order (CGAL's face order is not
+// guaranteed reproducible): each loop starts at its smallest vertex,
+// loops sorted lexicographically.
+std::vector<std::vector<int>> face_loops(const Hull &h, const std::vector<int> &group,
+                                         int ngroups, const std::vector<int> &newid,
+                                         const Where &w)
+{
+  const Mesh &sm = h.sm;
   std::vector<std::vector<int>> loops(ngroups);
   std::vector<std::map<int, int>> next_of(ngroups);
-  for (size_t t = 0; t < tri.size(); ++t)
-    for (auto h : CGAL::halfedges_around_face(sm.halfedge(fidx[t]), sm)) {
-      int u = tri_of[sm.face(sm.opposite(h))];
+  for (size_t t = 0; t < h.tri_in.size(); ++t)
+    for (auto he : CGAL::halfedges_around_face(sm.halfedge(h.fidx[t]), sm)) {
+      int u = h.tri_of.at(sm.face(sm.opposite(he)));
       if (group[u] == group[t]) continue;
-      int a = newid[vid[sm.source(h)]], b = newid[vid[sm.target(h)]];
+      int a = newid[h.vid[sm.source(he)]], b = newid[h.vid[sm.target(he)]];
       if (!next_of[group[t]].emplace(a, b).second)
-        throw ShapeError(src + ": face merging failed: a merged face is not a simple polygon "
-                               "(features below the coplanarity tolerance?)");
+        throw ShapeError(w.src + ": face merging failed: a merged face is not a simple polygon "
+                                 "(features below the coplanarity tolerance?)");
     }
   for (int g = 0; g < ngroups; ++g) {
     auto &nx = next_of[g];
@@ -720,21 +775,58 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
       loops[g].push_back(v);
       const auto it = nx.find(v);
       if (it == nx.end())
-        throw ShapeError(src +
+        throw ShapeError(w.src +
                          ": degenerate hull: a merged face boundary is open (the shape is "
                          "thinner than the coplanarity tolerance " +
                          fmt_num(PLANE_TOL) + " times its size: a sliver?)");
       v = it->second;
     } while (v != start && loops[g].size() <= nx.size());
     if (loops[g].size() != nx.size())
-      throw ShapeError(src + ": face merging failed: a merged face boundary is not one loop "
-                             "(features below the coplanarity tolerance?)");
+      throw ShapeError(w.src + ": face merging failed: a merged face boundary is not one loop "
+                               "(features below the coplanarity tolerance?)");
   }
-  // canonical order (CGAL's face order is not guaranteed reproducible):
-  // each loop starts at its smallest vertex; loops sorted lexicographically
   std::sort(loops.begin(), loops.end());
+  return loops;
+}
 
-  // ---- exact mass properties in input coordinates
+}    // namespace
+
+void PolyShapeTemplate::build(const std::vector<Point> &pts,
+                              const std::vector<std::vector<int>> &faces,
+                              const std::vector<int> &vlines, const std::vector<int> &flines,
+                              int vkey, const ShapeOptions &opt)
+{
+  const std::string src = file_.empty() ? name_ : file_;
+  const Where w{src, vkey > 0 ? src + ":" + std::to_string(vkey) : src, vlines, flines};
+  warnings_.clear();
+  input_ = pts;
+
+  const long double tol = check_points(pts, w);
+  Hull h;
+  convex_hull(pts, w, h);
+  ntri_ = (int)h.tri_in.size();
+  check_interior(pts, h, tol, opt.hull, w, warnings_);
+  check_faces(pts, faces, tol, opt.hull, w, warnings_);
+  const Corners c = hull_corners(pts, h, tol, w);
+  std::vector<int> group;
+  const int ngroups = coplanar_groups(pts, h, tol, w, group);
+  const std::vector<std::vector<int>> loops = face_loops(h, group, ngroups, c.newid, w);
+
+  const std::vector<Point> bv = principal_frame(c.hv, c.tri, w.head);
+  set_mass_properties(bv, c.tri, w.head);
+  set_faces(bv, loops, src);
+  make_float_copy();
+}
+
+// Phase 6, principal frame: exact volume, centroid and inertia of the hull
+// in input coordinates; the centroid moves to the origin and the principal
+// axes become the body axes (choose_axes). Sets centroid_ and rot_ and
+// returns the body-frame corners p_body = R^T (p - c), rounded to double.
+std::vector<PolyShapeTemplate::Point>
+PolyShapeTemplate::principal_frame(const std::vector<Point> &hv,
+                                   const std::vector<std::array<int, 3>> &tri,
+                                   const std::string &head)
+{
   double vol0, inertia0[3][3];
   Pt cen;
   mass_properties(exact_moments(hv, tri), vol0, cen, inertia0);
@@ -746,15 +838,22 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) rot_[i][j] = R[i][j];
 
-  // body coordinates p_body = R^T (p - c)
-  std::vector<Pt> bv(nh);
-  for (int k = 0; k < nh; ++k) {
+  std::vector<Pt> bv(hv.size());
+  for (size_t k = 0; k < hv.size(); ++k) {
     V3 d = vsub(hv[k], cen);
     for (int j = 0; j < 3; ++j)
       bv[k][j] = (double)(R[0][j] * d[0] + R[1][j] * d[1] + R[2][j] * d[2]);
   }
+  return bv;
+}
 
-  // ---- final properties, exactly, of the vertices actually stored
+// Phase 7, stored mass properties: volume and principal moments computed
+// again, exactly, from the rounded body-frame vertices actually stored;
+// the bounding radius about the centroid. Checked to be normal numbers.
+void PolyShapeTemplate::set_mass_properties(const std::vector<Point> &bv,
+                                            const std::vector<std::array<int, 3>> &tri,
+                                            const std::string &head)
+{
   double inertia[3][3];
   Pt c2;
   mass_properties(exact_moments(bv, tri), volume_, c2, inertia);
@@ -767,20 +866,29 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
     radius_ = std::max(radius_, std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]));
 
   check_mass_properties(head);
+}
 
+// Phase 8, faces, planes and edges: the loops as CSR face lists, each
+// face's plane n.p = d (Newell normal of the body-frame loop, d the
+// largest n.p over its vertices), edges sorted (a < b). Euler's formula
+// V - E + F = 2 catches a merge that went wrong.
+void PolyShapeTemplate::set_faces(const std::vector<Point> &bv,
+                                  const std::vector<std::vector<int>> &loops,
+                                  const std::string &src)
+{
   face_start_.assign(1, 0);
   face_verts_.clear();
   planes_.clear();
   edges_.clear();
-  for (int g = 0; g < ngroups; ++g) {
-    face_verts_.insert(face_verts_.end(), loops[g].begin(), loops[g].end());
+  for (const auto &loop : loops) {
+    face_verts_.insert(face_verts_.end(), loop.begin(), loop.end());
     face_start_.push_back((int)face_verts_.size());
-    V3 nn = vunit(newell(bv, loops[g]));
+    V3 nn = vunit(newell(bv, loop));
     long double d = -1e300L;
-    for (int k : loops[g]) d = std::max(d, nn[0] * bv[k][0] + nn[1] * bv[k][1] + nn[2] * bv[k][2]);
+    for (int k : loop) d = std::max(d, nn[0] * bv[k][0] + nn[1] * bv[k][1] + nn[2] * bv[k][2]);
     planes_.insert(planes_.end(), {(double)nn[0], (double)nn[1], (double)nn[2], (double)d});
-    for (size_t k = 0; k < loops[g].size(); ++k) {
-      int a = loops[g][k], b = loops[g][(k + 1) % loops[g].size()];
+    for (size_t k = 0; k < loop.size(); ++k) {
+      int a = loop[k], b = loop[(k + 1) % loop.size()];
       if (a < b) edges_.insert(edges_.end(), {a, b});
     }
   }
@@ -792,7 +900,6 @@ void PolyShapeTemplate::build(const std::vector<Point> &pts,
   if (nverts() - nedges() + nfaces() != 2)
     throw ShapeError(
         src + ": face merging failed: V - E + F != 2 (features below the coplanarity tolerance?)");
-  make_float_copy();
 }
 
 PolyShapeTemplate PolyShapeTemplate::ellipsoid(double a, double b, double c,

@@ -113,6 +113,14 @@ class PolyShapeTemplate {
   void build(const std::vector<Point> &pts, const std::vector<std::vector<int>> &faces,
              const std::vector<int> &vlines, const std::vector<int> &flines, int vkey,
              const ShapeOptions &opt);
+  // build()'s phases that fill members (the others are static in the .cpp)
+  std::vector<Point> principal_frame(const std::vector<Point> &hv,
+                                     const std::vector<std::array<int, 3>> &tri,
+                                     const std::string &head);
+  void set_mass_properties(const std::vector<Point> &bv,
+                           const std::vector<std::array<int, 3>> &tri, const std::string &head);
+  void set_faces(const std::vector<Point> &bv, const std::vector<std::vector<int>> &loops,
+                 const std::string &src);
   void make_float_copy();
   void check_mass_properties(const std::string &what) const;
 
