@@ -22,11 +22,10 @@ struct Keyword {
   int field;
 };
 constexpr Keyword KEYWORDS[] = {
-    {"id1", CR_ID1},     {"id2", CR_ID2},      {"vol", CR_VOL},     {"volfrac", -1},
-    {"area", CR_AREA},   {"fx", CR_F},         {"fy", CR_F + 1},    {"fz", CR_F + 2},
-    {"nx", CR_N},        {"ny", CR_N + 1},     {"nz", CR_N + 2},    {"cx", CR_C},
-    {"cy", CR_C + 1},    {"cz", CR_C + 2},     {"fn", CR_FN},       {"ft", CR_FT},
-    {"energy", CR_ENERGY}};
+    {"id1", CR_ID1},  {"id2", CR_ID2},      {"vol", CR_VOL},  {"volfrac", -1},  {"area", CR_AREA},
+    {"fx", CR_F},     {"fy", CR_F + 1},     {"fz", CR_F + 2}, {"nx", CR_N},     {"ny", CR_N + 1},
+    {"nz", CR_N + 2}, {"cx", CR_C},         {"cy", CR_C + 1}, {"cz", CR_C + 2}, {"fn", CR_FN},
+    {"ft", CR_FT},    {"energy", CR_ENERGY}};
 }    // namespace
 
 /* ----------------------------------------------------------------------
@@ -37,7 +36,8 @@ ComputeContactPolyhedronLocal::ComputeContactPolyhedronLocal(LAMMPS *lmp, int na
     Compute(lmp, narg, arg), nmax(0), pair(nullptr)
 {
   if (narg < 4)
-    error->all(FLERR, "compute contact/polyhedron/local: expected at least one keyword "
+    error->all(FLERR,
+               "compute contact/polyhedron/local: expected at least one keyword "
                "(id1 id2 vol volfrac area fx fy fz nx ny nz cx cy cz fn ft energy)");
   for (int iarg = 3; iarg < narg; iarg++) {
     int found = -2;

@@ -16,7 +16,8 @@ using namespace LAMMPS_NS;
 ComputeERotatePolyhedron::ComputeERotatePolyhedron(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), avec(nullptr)
 {
-  if (narg != 3) error->all(FLERR, "Illegal compute erotate/polyhedron command: no arguments expected");
+  if (narg != 3)
+    error->all(FLERR, "Illegal compute erotate/polyhedron command: no arguments expected");
   scalar_flag = 1;
   extscalar = 1;
   avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);

@@ -24,8 +24,10 @@ static constexpr int NREC = 11;    // id type shape scale x y z qw qx qy qz
 DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg) :
     Dump(lmp, narg, arg), avec(nullptr), nexpected(0), meshes_version(-1)
 {
-  if (narg != 5) error->all(FLERR, "Illegal dump polyhedron/vtk command: expected ID group-ID "
-                            "polyhedron/vtk N file");
+  if (narg != 5)
+    error->all(FLERR,
+               "Illegal dump polyhedron/vtk command: expected ID group-ID "
+               "polyhedron/vtk N file");
   if (binary || multiproc || compressed)
     error->all(FLERR, "dump polyhedron/vtk: file name must not end in .bin or .gz or contain %");
   avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
@@ -108,15 +110,18 @@ const DumpPolyhedronVTK::DrawMesh &DumpPolyhedronVTK::mesh_of(int shape)
     constexpr int NLAT = 8, NLON = 16;    // 2 + 7 x 16 points, 128 faces
     const auto ax = t.semi_axes();
     auto point = [&](double th, double ph) {
-      m.verts.insert(m.verts.end(), {ax[0] * std::sin(th) * std::cos(ph),
-                                     ax[1] * std::sin(th) * std::sin(ph), ax[2] * std::cos(th)});
+      m.verts.insert(m.verts.end(),
+                     {ax[0] * std::sin(th) * std::cos(ph), ax[1] * std::sin(th) * std::sin(ph),
+                      ax[2] * std::cos(th)});
     };
     point(0.0, 0.0);    // north pole: 0
     for (int i = 1; i < NLAT; i++)
       for (int j = 0; j < NLON; j++) point(M_PI * i / NLAT, 2.0 * M_PI * j / NLON);
     point(M_PI, 0.0);    // south pole: 1 + (NLAT - 1) NLON
     const int south = 1 + (NLAT - 1) * NLON;
-    auto ring = [&](int i, int j) { return 1 + (i - 1) * NLON + (j % NLON); };
+    auto ring = [&](int i, int j) {
+      return 1 + (i - 1) * NLON + (j % NLON);
+    };
     m.face_start.push_back(0);
     auto face = [&](std::initializer_list<int> f) {
       m.face_verts.insert(m.face_verts.end(), f);
@@ -124,7 +129,8 @@ const DumpPolyhedronVTK::DrawMesh &DumpPolyhedronVTK::mesh_of(int shape)
     };
     for (int j = 0; j < NLON; j++) face({0, ring(1, j), ring(1, j + 1)});    // outward
     for (int i = 1; i < NLAT - 1; i++)
-      for (int j = 0; j < NLON; j++) face({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1)});
+      for (int j = 0; j < NLON; j++)
+        face({ring(i, j), ring(i + 1, j), ring(i + 1, j + 1), ring(i, j + 1)});
     for (int j = 0; j < NLON; j++) face({south, ring(NLAT - 1, j + 1), ring(NLAT - 1, j)});
   } else {
     const auto v = t.view();
@@ -146,8 +152,10 @@ void DumpPolyhedronVTK::write_snapshot()
     nf += v.nfaces();
     nidx += v.nfaces() + v.face_start.back();
   }
-  fmt::print(fp, "# vtk DataFile Version 3.0\nPOLYDEM polyhedra, timestep {}\nASCII\n"
-             "DATASET POLYDATA\nPOINTS {} double\n", update->ntimestep, nv);
+  fmt::print(fp,
+             "# vtk DataFile Version 3.0\nPOLYDEM polyhedra, timestep {}\nASCII\n"
+             "DATASET POLYDATA\nPOINTS {} double\n",
+             update->ntimestep, nv);
   for (size_t p = 0; p < np; p++) {
     const double *r = &records[p * NREC];
     const auto &v = mesh_of((int) r[2]);

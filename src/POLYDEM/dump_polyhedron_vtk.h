@@ -32,8 +32,8 @@ class DumpPolyhedronVTK : public Dump {
 
  private:
   class AtomVecPolyhedron *avec;
-  bigint nexpected;             // particles in this snapshot
-  std::vector<double> records;  // gathered on the writing rank
+  bigint nexpected;               // particles in this snapshot
+  std::vector<double> records;    // gathered on the writing rank
   // what is drawn for each shape template (unit scale, body frame): the
   // polyhedron itself, or a tessellation of an ellipsoid's surface
   struct DrawMesh {

@@ -64,14 +64,14 @@ double halton(unsigned i, unsigned b)
 
 FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), avec(nullptr), region(nullptr), mode(MODE_RATE), ratestyle(RATE_NONE),
-    massfrac(0), ntotal(0), masstotal(0.0), rate(0.0), every(100), phi_target(0.0),
-    attempts(-1), misses(10), orientstyle(ORIENT_RANDOM), otheta(0.0), itype(1), allin(1), gap(0.0), seed(0),
-    ninserted(0), nfailed(0), nattempts(0), nevents(0), nstart(0), next_event(0),
-    massinserted(0.0), volinserted(0.0), packdone(0), nfailed_warned(0), region_volume(0.0),
-    rmax_insert(0.0)
+    massfrac(0), ntotal(0), masstotal(0.0), rate(0.0), every(100), phi_target(0.0), attempts(-1),
+    misses(10), orientstyle(ORIENT_RANDOM), otheta(0.0), itype(1), allin(1), gap(0.0), seed(0),
+    ninserted(0), nfailed(0), nattempts(0), nevents(0), nstart(0), next_event(0), massinserted(0.0),
+    volinserted(0.0), packdone(0), nfailed_warned(0), region_volume(0.0), rmax_insert(0.0)
 {
   const std::string me = "fix insert/polyhedron";
-  if (narg < 5) error->all(FLERR, "{}: needs N and seed (fix ID group insert/polyhedron N seed ...)", me);
+  if (narg < 5)
+    error->all(FLERR, "{}: needs N and seed (fix ID group insert/polyhedron N seed ...)", me);
   avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "{} requires atom_style polyhedron", me);
   if (domain->dimension != 3) error->all(FLERR, "{}: 3d simulations only", me);
@@ -88,7 +88,9 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   double density = 0.0;
   bool have_rate = false;
 
-  auto num = [&](int i) { return polydem_parse::number(FLERR, arg[i], lmp, me); };
+  auto num = [&](int i) {
+    return polydem_parse::number(FLERR, arg[i], lmp, me);
+  };
   int iarg = 5;
   while (iarg < narg) {
     const std::string kw = arg[iarg];
@@ -116,10 +118,12 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
           iarg++;
           parse_scale(iarg, narg, arg, k.scale, k.id);
         } else if (strcmp(arg[iarg], "density") == 0) {
-          if (iarg + 1 >= narg) error->all(FLERR, "{}: shape '{}': density needs a value", me, k.id);
+          if (iarg + 1 >= narg)
+            error->all(FLERR, "{}: shape '{}': density needs a value", me, k.id);
           k.density = num(iarg + 1);
           if (!(k.density > 0.0))
-            error->all(FLERR, "{}: shape '{}': density must be > 0, got {}", me, k.id, arg[iarg + 1]);
+            error->all(FLERR, "{}: shape '{}': density must be > 0, got {}", me, k.id,
+                       arg[iarg + 1]);
           iarg += 2;
         } else
           break;
@@ -127,9 +131,12 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       kinds.push_back(k);
     } else if (kw == "fractions") {
       need(1);
-      if (strcmp(arg[iarg + 1], "number") == 0) massfrac = 0;
-      else if (strcmp(arg[iarg + 1], "mass") == 0) massfrac = 1;
-      else error->all(FLERR, "{}: fractions must be 'number' or 'mass', got '{}'", me, arg[iarg + 1]);
+      if (strcmp(arg[iarg + 1], "number") == 0)
+        massfrac = 0;
+      else if (strcmp(arg[iarg + 1], "mass") == 0)
+        massfrac = 1;
+      else
+        error->all(FLERR, "{}: fractions must be 'number' or 'mass', got '{}'", me, arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "density") {
       need(1);
@@ -138,9 +145,12 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
     } else if (kw == "mode") {
       need(1);
-      if (strcmp(arg[iarg + 1], "rate") == 0) mode = MODE_RATE;
-      else if (strcmp(arg[iarg + 1], "pack") == 0) mode = MODE_PACK;
-      else error->all(FLERR, "{}: mode must be 'rate' or 'pack', got '{}'", me, arg[iarg + 1]);
+      if (strcmp(arg[iarg + 1], "rate") == 0)
+        mode = MODE_RATE;
+      else if (strcmp(arg[iarg + 1], "pack") == 0)
+        mode = MODE_PACK;
+      else
+        error->all(FLERR, "{}: mode must be 'rate' or 'pack', got '{}'", me, arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "every") {
       need(1);
@@ -222,9 +232,12 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
     } else if (kw == "all_in") {
       need(1);
-      if (strcmp(arg[iarg + 1], "yes") == 0) allin = 1;
-      else if (strcmp(arg[iarg + 1], "no") == 0) allin = 0;
-      else error->all(FLERR, "{}: all_in must be yes or no, got '{}'", me, arg[iarg + 1]);
+      if (strcmp(arg[iarg + 1], "yes") == 0)
+        allin = 1;
+      else if (strcmp(arg[iarg + 1], "no") == 0)
+        allin = 0;
+      else
+        error->all(FLERR, "{}: all_in must be yes or no, got '{}'", me, arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "gap") {
       need(1);
@@ -243,8 +256,10 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     fsum += k.frac;
     if (k.density <= 0.0) {
       if (!(density > 0.0))
-        error->all(FLERR, "{}: shape '{}' has no density: give 'density rho' before the first "
-                   "shape (a density right after a shape is that shape's own)", me, k.id);
+        error->all(FLERR,
+                   "{}: shape '{}' has no density: give 'density rho' before the first "
+                   "shape (a density right after a shape is that shape's own)",
+                   me, k.id);
       k.density = density;
     }
   }
@@ -294,12 +309,14 @@ void FixInsertPolyhedron::parse_scale(int &iarg, int narg, char **arg, polydem::
 {
   const std::string me = "fix insert/polyhedron";
   auto need = [&](int n, const char *what) {
-    if (iarg + n > narg) error->all(FLERR, "{}: shape '{}': scale {} needs {} value(s)", me, id, what, n);
+    if (iarg + n > narg)
+      error->all(FLERR, "{}: shape '{}': scale {} needs {} value(s)", me, id, what, n);
   };
   auto num = [&](int i) {
     const double v = polydem_parse::number(FLERR, arg[i], lmp, me);
     if (!(v > 0.0))
-      error->all(FLERR, "{}: shape '{}': scale values must be finite and > 0, got '{}'", me, id, arg[i]);
+      error->all(FLERR, "{}: shape '{}': scale values must be finite and > 0, got '{}'", me, id,
+                 arg[i]);
     return v;
   };
   if (iarg >= narg) error->all(FLERR, "{}: shape '{}': scale needs a value", me, id);
@@ -327,8 +344,10 @@ void FixInsertPolyhedron::parse_scale(int &iarg, int narg, char **arg, polydem::
     if (!(d.hi > d.lo))
       error->all(FLERR, "{}: shape '{}': scale {} needs cut-offs lo < hi", me, id, st);
     if (!(d.truncated_mass() >= 1.0e-3))
-      error->all(FLERR, "{}: shape '{}': scale {} keeps only {:.3g} of its probability within "
-                 "[{}, {}] (at least 1e-3 needed)", me, id, st, d.truncated_mass(), d.lo, d.hi);
+      error->all(FLERR,
+                 "{}: shape '{}': scale {} keeps only {:.3g} of its probability within "
+                 "[{}, {}] (at least 1e-3 needed)",
+                 me, id, st, d.truncated_mass(), d.lo, d.hi);
     iarg += 5;
   } else if (st == "list") {
     need(2, "list");
@@ -394,8 +413,8 @@ void FixInsertPolyhedron::init()
   if (iregion < 0) error->all(FLERR, "{}: region '{}' does not exist", me, idregion);
   region = domain->regions[iregion];
   if (!region->bboxflag)
-    error->all(FLERR, "{}: region '{}' has no bounding box (an exterior or unbounded region)",
-               me, idregion);
+    error->all(FLERR, "{}: region '{}' has no bounding box (an exterior or unbounded region)", me,
+               idregion);
   if (domain->triclinic) error->all(FLERR, "{}: triclinic boxes are not supported", me);
 
   // ellipsoids where only polyhedra are allowed
@@ -407,23 +426,28 @@ void FixInsertPolyhedron::init()
   for (const auto &k : kinds) {
     if (!avec->shape(k.ishape).is_ellipsoid()) continue;
     if (force->pair && utils::strmatch(force->pair_style, "^polyhedron"))
-      error->all(FLERR, "{}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
-                 "polyhedra only", me, k.id);
+      error->all(FLERR,
+                 "{}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
+                 "polyhedra only",
+                 me, k.id);
     for (auto w : walls)
       if (w->groupbit & (1 | groupbit))    // inserted atoms join group-ID and all
-        error->all(FLERR, "{}: shape '{}' is an ellipsoid, but fix wall/mesh '{}' acts on "
-                   "group '{}' and takes polyhedra only", me, k.id, w->id, group->names[igroup]);
+        error->all(FLERR,
+                   "{}: shape '{}' is an ellipsoid, but fix wall/mesh '{}' acts on "
+                   "group '{}' and takes polyhedra only",
+                   me, k.id, w->id, group->names[igroup]);
   }
   if (force->pair && utils::strmatch(force->pair_style, "^ellipsoid"))
     for (const auto &k : kinds)
       if (!avec->shape(k.ishape).is_ellipsoid())
-        error->all(FLERR, "{}: shape '{}' is a polyhedron, but pair_style ellipsoid takes "
-                   "ellipsoids only", me, k.id);
+        error->all(FLERR,
+                   "{}: shape '{}' is a polyhedron, but pair_style ellipsoid takes "
+                   "ellipsoids only",
+                   me, k.id);
 
   region->prematch();
   region_volume = estimate_region_volume();
-  if (!(region_volume > 0.0))
-    error->all(FLERR, "{}: region '{}' has zero volume", me, idregion);
+  if (!(region_volume > 0.0)) error->all(FLERR, "{}: region '{}' has zero volume", me, idregion);
 }
 
 /* ----------------------------------------------------------------------
@@ -446,7 +470,8 @@ void FixInsertPolyhedron::region_bbox(double *lo, double *hi)
       hi[k] = -1e300;
     }
     for (int c = 0; c < 8; c++) {
-      double p[3] = {(c & 1) ? ehi[0] : elo[0], (c & 2) ? ehi[1] : elo[1], (c & 4) ? ehi[2] : elo[2]};
+      double p[3] = {(c & 1) ? ehi[0] : elo[0], (c & 2) ? ehi[1] : elo[1],
+                     (c & 4) ? ehi[2] : elo[2]};
       RegionMotion::forward(region, p[0], p[1], p[2]);
       for (int k = 0; k < 3; k++) {
         lo[k] = std::min(lo[k], p[k]);
@@ -479,8 +504,8 @@ double FixInsertPolyhedron::estimate_region_volume()
   for (unsigned i = 1; i <= n; i++)
     hit += region->match(lo[0] + ext[0] * halton(i, 2), lo[1] + ext[1] * halton(i, 3),
                          lo[2] + ext[2] * halton(i, 5))
-               ? 1
-               : 0;
+        ? 1
+        : 0;
   return ext[0] * ext[1] * ext[2] * hit / n;
 }
 
@@ -536,9 +561,11 @@ bool FixInsertPolyhedron::region_contains(const polydem::InsertBody<double> &b)
   if (!allin) return true;
   if (!v) return region->surface(b.x.x, b.x.y, b.x.z, b.radius) == 0;
   for (int i = 0; i < v->nverts; i++) {
+    // clang-format off
     const auto p = b.x + b.s * polydem::matvec(b.R, polydem::make_vec3(v->verts[3 * i],
                                                                       v->verts[3 * i + 1],
                                                                       v->verts[3 * i + 2]));
+    // clang-format on
     if (!region->match(p.x, p.y, p.z)) return false;
   }
   return true;
@@ -550,10 +577,8 @@ bool FixInsertPolyhedron::region_contains(const polydem::InsertBody<double> &b)
    every rank. vol_in_region: their volume with the centroid in the region
 ------------------------------------------------------------------------- */
 
-std::vector<polydem::InsertBody<double>> FixInsertPolyhedron::gather(const double *lo,
-                                                                     const double *hi,
-                                                                     double rcand,
-                                                                     double &vol_in_region)
+std::vector<polydem::InsertBody<double>>
+FixInsertPolyhedron::gather(const double *lo, const double *hi, double rcand, double &vol_in_region)
 {
   // per row: tag, image code, shape, scale, x (3), q (4)
   constexpr int W = 11;
@@ -575,8 +600,9 @@ std::vector<polydem::InsertBody<double>> FixInsertPolyhedron::gather(const doubl
           for (int k = 0; k < 3; k++) in = in && p[k] > lo[k] - reach && p[k] < hi[k] + reach;
           if (!in) continue;
           const double img = (ix + 1) * 9 + (iy + 1) * 3 + (iz + 1);
-          const double row[W] = {(double) tag[i], img, (double) pshape[i], pscale[i], p[0], p[1],
-                                      p[2], quat[i][0], quat[i][1], quat[i][2], quat[i][3]};
+          const double row[W] = {
+              (double) tag[i], img,        (double) pshape[i], pscale[i], p[0], p[1], p[2],
+              quat[i][0],      quat[i][1], quat[i][2],         quat[i][3]};
           mine.insert(mine.end(), row, row + W);
         }
   }
@@ -588,7 +614,8 @@ std::vector<polydem::InsertBody<double>> FixInsertPolyhedron::gather(const doubl
     displs[p] = (int) total;
     total += counts[p];
   }
-  if (total > MAXSMALLINT) error->all(FLERR, "fix insert/polyhedron: too many particles near the region");
+  if (total > MAXSMALLINT)
+    error->all(FLERR, "fix insert/polyhedron: too many particles near the region");
   std::vector<double> all(total);
   MPI_Allgatherv(mine.data(), nmine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
                  MPI_DOUBLE, world);
@@ -641,7 +668,8 @@ polydem::Quat<double> FixInsertPolyhedron::draw_orientation(int ishape)
 
 void FixInsertPolyhedron::draw_range(const double *lo, const double *hi, double *out)
 {
-  for (int k = 0; k < 3; k++) out[k] = lo[k] == hi[k] ? lo[k] : lo[k] + (hi[k] - lo[k]) * rng.uniform();
+  for (int k = 0; k < 3; k++)
+    out[k] = lo[k] == hi[k] ? lo[k] : lo[k] + (hi[k] - lo[k]) * rng.uniform();
 }
 
 // a point uniform in the region (within the box), from its current box
@@ -684,7 +712,9 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   double rmax = rcand;
   for (const auto &b : bodies) rmax = std::max(rmax, b.radius);
   grid.setup(lo, hi, rcand + rmax + gap, std::move(bodies));
-  auto inside = [&](double x, double y, double z) { return region->match(x, y, z) != 0; };
+  auto inside = [&](double x, double y, double z) {
+    return region->match(x, y, z) != 0;
+  };
   const bool voids = mode == MODE_PACK;
   if (voids) {
     double rin = 1e300;
@@ -845,7 +875,7 @@ bool FixInsertPolyhedron::finished() const
 {
   if (mode == MODE_PACK) return packdone;
   return (ntotal > 0 && ninserted >= ntotal) ||
-         (masstotal > 0.0 && massinserted + 0.5 * mean_mass >= masstotal);
+      (masstotal > 0.0 && massinserted + 0.5 * mean_mass >= masstotal);
 }
 
 void FixInsertPolyhedron::do_event()
@@ -865,10 +895,11 @@ void FixInsertPolyhedron::do_event()
   if (nfailed > failed_before && nfailed > 2 * nfailed_warned) {
     nfailed_warned = nfailed;
     if (comm->me == 0)
-      error->warning(FLERR, "fix insert/polyhedron: {} particle(s) found no place in {} attempts "
+      error->warning(FLERR,
+                     "fix insert/polyhedron: {} particle(s) found no place in {} attempts "
                      "each so far (last at step {}): region '{}' is too full; the schedule "
-                     "carries them to the next insertion", nfailed, attempts, update->ntimestep,
-                     idregion);
+                     "carries them to the next insertion",
+                     nfailed, attempts, update->ntimestep, idregion);
   }
 }
 
@@ -886,13 +917,17 @@ void FixInsertPolyhedron::setup_pre_exchange()
       packdone = 1;
       const bigint n = ninserted - n0;
       if (comm->me == 0) {
-        utils::logmesg(lmp, "fix insert/polyhedron: packed {} particle(s) into region '{}': "
-                       "solid fraction {:.4f}, {} attempts ({:.1f} per particle)\n", n, idregion,
-                       last_phi, nattempts - a0, n ? (double) (nattempts - a0) / n : 0.0);
+        utils::logmesg(lmp,
+                       "fix insert/polyhedron: packed {} particle(s) into region '{}': "
+                       "solid fraction {:.4f}, {} attempts ({:.1f} per particle)\n",
+                       n, idregion, last_phi, nattempts - a0,
+                       n ? (double) (nattempts - a0) / n : 0.0);
         if (r < 0)
-          error->warning(FLERR, "fix insert/polyhedron: pack stopped at {} of the requested "
+          error->warning(FLERR,
+                         "fix insert/polyhedron: pack stopped at {} of the requested "
                          "particles (solid fraction {:.4f}{}): a particle found no place in {} "
-                         "attempts", n, last_phi,
+                         "attempts",
+                         n, last_phi,
                          phi_target > 0.0 ? fmt::format(", target {}", phi_target) : "", attempts);
       }
     }
@@ -919,9 +954,10 @@ void FixInsertPolyhedron::pre_exchange()
 void FixInsertPolyhedron::post_run()
 {
   if (comm->me == 0)
-    utils::logmesg(lmp, "fix insert/polyhedron {}: {} particle(s) inserted (mass {:.6g}), {} not "
-                   "placed, {} attempts; insertion took {:.3g} s of this run ({:.2g} %)\n", id,
-                   ninserted, massinserted, nfailed, nattempts, time_run,
+    utils::logmesg(lmp,
+                   "fix insert/polyhedron {}: {} particle(s) inserted (mass {:.6g}), {} not "
+                   "placed, {} attempts; insertion took {:.3g} s of this run ({:.2g} %)\n",
+                   id, ninserted, massinserted, nfailed, nattempts, time_run,
                    100.0 * time_run / std::max(1e-30, MPI_Wtime() - time_start));
 }
 
@@ -960,11 +996,16 @@ double FixInsertPolyhedron::compute_scalar()
 double FixInsertPolyhedron::compute_vector(int i)
 {
   switch (i) {
-    case 0: return (double) ninserted;
-    case 1: return massinserted;
-    case 2: return (double) nfailed;
-    case 3: return region_volume > 0.0 ? volinserted / region_volume : 0.0;
-    default: return (double) nattempts;
+    case 0:
+      return (double) ninserted;
+    case 1:
+      return massinserted;
+    case 2:
+      return (double) nfailed;
+    case 3:
+      return region_volume > 0.0 ? volinserted / region_volume : 0.0;
+    default:
+      return (double) nattempts;
   }
 }
 
@@ -975,10 +1016,18 @@ double FixInsertPolyhedron::compute_vector(int i)
 
 void FixInsertPolyhedron::write_restart(FILE *fp)
 {
-  std::vector<double> list = {(double) RESTART_VERSION, (double) seed, (double) ninserted,
-                              (double) nfailed, (double) nattempts, (double) nevents,
-                              (double) nstart, (double) next_event, massinserted, volinserted,
-                              (double) packdone, (double) nfailed_warned};
+  std::vector<double> list = {(double) RESTART_VERSION,
+                              (double) seed,
+                              (double) ninserted,
+                              (double) nfailed,
+                              (double) nattempts,
+                              (double) nevents,
+                              (double) nstart,
+                              (double) next_event,
+                              massinserted,
+                              volinserted,
+                              (double) packdone,
+                              (double) nfailed_warned};
   for (uint64_t w : rng.s) {
     list.push_back((double) (w >> 32));
     list.push_back((double) (w & 0xffffffffULL));
@@ -996,8 +1045,10 @@ void FixInsertPolyhedron::restart(char *buf)
   if ((int) list[0] != RESTART_VERSION)
     error->all(FLERR, "fix insert/polyhedron: restart data of an unknown version {}", list[0]);
   if ((bigint) list[1] != seed)
-    error->warning(FLERR, "fix insert/polyhedron: the restart file was written with seed {}, "
-                   "now {}: its generator state continues", (bigint) list[1], seed);
+    error->warning(FLERR,
+                   "fix insert/polyhedron: the restart file was written with seed {}, "
+                   "now {}: its generator state continues",
+                   (bigint) list[1], seed);
   ninserted = (bigint) list[2];
   nfailed = (bigint) list[3];
   nattempts = (bigint) list[4];

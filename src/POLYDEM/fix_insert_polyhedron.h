@@ -62,7 +62,7 @@ class FixInsertPolyhedron : public Fix {
     double frac;       // as given (number or mass fraction)
     double density;    // <= 0: the global density
     polydem::ScaleDist scale;
-    double pnum;       // number probability (cumulative over kinds)
+    double pnum;    // number probability (cumulative over kinds)
   };
 
   class AtomVecPolyhedron *avec;
@@ -70,13 +70,13 @@ class FixInsertPolyhedron : public Fix {
   std::string idregion;
   class Region *region;
   int mode, ratestyle, massfrac;
-  bigint ntotal;                 // particles in total (0: no count limit)
-  double masstotal;              // mass in total (0: no mass limit)
-  double rate;                   // particles or mass per time unit, or per insertion
-  int every;                     // steps between insertions (rate mode)
-  double phi_target;             // pack: solid fraction of the region (0: none)
-  int attempts;                  // per particle
-  int misses;                    // pack: stop after this many particles in a row found no place
+  bigint ntotal;        // particles in total (0: no count limit)
+  double masstotal;     // mass in total (0: no mass limit)
+  double rate;          // particles or mass per time unit, or per insertion
+  int every;            // steps between insertions (rate mode)
+  double phi_target;    // pack: solid fraction of the region (0: none)
+  int attempts;         // per particle
+  int misses;           // pack: stop after this many particles in a row found no place
   int orientstyle;
   double oaxis[3], otheta;
   double vlo[3], vhi[3], wlo[3], whi[3];
@@ -99,11 +99,11 @@ class FixInsertPolyhedron : public Fix {
   double region_volume;
   polydem::InsertGrid grid;      // the particles a candidate is tested against
   polydem::InsertVoids space;    // the void cells of mode pack
-  double rmax_insert;    // largest bounding radius of a candidate
-  double mean_mass;      // mean particle mass of the mixture
+  double rmax_insert;            // largest bounding radius of a candidate
+  double mean_mass;              // mean particle mass of the mixture
   std::vector<class FixWallMesh *> walls;
   std::vector<polydem::ShapeView<double>> views;    // of every template (polyhedra)
-  std::vector<double> inradius;                      // of every template at unit scale
+  std::vector<double> inradius;                     // of every template at unit scale
   double slo[3], shi[3];    // box of the region now, within the simulation box
 
   struct Placed {
@@ -117,8 +117,8 @@ class FixInsertPolyhedron : public Fix {
   void region_bbox(double *lo, double *hi);
   bool sample_in_region(double *x);
   bool region_contains(const polydem::InsertBody<double> &b);
-  std::vector<polydem::InsertBody<double>> gather(const double *lo, const double *hi,
-                                                  double rcand, double &vol_in_region);
+  std::vector<polydem::InsertBody<double>> gather(const double *lo, const double *hi, double rcand,
+                                                  double &vol_in_region);
   void grid_add(const polydem::InsertBody<double> &b);
   void refresh_views();
   polydem::InsertBody<double> body_of(int ishape, double s, const double *x,

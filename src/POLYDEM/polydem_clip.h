@@ -38,10 +38,10 @@ template <typename T> struct Triangle {
 template <typename T, int MaxFaces = MAX_TEMPLATE_FACES, int MaxEdges = 3 * MAX_TEMPLATE_VERTS>
 struct ClipWorkspace {
   static constexpr int MAX_POLY = MaxEdges + 4;
-  T vu[MaxEdges], vv[MaxEdges], vs[MaxEdges];     // posed vertices (u, v, height)
-  T pu[MAX_POLY], pv[MAX_POLY], pz[MAX_POLY];     // polygon (2-D, depth)
-  T qu[MAX_POLY], qv[MAX_POLY], qz[MAX_POLY];     // Sutherland-Hodgman ping-pong
-  T key[MAX_POLY];                                // sort keys of the section
+  T vu[MaxEdges], vv[MaxEdges], vs[MaxEdges];    // posed vertices (u, v, height)
+  T pu[MAX_POLY], pv[MAX_POLY], pz[MAX_POLY];    // polygon (2-D, depth)
+  T qu[MAX_POLY], qv[MAX_POLY], qz[MAX_POLY];    // Sutherland-Hodgman ping-pong
+  T key[MAX_POLY];                               // sort keys of the section
 };
 
 template <typename T, int MaxFaces = MAX_TEMPLATE_FACES, int MaxEdges = 3 * MAX_TEMPLATE_VERTS>
@@ -62,7 +62,8 @@ template <typename T> struct ClipResult {
   Vec3<T> normal;       // n_w
 };
 
-constexpr int CLIP_TOUCH_TOL = 16;    // volumes below this x eps x the sum of |column integrals| are 0
+// volumes below this x eps x the sum of |column integrals| are 0
+constexpr int CLIP_TOUCH_TOL = 16;
 
 template <typename T> POLYDEM_FN void clip_result_zero(ClipResult<T> &r, int status)
 {
@@ -92,7 +93,7 @@ namespace clip_detail {
   // carrying a value z that is linear along the polygon's edges
   template <typename T>
   POLYDEM_FN int sh_pass(const T *iu, const T *iv, const T *iz, int n, T au, T av, T bu, T bv,
-                           T *ou, T *ov, T *oz)
+                         T *ou, T *ov, T *oz)
   {
     const T eu = bu - au, ev = bv - av;
     int m = 0;
@@ -144,9 +145,9 @@ namespace clip_detail {
   }
 }    // namespace clip_detail
 
-template <typename T, int MF, int ME> POLYDEM_FN ClipResult<T>
-polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspace<T, MF, ME> &ws,
-                    const T *posed = nullptr)
+template <typename T, int MF, int ME>
+POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri,
+                                             ClipWorkspace<T, MF, ME> &ws, const T *posed = nullptr)
 {
   // posed: the caller's posed vertices x + s R v (3 nverts, same frame), or null
   ClipResult<T> res;
@@ -177,9 +178,9 @@ polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspac
   const Vec3<T> o = a.x - sx * nw;
   int nbehind = 0;
   for (int i = 0; i < sv.nverts; ++i) {
-    const Vec3<T> r = posed ? make_vec3(posed[3 * i], posed[3 * i + 1], posed[3 * i + 2]) - a.x
-                            : a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
-                                                          sv.verts[3 * i + 2]));
+    const Vec3<T> r = posed
+        ? make_vec3(posed[3 * i], posed[3 * i + 1], posed[3 * i + 2]) - a.x
+        : a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1], sv.verts[3 * i + 2]));
     ws.vu[i] = dot(r, e1);
     ws.vv[i] = dot(r, e2);
     ws.vs[i] = sx + dot(r, nw);
@@ -295,7 +296,8 @@ polyhedron_triangle(const PosedShape<T> &a, const Triangle<T> &tri, ClipWorkspac
     // fan: over a triangle, int z = A sum(z)/3, int u z = A (sum u sum z +
     // sum u z)/12, int z^2 = A (sum(z)^2 + sum z^2)/12
     for (int i = 1; i + 1 < m; ++i) {
-      const T da = T(0.5) * ((iu[i] - iu[0]) * (iv[i + 1] - iv[0]) - (iv[i] - iv[0]) * (iu[i + 1] - iu[0]));
+      const T da =
+          T(0.5) * ((iu[i] - iu[0]) * (iv[i + 1] - iv[0]) - (iv[i] - iv[0]) * (iu[i + 1] - iu[0]));
       const T z0 = iz[0], z1 = iz[i], z2 = iz[i + 1], sz = z0 + z1 + z2;
       V += da * sz;
       Vabs += fabs(da * sz);

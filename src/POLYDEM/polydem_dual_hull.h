@@ -85,8 +85,8 @@ namespace hull_detail {
   // fan triangle (F_a, P_t, P_t2) of face a = tc[t][e]: plane normal n, foot
   // F_a = h_a n of the origin, the edge P_t -> P_t2; returns its signed area
   template <typename T, int MP>
-  POLYDEM_FN T fan_triangle(const DualHullWorkspace<T, MP> &w, int t, int e, Vec3<T> &n,
-                            Vec3<T> &F, Vec3<T> &p1, Vec3<T> &p2)
+  POLYDEM_FN T fan_triangle(const DualHullWorkspace<T, MP> &w, int t, int e, Vec3<T> &n, Vec3<T> &F,
+                            Vec3<T> &p1, Vec3<T> &p2)
   {
     const T *q = w.pl + 4 * w.tc[t][e];
     n = make_vec3(q[0], q[1], q[2]);
@@ -354,9 +354,9 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first)
 // from the first pass) takes V and the moment from the pyramids of the first
 // pass (seed Eq. 9), accurate to round-off there, and skips the second pass.
 // The default (infinite) always takes the second pass.
-template <typename T, int MP> POLYDEM_FN void
-dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2], HullIntegrals<T> &out,
-                    T thin_below = T(1e30))
+template <typename T, int MP>
+POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2],
+                                    HullIntegrals<T> &out, T thin_below = T(1e30))
 {
   const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
   T vol = T(0);    // 3 x (pyramids from x_o)

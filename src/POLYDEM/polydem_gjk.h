@@ -179,8 +179,9 @@ namespace gjk_detail {
 
   // true if the origin and d are strictly on different sides of plane (a,b,c)
   // or the tetrahedron is flat there (then the face must be examined).
-  template <typename T> POLYDEM_FN bool origin_outside(const Vec3<T> &a, const Vec3<T> &b,
-                                                       const Vec3<T> &c, const Vec3<T> &d)
+  template <typename T>
+  POLYDEM_FN bool origin_outside(const Vec3<T> &a, const Vec3<T> &b, const Vec3<T> &c,
+                                 const Vec3<T> &d)
   {
     const Vec3<T> nrm = cross(b - a, c - a);
     const T sp = -dot(a, nrm), sd = dot(d - a, nrm);
@@ -229,8 +230,9 @@ namespace gjk_detail {
 // GJK (seed Algorithm I, distance form). Reports STATUS_OK (intersecting) if
 // the polyhedra overlap or are closer than tol_rel * L, where L is the larger
 // bounding radius [length]; tol_rel is dimensionless (default 1e3 eps).
-template <typename T> POLYDEM_FN GjkResult<T>
-gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b, T tol_rel = T(1000) * Eps<T>::value)
+template <typename T>
+POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T> &b,
+                                      T tol_rel = T(1000) * Eps<T>::value)
 {
   GjkResult<T> res;
   res.status = STATUS_NO_CONVERGENCE;

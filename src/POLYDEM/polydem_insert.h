@@ -64,13 +64,13 @@ struct InsertRng {
 struct ScaleDist {
   enum Kind { CONSTANT, UNIFORM, NORMAL, LOGNORMAL, LIST };
   int kind = CONSTANT;
-  double a = 1.0, b = 0.0;    // constant: a; uniform: [a, b]; normal: mean a, sd b;
-                              // lognormal: median a, sd b of ln s
-  double lo = 0.0, hi = 0.0;  // cut-offs (normal, lognormal)
+  double a = 1.0, b = 0.0;      // constant: a; uniform: [a, b]; normal: mean a, sd b;
+                                // lognormal: median a, sd b of ln s
+  double lo = 0.0, hi = 0.0;    // cut-offs (normal, lognormal)
   int nlist = 0;
   static constexpr int MAXLIST = 32;
-  double val[MAXLIST], cum[MAXLIST];    // list: values, cumulative weights (last = 1)
-  static constexpr int MAXTRY = 100000;   // truncated draws (truncated mass >= 1e-3)
+  double val[MAXLIST], cum[MAXLIST];       // list: values, cumulative weights (last = 1)
+  static constexpr int MAXTRY = 100000;    // truncated draws (truncated mass >= 1e-3)
 
   double pdf(double s) const    // unnormalised density of the continuous kinds
   {
@@ -240,7 +240,8 @@ template <typename T> POLYDEM_FN bool point_within(const InsertBody<T> &a, const
 constexpr double INSERT_MARGIN = 1e-9;
 
 // true if a and b are certified apart by more than gap [length]
-template <typename T> POLYDEM_FN bool bodies_apart(const InsertBody<T> &a, const InsertBody<T> &b, T gap)
+template <typename T>
+POLYDEM_FN bool bodies_apart(const InsertBody<T> &a, const InsertBody<T> &b, T gap)
 {
   const Vec3<T> d = a.x - b.x;
   const T dd = norm2(d);

@@ -92,7 +92,9 @@ class InsertGrid {
     if (overlap) return false;
     std::sort(near_.begin(), near_.end(),
               [](const std::pair<double, const InsertBody<double> *> &a,
-                 const std::pair<double, const InsertBody<double> *> &c) { return a.first < c.first; });
+                 const std::pair<double, const InsertBody<double> *> &c) {
+                return a.first < c.first;
+              });
     for (const auto &n : near_)
       if (!bodies_apart(b, *n.second, gap)) return false;
     return true;
@@ -136,16 +138,16 @@ class InsertGrid {
 class InsertVoids {
  public:
   static constexpr int MAXCELLS = 1 << 24;
-  static constexpr int FAILS = 8;     // failed draws in a live cell before it is checked again
-  static constexpr int LEVELS = 2;    // deepest split of that check (4 x 4 x 4 sub-cells)
-  static constexpr int TRIES = 1000;  // points drawn outside the region before giving up
+  static constexpr int FAILS = 8;       // failed draws in a live cell before it is checked again
+  static constexpr int LEVELS = 2;      // deepest split of that check (4 x 4 x 4 sub-cells)
+  static constexpr int TRIES = 1000;    // points drawn outside the region before giving up
 
   // inside(x, y, z): the region; surface(x, y, z, cut): distance to the
   // region's surface if below cut (else >= cut); allin: the candidates must
   // lie inside the region, so cells within rin of its surface are dead too
   template <typename In, typename Surf>
-  void setup(const double *lo, const double *hi, double rin, bool allin, In &&inside, Surf &&surface,
-             const InsertGrid &grid)
+  void setup(const double *lo, const double *hi, double rin, bool allin, In &&inside,
+             Surf &&surface, const InsertGrid &grid)
   {
     rin_ = rin;
     h_ = 0.25 * rin;
@@ -180,8 +182,10 @@ class InsertVoids {
           // a candidate whose inscribed ball crosses the surface of a convex
           // region has a vertex outside
           if (centre && allin && surface(cx, cy, cz, rin) + hd < rin) in = false;
-          if (in) alive_.push_back(c);
-          else dead_[c] = 1;
+          if (in)
+            alive_.push_back(c);
+          else
+            dead_[c] = 1;
         }
     for (const auto &b : grid.bodies()) kill(b);
   }
@@ -204,8 +208,8 @@ class InsertVoids {
           const auto p = make_vec3(lo_[0] + (clo[0] + i) * h_, lo_[1] + (clo[1] + j) * h_,
                                    lo_[2] + (clo[2] + k) * h_);
           const double d2 = norm2(p - b.x);
-          corner_[((size_t) k * m[1] + j) * m[0] + i] =
-              d2 <= rin * rin || (d2 <= R * R && point_within(b, p, rin_));
+          corner_[((size_t) k * m[1] + j) * m[0] + i] = d2 <= rin * rin ||
+              (d2 <= R * R && point_within(b, p, rin_));
         }
     for (int k = clo[2]; k <= chi[2]; k++)
       for (int j = clo[1]; j <= chi[1]; j++)
@@ -215,7 +219,9 @@ class InsertVoids {
           bool all = true;
           for (int q = 0; q < 8 && all; q++)
             all = corner_[((size_t) (k - clo[2] + ((q >> 2) & 1)) * m[1] +
-                           (j - clo[1] + ((q >> 1) & 1))) * m[0] + (i - clo[0] + (q & 1))];
+                           (j - clo[1] + ((q >> 1) & 1))) *
+                              m[0] +
+                          (i - clo[0] + (q & 1))];
           if (all) dead_[c] = 1;
         }
   }
@@ -310,7 +316,8 @@ class InsertVoids {
             const auto &o = *near[b];
             const double d2 = norm2(p - o.x);
             const double rin = o.inradius + rin_, R = o.radius + rin_;
-            if (d2 <= rin * rin || (d2 <= R * R && point_within(o, p, rin_))) bits |= (uint64_t) 1 << b;
+            if (d2 <= rin * rin || (d2 <= R * R && point_within(o, p, rin_)))
+              bits |= (uint64_t) 1 << b;
           }
           cover[(k * m + j) * m + i] = bits;
         }

@@ -13,11 +13,11 @@
 
 namespace polydem {
 
+using std::cos;
 using std::fabs;
 using std::fma;
-using std::sqrt;
-using std::cos;
 using std::sin;
+using std::sqrt;
 
 template <typename T> struct Vec3 {
   T x, y, z;
@@ -97,7 +97,7 @@ template <typename T> POLYDEM_FN T offset_minus_dot(T h, const Vec3<T> &a, const
     const T pe = fma(-ab[k][0], ab[k][1], -p);    // exact error of the product
     const T s = hi + p;
     const T bb = s - hi;
-    lo += ((hi - (s - bb)) + (p - bb)) + pe;      // exact error of the sum
+    lo += ((hi - (s - bb)) + (p - bb)) + pe;    // exact error of the sum
     hi = s;
   }
   return hi + lo;
@@ -108,9 +108,11 @@ template <typename T> POLYDEM_FN Vec3<T> any_perpendicular(const Vec3<T> &u)
 {
   const T ax = fabs(u.x), ay = fabs(u.y), az = fabs(u.z);
   // cross with the axis least aligned with u
+  // clang-format off
   const Vec3<T> c = (ax <= ay && ax <= az) ? make_vec3(T(0), u.z, -u.y)
                     : (ay <= az)           ? make_vec3(-u.z, T(0), u.x)
                                            : make_vec3(u.y, -u.x, T(0));
+  // clang-format on
   return (T(1) / norm(c)) * c;
 }
 
@@ -130,10 +132,12 @@ template <typename T> POLYDEM_FN Quat<T> make_quat(T w, T x, T y, T z)
 // Hamilton product a*b
 template <typename T> POLYDEM_FN Quat<T> qmul(const Quat<T> &a, const Quat<T> &b)
 {
+  // clang-format off
   return make_quat(a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z,
                    a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
                    a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x,
                    a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w);
+  // clang-format on
 }
 template <typename T> POLYDEM_FN Quat<T> qconj(const Quat<T> &q)
 {

@@ -27,12 +27,18 @@ namespace {
 
   using V3 = std::array<double, 3>;
 
-  V3 sub(const V3 &a, const V3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+  V3 sub(const V3 &a, const V3 &b)
+  {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  }
   V3 crs(const V3 &a, const V3 &b)
   {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
   }
-  double dt(const V3 &a, const V3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  double dt(const V3 &a, const V3 &b)
+  {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
 
   // twice the signed area of (a, b, c) in 2-D
   double orient(const double *a, const double *b, const double *c)
@@ -87,12 +93,12 @@ namespace {
                  o4 = orient(a, b, q);
     auto on = [](const double *u, const double *v, const double *w) {    // w on segment uv
       return std::min(u[0], v[0]) <= w[0] && w[0] <= std::max(u[0], v[0]) &&
-             std::min(u[1], v[1]) <= w[1] && w[1] <= std::max(u[1], v[1]);
+          std::min(u[1], v[1]) <= w[1] && w[1] <= std::max(u[1], v[1]);
     };
     if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0)))
       return true;
     return (o1 == 0 && on(p, q, a)) || (o2 == 0 && on(p, q, b)) || (o3 == 0 && on(a, b, p)) ||
-           (o4 == 0 && on(a, b, q));
+        (o4 == 0 && on(a, b, q));
   }
 
   // Splice hole h (clockwise) into the counter-clockwise polygon outer by a
@@ -108,8 +114,7 @@ namespace {
   {
     size_t mi = 0;
     for (size_t i = 1; i < h.size(); i++)
-      if (pt[h[i]][0] > pt[h[mi]][0] ||
-          (pt[h[i]][0] == pt[h[mi]][0] && pt[h[i]][1] > pt[h[mi]][1]))
+      if (pt[h[i]][0] > pt[h[mi]][0] || (pt[h[i]][0] == pt[h[mi]][0] && pt[h[i]][1] > pt[h[mi]][1]))
         mi = i;
     const double *M = pt[h[mi]].data();
     const int no = (int) outer.size();
@@ -359,8 +364,8 @@ MergeStats merge_coplanar(std::vector<double> &tri, double tol)
       for (const int v : loops[hk.second]) hl.back().push_back(local[v]);
     }
     for (size_t k = 0; ok && k < hl.size(); k++)
-      ok = bridge_hole(poly, hl[k], std::vector<std::vector<int>>(hl.begin() + (long) k + 1, hl.end()),
-                       pt);
+      ok = bridge_hole(poly, hl[k],
+                       std::vector<std::vector<int>>(hl.begin() + (long) k + 1, hl.end()), pt);
     double ext = 0.0;
     for (const auto &a : pt)
       for (const auto &b : pt) ext = std::max(ext, std::fabs(a[0] - b[0]) + std::fabs(a[1] - b[1]));

@@ -122,8 +122,9 @@ template <typename T> POLYDEM_FN void overlap_result_zero(OverlapResult<T> &r, i
 
 // Overlap of two posed polyhedra. Call after GJK has reported intersection
 // (it is also correct, only slower, on separated pairs).
-template <typename T, int MF> POLYDEM_FN OverlapResult<T>
-polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b, OverlapWorkspace<T, MF> &ws)
+template <typename T, int MF>
+POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b,
+                                               OverlapWorkspace<T, MF> &ws)
 {
   OverlapResult<T> res;
   overlap_result_zero(res, STATUS_OK);

@@ -71,10 +71,10 @@ class PolyShapeTemplate {
   const std::string &file() const { return file_; }    // path as given ("" if from points)
   const std::vector<std::string> &warnings() const { return warnings_; }
 
-  int nverts() const { return (int)verts_.size() / 3; }
-  int nfaces() const { return (int)face_start_.size() - 1; }
-  int nedges() const { return (int)edges_.size() / 2; }
-  int ninput_verts() const { return (int)input_.size(); }    // points read
+  int nverts() const { return (int) verts_.size() / 3; }
+  int nfaces() const { return (int) face_start_.size() - 1; }
+  int nedges() const { return (int) edges_.size() / 2; }
+  int ninput_verts() const { return (int) input_.size(); }    // points read
   // The points exactly as they entered the hull computation (all scales
   // applied). from_points(input_points(), {}, {hull}) rebuilds this
   // template bit for bit (used for restart records).
@@ -113,6 +113,14 @@ class PolyShapeTemplate {
   void build(const std::vector<Point> &pts, const std::vector<std::vector<int>> &faces,
              const std::vector<int> &vlines, const std::vector<int> &flines, int vkey,
              const ShapeOptions &opt);
+  // build()'s phases that fill members (the others are static in the .cpp)
+  std::vector<Point> principal_frame(const std::vector<Point> &hv,
+                                     const std::vector<std::array<int, 3>> &tri,
+                                     const std::string &head);
+  void set_mass_properties(const std::vector<Point> &bv, const std::vector<std::array<int, 3>> &tri,
+                           const std::string &head);
+  void set_faces(const std::vector<Point> &bv, const std::vector<std::vector<int>> &loops,
+                 const std::string &src);
   void make_float_copy();
   void check_mass_properties(const std::string &what) const;
 

@@ -48,8 +48,8 @@ namespace {
       for (int v = 0; v < 3; v++) {
         const double *q = raw + 3 * v;
         for (int d = 0; d < 3; d++)
-          p[v][d] = xf.offset[d] + xf.scale * (xf.R[d][0] * q[0] + xf.R[d][1] * q[1] +
-                                               xf.R[d][2] * q[2]);
+          p[v][d] =
+              xf.offset[d] + xf.scale * (xf.R[d][0] * q[0] + xf.R[d][1] * q[1] + xf.R[d][2] * q[2]);
       }
       for (int v = 0; v < 3; v++)
         for (int d = 0; d < 3; d++)
@@ -66,11 +66,14 @@ namespace {
       const double cy = e1[2] * e2[0] - e1[0] * e2[2];
       const double cz = e1[0] * e2[1] - e1[1] * e2[0];
       const double n2 = cx * cx + cy * cy + cz * cz;
-      auto l2 = [](const double *e) { return e[0] * e[0] + e[1] * e[1] + e[2] * e[2]; };
+      auto l2 = [](const double *e) {
+        return e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+      };
       const double lmax = std::max(l2(e1), std::max(l2(e2), l2(e3)));
       if (!std::isfinite(n2) || !std::isfinite(lmax))
-        throw StlError(where + ": triangle too large (its area overflows) after scale, rotate "
-                               "and offset");
+        throw StlError(where +
+                       ": triangle too large (its area overflows) after scale, rotate "
+                       "and offset");
       // |cross| = 2 area; zero area relative to the longest edge squared
       if (!(std::sqrt(n2) > 1e-12 * lmax)) {
         mesh.ndegenerate++;
@@ -78,17 +81,19 @@ namespace {
       }
       // stored normal (rotated like the vertices) against the vertex order
       double sn[3];
-      for (int d = 0; d < 3; d++) sn[d] = xf.R[d][0] * nrm[0] + xf.R[d][1] * nrm[1] + xf.R[d][2] * nrm[2];
+      for (int d = 0; d < 3; d++)
+        sn[d] = xf.R[d][0] * nrm[0] + xf.R[d][1] * nrm[1] + xf.R[d][2] * nrm[2];
       const double sd = sn[0] * cx + sn[1] * cy + sn[2] * cz;
       const double sl = std::sqrt(sn[0] * sn[0] + sn[1] * sn[1] + sn[2] * sn[2]);
       if (std::isfinite(sd) && sl > 0.0) {
-        if (sd < -0.5 * sl * std::sqrt(n2)) mesh.nopposite++;
-        else if (sd > 0.5 * sl * std::sqrt(n2)) mesh.nalong++;
+        if (sd < -0.5 * sl * std::sqrt(n2))
+          mesh.nopposite++;
+        else if (sd > 0.5 * sl * std::sqrt(n2))
+          mesh.nalong++;
       }
       // duplicate: same vertex set, whatever the order or orientation
-      std::array<std::array<double, 3>, 3> s = {{{p[0][0], p[0][1], p[0][2]},
-                                                 {p[1][0], p[1][1], p[1][2]},
-                                                 {p[2][0], p[2][1], p[2][2]}}};
+      std::array<std::array<double, 3>, 3> s = {
+          {{p[0][0], p[0][1], p[0][2]}, {p[1][0], p[1][1], p[1][2]}, {p[2][0], p[2][1], p[2][2]}}};
       std::sort(s.begin(), s.end());
       std::array<double, 9> key;
       for (int v = 0; v < 3; v++)
@@ -120,7 +125,9 @@ namespace {
     int state = 0, nv = 0;
     double raw[9], nrm[3] = {0.0, 0.0, 0.0};
     long facet_line = 0;
-    auto bad = [&](const std::string &why) { throw StlError(fmt_line(path, lineno, why)); };
+    auto bad = [&](const std::string &why) {
+      throw StlError(fmt_line(path, lineno, why));
+    };
     while (std::getline(in, line)) {
       lineno++;
       std::istringstream ls(line);
@@ -173,8 +180,9 @@ namespace {
       }
     }
     if (state != 0 && !(state == 1 && col.mesh.nread > 0))
-      throw StlError(fmt_line(path, lineno, "unexpected end of file (missing 'endfacet' or "
-                                            "'endsolid')"));
+      throw StlError(fmt_line(path, lineno,
+                              "unexpected end of file (missing 'endfacet' or "
+                              "'endsolid')"));
     col.mesh.no_endsolid = state == 1;    // complete facets, then the end: warned
   }
 
@@ -231,8 +239,7 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf)
     throw StlError(path + ": cannot read: " + e.what());
   }
   if (data.empty()) throw StlError(path + ": empty file");
-  if (!(xf.scale > 0.0) || !std::isfinite(xf.scale))
-    throw StlError(path + ": scale must be > 0");
+  if (!(xf.scale > 0.0) || !std::isfinite(xf.scale)) throw StlError(path + ": scale must be > 0");
 
   StlMesh mesh;
   Collector col{path, xf, mesh, {}};
@@ -251,8 +258,10 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf)
     binary = !starts_solid(data);
   }
   mesh.binary = binary;
-  if (binary) read_binary(path, data, col);
-  else read_ascii(path, data, col);
+  if (binary)
+    read_binary(path, data, col);
+  else
+    read_ascii(path, data, col);
   if (mesh.ntri() == 0)
     throw StlError(path + ": empty mesh (" + std::to_string(mesh.nread) + " triangles read, " +
                    std::to_string(mesh.ndegenerate) + " zero-area and " +
@@ -340,8 +349,10 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
         for (int j = blo[1]; j <= bhi[1]; j++)
           for (int i = blo[0]; i <= bhi[0]; i++) {
             const int b = mesh_bin_id<double>(g.n, i, j, k);
-            if (pass == 0) count[b + 1]++;
-            else g.items[g.start[b] + count[b]++] = t;
+            if (pass == 0)
+              count[b + 1]++;
+            else
+              g.items[g.start[b] + count[b]++] = t;
           }
     }
     if (pass == 0) {

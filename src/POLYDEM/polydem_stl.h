@@ -27,16 +27,16 @@ struct StlError : public std::runtime_error {
 struct StlTransform {
   double scale = 1.0;
   double R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};    // rotation, applied after scale
-  double offset[3] = {0, 0, 0};                           // applied last
-  bool flip = false;                                      // reverse vertex order
+  double offset[3] = {0, 0, 0};                          // applied last
+  bool flip = false;                                     // reverse vertex order
 };
 
 struct StlMesh {
   std::vector<double> tri;    // 9 values per kept triangle (t0, t1, t2)
   bool binary = false;
-  long nread = 0;          // triangles in the file
-  long ndegenerate = 0;    // dropped: zero area (relative 1e-12 of the longest edge squared)
-  long nduplicate = 0;     // dropped: same three vertices as an earlier triangle
+  long nread = 0;              // triangles in the file
+  long ndegenerate = 0;        // dropped: zero area (relative 1e-12 of the longest edge squared)
+  long nduplicate = 0;         // dropped: same three vertices as an earlier triangle
   bool no_endsolid = false;    // ASCII: complete facets, then the file ends (truncated?)
   long trailing = 0;           // binary: bytes after the announced triangles (ignored)
   long nalong = 0, nopposite = 0;    // kept triangles whose stored facet normal points along
@@ -75,11 +75,11 @@ struct MeshGrid {
   double lo[3] = {0, 0, 0};
   double h = 1.0;
   int n[3] = {1, 1, 1};
-  std::vector<int> start;    // nbins + 1
-  std::vector<int> items;    // triangle indices
-  std::vector<double> plane; // 4 per triangle: unit normal, offset
-  std::vector<double> box;   // 6 per triangle: bounding box
-  std::vector<int> tbin;     // 3 per triangle: first bin
+  std::vector<int> start;       // nbins + 1
+  std::vector<int> items;       // triangle indices
+  std::vector<double> plane;    // 4 per triangle: unit normal, offset
+  std::vector<double> box;      // 6 per triangle: bounding box
+  std::vector<int> tbin;        // 3 per triangle: first bin
 };
 
 // h: requested bin edge; enlarged (x 1.25 at a time) until there are at most

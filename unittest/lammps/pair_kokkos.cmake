@@ -1,5 +1,5 @@
 # pair_style polyhedron/kk against the plain pair_style polyhedron (issue 4,
-# acceptance item 5). include(CMakeLists.pairkk.txt) from CMakeLists.txt after
+# acceptance item 5): test_pair_kokkos. include()d from CMakeLists.txt after
 # polydem_lammps_test is defined. Needs LAMMPS built with KOKKOS.
 if(POLYDEM_KOKKOS)
   polydem_lammps_test(test_pair_kokkos test_pair_kokkos.cpp)

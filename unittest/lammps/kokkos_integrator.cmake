@@ -1,5 +1,6 @@
-# /kk tests: include(CMakeLists.kk.txt) from CMakeLists.txt (after
-# polydem_lammps_test is defined). Needs LAMMPS built with KOKKOS.
+# atom_style polyhedron/kk + fix nve/polyhedron/kk against the plain styles,
+# on 1 and 2 ranks: test_kokkos_integrator. include()d from CMakeLists.txt after
+# polydem_lammps_test is defined. Needs LAMMPS built with KOKKOS.
 if(POLYDEM_KOKKOS)
   polydem_lammps_test(test_kokkos_integrator test_kokkos_integrator.cpp)
   add_test(NAME lammps.kokkos_vs_plain COMMAND test_kokkos_integrator)
