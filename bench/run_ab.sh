@@ -1,0 +1,46 @@
+#!/bin/bash
+# A/B speed comparison of two lmp binaries (e.g. before and after a change),
+# run alternately so that the machine's drift (+-25 % from minute to minute)
+# hits both alike: the dense periodic dodecahedra (in.dodeca_dense, N = 1e4,
+# plain and -sf kk) and the wall benchmark (wall_mesh/in.floor, 225
+# dodecahedra on a 10,082-triangle floor, merge and cache defaults).
+# Prints microseconds per particle-step (CPU time) of each run and the ratio
+# B/A of the medians.
+#   bash bench/run_ab.sh lmpA lmpB [rounds]
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+A=$(realpath "$1") B=$(realpath "$2") rounds=${3:-3}
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+(cd "$here/wall_mesh" && { [ -f floor10k.stl ] || python3 make_floor.py floor10k.stl 71; })
+cp "$here/wall_mesh/floor10k.stl" "$scratch/"
+cd "$scratch"
+
+us() {    # log N -> CPU microseconds per particle-step
+  awk '/^Loop time of/ {t = $4; n = $9; N = $12} /% CPU use/ {c = $1 + 0}
+       END {printf "%.3f", 1e6 * t * c / 100 / (n * N)}' "$1"
+}
+
+declare -A res
+for r in $(seq "$rounds"); do
+  for which in A B; do
+    lmp=${!which}
+    "$lmp" -in "$here/in.dodeca_dense" -var pot "$here/../potentials" -var nx 20 -var ny 20 \
+      -var nz 25 -var steps 100 -log log.dense -screen none
+    res[dense_$which]+="$(us log.dense) "
+    "$lmp" -k on -sf kk -pk kokkos newton off -in "$here/in.dodeca_dense" \
+      -var pot "$here/../potentials" -var nx 20 -var ny 20 -var nz 25 -var steps 100 \
+      -log log.densekk -screen none
+    res[densekk_$which]+="$(us log.densekk) "
+    "$lmp" -in "$here/wall_mesh/in.floor" -var mesh floor10k.stl -var merge 1e-9 -var cache 128 \
+      -var lift 0.0095 -var pot "$here/../potentials" -log log.floor -screen none
+    res[floor_$which]+="$(us log.floor) "
+  done
+done
+median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2); $(date -u)"
+for case in dense densekk floor; do
+  a=$(echo "${res[${case}_A]}" | median) b=$(echo "${res[${case}_B]}" | median)
+  printf "%-8s A: %s us   B: %s us   (CPU us/particle-step per run)  median B/A = %.3f\n" \
+    "$case" "${res[${case}_A]}" "${res[${case}_B]}" "$(echo "$b / $a" | bc -l)"
+done
