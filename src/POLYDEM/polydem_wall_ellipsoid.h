@@ -31,6 +31,11 @@
    triangulation: the coplanar triangles under the foot all give it, the
    others are farther (r' larger), and per patch the smallest r' is kept.
 
+   Each triangle's contact is continuous in the pose, so are their sums; at
+   a convex sharp edge (beyond the patch angle) both faces' contacts can see
+   the edge (up to twice one contact's force there, as the prisms of
+   polyhedra overlap behind a convex edge).
+
    Patches: the touching triangles are grouped by their normals n_w (within
    the fix's patch angle of the patch's first triangle, at most
    WALL_MAX_PATCH; beyond, the closest patch, counted as merged); each patch
