@@ -426,16 +426,8 @@ void FixInsertPolyhedron::init()
   for (const auto &k : kinds) {
     if (!avec->shape(k.ishape).is_ellipsoid()) continue;
     if (force->pair && utils::strmatch(force->pair_style, "^polyhedron"))
-      error->all(FLERR,
-                 "{}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
-                 "polyhedra only",
-                 me, k.id);
-    for (auto w : walls)
-      if (w->groupbit & (1 | groupbit))    // inserted atoms join group-ID and all
-        error->all(FLERR,
-                   "{}: shape '{}' is an ellipsoid, but fix wall/mesh '{}' acts on "
-                   "group '{}' and takes polyhedra only",
-                   me, k.id, w->id, group->names[igroup]);
+      error->all(FLERR, "{}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
+                 "polyhedra only", me, k.id);
   }
   if (force->pair && utils::strmatch(force->pair_style, "^ellipsoid"))
     for (const auto &k : kinds)

@@ -39,8 +39,9 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
     wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
     overlap_warn(0.05), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0), hist(nullptr),
-    reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0), near_builds_all(0),
-    near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
+    ellipsoids(0), kt_ratio(0.0), gt_ratio(0.0), reduced(0), avec(nullptr), near_cap(128),
+    near_skin(0.02), near_builds(0), near_builds_all(0), near_overflows_all(0), near_builds_run(0),
+    pertri(0), tri_reduced(0)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
@@ -363,38 +364,66 @@ void FixWallMesh::init()
 {
   avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
   if (!avec) error->all(FLERR, "fix wall/mesh requires atom_style polyhedron");
-  int nell = 0;    // the clip kernel needs faces: ellipsoid templates have none
+  // the group's shapes, and those an insertion fix will add to it (every
+  // rank sees the same candidates: counted on rank 0)
+  int nkind[2] = {0, 0};    // polyhedra, ellipsoids
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) nell += avec->shape(atom->pshape[i]).is_ellipsoid();
-  MPI_Allreduce(MPI_IN_PLACE, &nell, 1, MPI_INT, MPI_SUM, world);
-  if (nell)
-    error->all(FLERR, "fix wall/mesh: {} atoms of its group have an ellipsoid shape; mesh walls "
-               "support polyhedra only", nell);
+    if (atom->mask[i] & groupbit) nkind[avec->shape(atom->pshape[i]).is_ellipsoid() ? 1 : 0]++;
+  if (comm->me == 0)
+    for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+      if (c.mask & groupbit) nkind[avec->shape(c.ishape).is_ellipsoid() ? 1 : 0]++;
+  MPI_Allreduce(MPI_IN_PLACE, nkind, 2, MPI_INT, MPI_SUM, world);
+  // material: polyhedra E, nu (pair_style polyhedron), ellipsoids k_n and
+  // the tangential ratios (pair_style ellipsoid); e and mu from either
   int dim = 0;
-  double *E = nullptr, *nu = nullptr, **e = nullptr, **mu = nullptr;
+  double *E = nullptr, *nu = nullptr, **e = nullptr, **mu = nullptr, **kn = nullptr;
+  double *ktr = nullptr, *gtr = nullptr;
   if (force->pair) {
     E = (double *) force->pair->extract("youngs", dim);
     nu = (double *) force->pair->extract("poisson", dim);
     e = (double **) force->pair->extract("restitution", dim);
     mu = (double **) force->pair->extract("friction", dim);
+    kn = (double **) force->pair->extract("kn", dim);
+    ktr = (double *) force->pair->extract("kt_ratio", dim);
+    gtr = (double *) force->pair->extract("gt_ratio", dim);
   }
-  if (!E || !nu || !e || !mu)
+  const bool poly_mat = E && nu && e && mu, ell_mat = kn && ktr && gtr && e && mu;
+  const std::string pstyle = force->pair_style ? force->pair_style : "none";
+  if (nkind[0] && nkind[1])
+    error->all(FLERR, "fix wall/mesh: its group has {} polyhedra and {} ellipsoids; one wall "
+               "takes one kind (their material comes from pair_style polyhedron or ellipsoid): "
+               "use a fix for each group", nkind[0], nkind[1]);
+  if (nkind[1] && !ell_mat)
+    error->all(FLERR, "fix wall/mesh: {} atoms of its group have an ellipsoid shape; their wall "
+               "contact takes k_n, e and mu from pair_style ellipsoid (pair_coeff I I kn e mu), "
+               "pair_style is '{}'", nkind[1], pstyle);
+  if (!nkind[1] && !poly_mat && !ell_mat)
     error->all(FLERR, "fix wall/mesh: requires pair_style polyhedron (the particles' E and nu "
-               "come from its pair_coeff)");
+               "come from its pair_coeff) or pair_style ellipsoid (k_n)");
+  ellipsoids = nkind[1] > 0 || !poly_mat;
+  if (ellipsoids && (wall_E > 0.0 || wall_nu > -1.0) && comm->me == 0)
+    error->warning(FLERR, "fix wall/mesh {}: youngs and poisson do not apply to ellipsoids "
+                   "(their wall stiffness is k_n of pair_coeff)", id);
   const int nt = atom->ntypes;
   tE.assign(nt + 1, 0.0);
-  tnu = wE = wnu = tmu = tE;
+  tnu = wE = wnu = tmu = tkn = tE;
   tdamp.assign(nt + 1, polydem::damping_law(1.0, 1));
+  kt_ratio = ellipsoids ? *ktr : 0.0;
+  gt_ratio = ellipsoids ? *gtr : 0.0;
   for (int t = 1; t <= nt; t++) {
-    tE[t] = E[t];
-    tnu[t] = nu[t];
-    wE[t] = wall_E > 0.0 ? wall_E : E[t];
-    wnu[t] = wall_nu > -1.0 ? wall_nu : nu[t];
+    if (ellipsoids) {
+      tkn[t] = kn[t][t];
+    } else {
+      tE[t] = E[t];
+      tnu[t] = nu[t];
+      wE[t] = wall_E > 0.0 ? wall_E : E[t];
+      wnu[t] = wall_nu > -1.0 ? wall_nu : nu[t];
+    }
     const double et = wall_e > 0.0 ? wall_e : e[t][t];
     tmu[t] = wall_mu >= 0.0 ? wall_mu : mu[t][t];
-    if (!(tE[t] > 0.0) || !(et > 0.0))
-      error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} E nu "
-                 "e mu)", t, t, t);
+    if (!(ellipsoids ? tkn[t] > 0.0 : tE[t] > 0.0) || !(et > 0.0))
+      error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} {})",
+                 t, t, t, ellipsoids ? "kn e mu" : "E nu e mu");
     tdamp[t] = polydem::damping_law(et, 1);
   }
   build_grid();
@@ -407,9 +436,14 @@ void FixWallMesh::init()
 // particle of the group.
 void FixWallMesh::check_timestep()
 {
-  double dtmin = 1e300;
+  double dtmin = 1e300, tcmin = 1e300;
   bigint nover = 0;
   auto consider = [&](int type, int ishape, double s, double m) {
+    if (avec->shape(ishape).is_ellipsoid()) {
+      // ellipsoids: the linear spring's contact time pi sqrt(m / k_n) (central impact)
+      tcmin = MIN(tcmin, MY_PI * sqrt(m / (tkn[type] * force->ftm2v)));
+      return;
+    }
     const auto L = law_of(type, ishape, s);
     const double dtf = polydem::face_contact_stable_dt(L.normal, m / force->ftm2v,
                                                        avec->shape(ishape).max_face_area() * s * s);
@@ -425,9 +459,9 @@ void FixWallMesh::check_timestep()
   // (counted on rank 0 only: every rank sees the same candidates)
   if (comm->me == 0)
     for (const auto &c : FixInsertPolyhedron::candidates(lmp))
-      if ((c.mask & groupbit) && !avec->shape(c.ishape).is_ellipsoid())
-        consider(c.type, c.ishape, c.scale, c.mass);
+      if (c.mask & groupbit) consider(c.type, c.ishape, c.scale, c.mass);
   MPI_Allreduce(MPI_IN_PLACE, &dtmin, 1, MPI_DOUBLE, MPI_MIN, world);
+  MPI_Allreduce(MPI_IN_PLACE, &tcmin, 1, MPI_DOUBLE, MPI_MIN, world);
   // a stiffness that overflows (youngs 1e300) made every contact NaN
   MPI_Allreduce(MPI_IN_PLACE, &nover, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (nover)
@@ -435,7 +469,16 @@ void FixWallMesh::check_timestep()
                "fix wall/mesh {}: the contact stiffness of {} atom(s) overflows (youngs "
                "{:.4g} of the wall, the particles' from pair_coeff): lower youngs",
                id, nover, wall_E > 0.0 ? wall_E : tE[1]);
-  if (dtmin >= 1e300 || comm->me != 0) return;
+  if (comm->me != 0) return;
+  if (tcmin < 1e300) {
+    utils::logmesg(lmp, "fix wall/mesh {}: ellipsoid contact time {:.6g}, timestep {:.6g} = "
+                   "t_c/{:.4g}\n", id, tcmin, update->dt, tcmin / update->dt);
+    if (update->dt > tcmin / 10.0)
+      error->warning(FLERR, "fix wall/mesh {}: timestep {:.4g} exceeds t_c/10 = {:.4g} of an "
+                     "ellipsoid's wall contact: contacts will be poorly resolved", id,
+                     update->dt, tcmin / 10.0);
+  }
+  if (dtmin >= 1e300) return;
   utils::logmesg(lmp, "fix wall/mesh {}: a face flat on the wall in the core (core {}) is stable "
                  "for timesteps below {:.4g}, resolved below about {:.4g}\n", id, core, dtmin,
                  dtmin / 20.0);
@@ -521,7 +564,21 @@ bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
     }
   } visit{&g, &b, gap, true};
   polydem::mesh_for_each_near(g, b.x, b.radius + gap, visit);
-  if (!visit.clear || !b.view) return visit.clear;
+  if (!visit.clear) return false;
+  polydem::WallPatches<double> P;
+  polydem::WallSides<double> sides;    // no history: each triangle met on the centroid's side
+  sides.both = twosided;
+  sides.n = 0;
+  if (!b.view) {
+    // apart from every triangle: an ellipsoid can still be behind one of a
+    // one-sided wall (sides front), which its forces would act on
+    polydem::WallEllipsoid<double> e;
+    e.c = b.x;
+    e.R = b.R;
+    e.ax = b.ax;
+    polydem::wall_ellipsoid_patches(e, g, cosmax, P, &sides);
+    return P.n == 0 && P.ndegenerate == 0;
+  }
   // apart from every triangle, but possibly behind one: the wall's own
   // contact volume decides (what its forces would act on)
   if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
@@ -531,10 +588,6 @@ bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
   pm.q = qm;
   pm.s = b.s;
   const polydem::PosedShape<double> a = polydem::make_posed(*b.view, pm);
-  polydem::WallPatches<double> P;
-  polydem::WallSides<double> sides;    // no history: each triangle met on the centroid's side
-  sides.both = twosided;
-  sides.n = 0;
   polydem::wall_patches(a, g, cosmax, *ws, P, (polydem::WallNear<double> *) nullptr, &sides);
   for (int k = 0; k < P.n; k++)
     if (P.p[k].volume > 0.0 || !(P.p[k].volume == P.p[k].volume)) return false;
@@ -574,6 +627,8 @@ polydem::ContactLaw<double> FixWallMesh::law(int i) const
 
 polydem::ContactLaw<double> FixWallMesh::law_of(int t, int ishape, double s) const
 {
+  if (avec->shape(ishape).is_ellipsoid())
+    return polydem::ellipsoid_law(tkn[t], tdamp[t], tmu[t], kt_ratio, gt_ratio);
   const double V = avec->shape(ishape).volume() * s * s * s;
   return polydem::wall_law(tE[t], tnu[t], wE[t], wnu[t], V, tdamp[t], tmu[t], core, twist);
 }
@@ -649,35 +704,48 @@ void FixWallMesh::compute_forces(bool update)
   polydem::WallTally<double> sum;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    const auto sv = avec->shape(atom->pshape[i]).view();
+    const auto &shape = avec->shape(atom->pshape[i]);
+    const auto sv = shape.view();
     polydem::Pose<double> pose;
     pose.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
     pose.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
     pose.s = atom->pscale[i];
-    polydem::WallNear<double> *pn = nullptr;
-    if (near_cap > 0) {
-      nl.ref = &near_ref[13 * (size_t) i];
-      nl.count = &near_count[i];
-      nl.tri = &near_tri[(size_t) near_cap * i];
-      nl.gap = &near_gap[(size_t) near_cap * i];
-      nl.skin = near_skin * sv.radius * pose.s;
-      pn = &nl;
-    }
     const double m = atom->rmass[i];
-    const auto wf = polydem::wall_particle(sv, pose, mp, g, law(i), m, update ? lmp->update->dt : 0.0,
-                                           cosmax, twosided,
-                                           polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
-                                           polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]),
-                                           hist[i], update, *ws, P, pn);
     const double s3 = pose.s * pose.s * pose.s;
-    sum.add(pose.x, wf, mp, P,
-            polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, m, depth_warn,
-                                   overlap_warn));
-    if (pn) {
-      sum.near_builds += nl.built;
-      if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) sum.near_overflow += 1;
+    const double dt = update ? lmp->update->dt : 0.0;
+    const auto vi = polydem::make_vec3(v[i][0], v[i][1], v[i][2]);
+    const auto wi = polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]);
+    polydem::WallForce<double> wf;
+    if (shape.is_ellipsoid()) {    // the grid query (no near list)
+      const auto &a = shape.semi_axes();
+      const auto ax = polydem::make_vec3(pose.s * a[0], pose.s * a[1], pose.s * a[2]);
+      wf = polydem::wall_ellipsoid_particle(ax, pose, mp, g, law(i), m, dt, cosmax, twosided, vi,
+                                            wi, hist[i], update, P);
+      sum.add(pose.x, wf, mp, P,
+              polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, m, depth_warn,
+                                     overlap_warn));
+      if (pertri) polydem::wall_ellipsoid_triangle_forces(P, wf, add_tri);
+    } else {
+      polydem::WallNear<double> *pn = nullptr;
+      if (near_cap > 0) {
+        nl.ref = &near_ref[13 * (size_t) i];
+        nl.count = &near_count[i];
+        nl.tri = &near_tri[(size_t) near_cap * i];
+        nl.gap = &near_gap[(size_t) near_cap * i];
+        nl.skin = near_skin * sv.radius * pose.s;
+        pn = &nl;
+      }
+      wf = polydem::wall_particle(sv, pose, mp, g, law(i), m, dt, cosmax, twosided, vi, wi,
+                                  hist[i], update, *ws, P, pn);
+      sum.add(pose.x, wf, mp, P,
+              polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, m, depth_warn,
+                                     overlap_warn));
+      if (pn) {
+        sum.near_builds += nl.built;
+        if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) sum.near_overflow += 1;
+      }
+      if (pertri) polydem::wall_triangle_forces(*ws, P, wf, add_tri);
     }
-    if (pertri) polydem::wall_triangle_forces(*ws, P, wf, add_tri);
     f[i][0] += wf.f.x;
     f[i][1] += wf.f.y;
     f[i][2] += wf.f.z;

@@ -1,8 +1,9 @@
 /* -*- c++ -*- ----------------------------------------------------------
    POLYDEM - fix wall/mesh: a triangulated STL wall (static, translating or
-   rotating) in contact with polyhedral particles; patch-summed clipped
-   prism volumes and section areas (seed §2.4), the pair style's material
-   model. Physics in polydem_wall_contact.h.
+   rotating) in contact with polyhedral particles (patch-summed clipped
+   prism volumes and section areas, seed §2.4) or ellipsoids (closest point
+   of the affinely mapped triangles), the pair style's material model.
+   Physics in polydem_wall_contact.h and polydem_wall_ellipsoid.h.
 ------------------------------------------------------------------------- */
 
 #ifdef FIX_CLASS
@@ -20,6 +21,7 @@ FixStyle(wall/mesh,FixWallMesh);
 #include "polydem_mesh_grid.h"
 #include "polydem_stl.h"
 #include "polydem_wall_contact.h"
+#include "polydem_wall_ellipsoid.h"
 
 #include <memory>
 #include <string>
@@ -57,7 +59,8 @@ class FixWallMesh : public Fix {
 
   // fix insert/polyhedron: true if body b (lab frame, orientation q) is
   // certified farther than gap from every triangle of the mesh at its
-  // current pose and, for a polyhedron, has no contact volume with it
+  // current pose and has no contact with it (a polyhedron no contact
+  // volume, an ellipsoid no closest point; e.g. behind a one-sided wall)
   bool insertion_clear(const polydem::InsertBody<double> &b, const polydem::Quat<double> &q,
                        double gap);
 
@@ -87,6 +90,10 @@ class FixWallMesh : public Fix {
   // per type (1..ntypes): particle E, nu; wall E, nu; mu; damping law
   std::vector<double> tE, tnu, wE, wnu, tmu;
   std::vector<polydem::DampingLaw<double>> tdamp;
+  // ellipsoids (pair_style ellipsoid): per type k_n; k_t / k_n, gamma_t / gamma_n
+  int ellipsoids;    // the group's particles are ellipsoids
+  std::vector<double> tkn;
+  double kt_ratio, gt_ratio;
   double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
   int reduced;
   // kernel failure counts (overflow, degenerate, merged patches), near-list

@@ -65,6 +65,8 @@ template <class DeviceType> struct WallMeshKernel {
   polydem_view_t<tdual_quat_array, DeviceType> quat;
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> hist;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
+  Kokkos::View<double *[3], DeviceType> axes;    // ellipsoids' semi-axes (0: polyhedron)
+  Kokkos::View<polydem::ContactLaw<double> *, DeviceType> elaw;    // ellipsoids' law per type
   Kokkos::View<double *[5], DeviceType> mat;
   Kokkos::View<polydem::DampingLaw<double> *, DeviceType> damp;
   Kokkos::View<char *, DeviceType> workspace;
@@ -85,14 +87,11 @@ template <class DeviceType> struct WallMeshKernel {
   {
     const int i = ibase + slot;
     if (!(mask(i) & groupbit)) return;
-    auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
-    ws.record = pertri;
-    const polydem::ShapeView<double> &sv = shapes(pshape(i));
+    const int ps = pshape(i);
+    const polydem::ShapeView<double> &sv = shapes(ps);
     const int t = type(i);
     const double s = pscale(i);
     const double V = sv.volume * s * s * s;
-    const auto law = polydem::wall_law(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, damp(t),
-                                       mat(t, 4), core, twist);
     polydem::Pose<double> pose;
     pose.x = polydem::make_vec3(x(i, 0), x(i, 1), x(i, 2));
     pose.q = polydem::make_quat(quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3));
@@ -100,6 +99,25 @@ template <class DeviceType> struct WallMeshKernel {
     double h[NH];
     for (int k = 0; k < NH; k++) h[k] = hist(i, k);
     polydem::WallPatches<double> P;
+    if (axes(ps, 0) > 0.0) {    // an ellipsoid: the grid query, no workspace
+      const auto ax = polydem::make_vec3(s * axes(ps, 0), s * axes(ps, 1), s * axes(ps, 2));
+      const auto wf = polydem::wall_ellipsoid_particle(
+          ax, pose, mp, grid, elaw(t), rmass(i), update ? dt : 0.0, cosmax, twosided,
+          polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
+          polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, P);
+      const auto w =
+          polydem::wall_warnings(P, wf, V, sv.radius * s, rmass(i), depth_warn, overlap_warn);
+      if (pertri) {
+        TriAdd<DeviceType> add{trif};
+        polydem::wall_ellipsoid_triangle_forces(P, wf, add);
+      }
+      finish(i, h, wf, pose, P, w, sum);
+      return;
+    }
+    auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
+    ws.record = pertri;
+    const auto law = polydem::wall_law(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, damp(t),
+                                       mat(t, 4), core, twist);
     polydem::WallNear<double> nl;
     polydem::WallNear<double> *pn = nullptr;
     if (near_cap > 0) {
@@ -126,6 +144,15 @@ template <class DeviceType> struct WallMeshKernel {
       sum.near_overflow += (nl.built && near_count(i) == polydem::NEAR_OVERFLOW) ? 1.0 : 0.0;
       sum.near_builds += nl.built;
     }
+    finish(i, h, wf, pose, P, w, sum);
+  }
+
+  // history back, forces on the particle, the sums
+  KOKKOS_INLINE_FUNCTION void finish(int i, const double *h, const polydem::WallForce<double> &wf,
+                                     const polydem::Pose<double> &pose,
+                                     const polydem::WallPatches<double> &P,
+                                     const polydem::WallWarnings<double> &w, value_type &sum) const
+  {
     for (int k = 0; k < NH; k++) hist(i, k) = h[k];
     f(i, 0) += wf.f.x;
     f(i, 1) += wf.f.y;
@@ -194,6 +221,11 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
   }
   Kokkos::deep_copy(d_mat, h_mat);
   Kokkos::deep_copy(d_damp, h_damp);
+  d_elaw = Kokkos::View<polydem::ContactLaw<double> *, DeviceType>("wall/mesh/kk:elaw", nt + 1);
+  auto h_elaw = Kokkos::create_mirror_view(d_elaw);
+  for (int t = 0; t <= nt; t++)
+    h_elaw(t) = polydem::ellipsoid_law(tkn[t], tdamp[t], tmu[t], kt_ratio, gt_ratio);
+  Kokkos::deep_copy(d_elaw, h_elaw);
   shape_version = -1;
   update_shapes();
 }
@@ -221,6 +253,12 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
   d_sface_verts = Kokkos::View<int *, DeviceType>("wall/mesh/kk:face_verts", size[3]);
   d_sedges = Kokkos::View<int *, DeviceType>("wall/mesh/kk:edges", size[4]);
   d_shapes = Kokkos::View<polydem::ShapeView<double> *, DeviceType>("wall/mesh/kk:shapes", n);
+  d_axes = Kokkos::View<double *[3], DeviceType>("wall/mesh/kk:axes", n);
+  auto h_axes = Kokkos::create_mirror_view(d_axes);
+  for (int t = 0; t < n; t++)
+    for (int k = 0; k < 3; k++)
+      h_axes(t, k) = av->shape(t).is_ellipsoid() ? av->shape(t).semi_axes()[k] : 0.0;
+  Kokkos::deep_copy(d_axes, h_axes);
   auto h_verts = Kokkos::create_mirror_view(d_sverts);
   auto h_planes = Kokkos::create_mirror_view(d_splanes);
   auto h_fs = Kokkos::create_mirror_view(d_sface_start);
@@ -323,6 +361,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.quat = avecKK->k_quat.view<DeviceType>();
   k.hist = k_hist.template view<DeviceType>();
   k.shapes = d_shapes;
+  k.axes = d_axes;
+  k.elaw = d_elaw;
   k.mat = d_mat;
   k.damp = d_damp;
   k.workspace = d_workspace;

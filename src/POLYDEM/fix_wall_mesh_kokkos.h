@@ -1,6 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    POLYDEM - fix wall/mesh/kk: fix wall/mesh with one Kokkos thread per
-   particle. Mesh, bin grid, shape templates and per-type material live on
+   particle (polyhedra and ellipsoids: the kernel branches on the shape).
+   Mesh, bin grid, shape templates and per-type material live on
    the device; the per-atom wall history is a DualView (host rows alias it
    for exchange and restart). Calls the same kernels (polydem_wall_contact.h)
    with the same arithmetic as the plain fix.
@@ -59,6 +60,10 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   Kokkos::View<double *, DeviceType> d_sverts, d_splanes;
   Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
+  // semi-axes per template at unit scale (0: a polyhedron), as pair ellipsoid/kk
+  Kokkos::View<double *[3], DeviceType> d_axes;
+  // per type: the ellipsoids' wall law (polydem::ellipsoid_law)
+  Kokkos::View<polydem::ContactLaw<double> *, DeviceType> d_elaw;
   // per type: particle E, nu; wall E, nu; friction; damping law
   Kokkos::View<double *[5], DeviceType> d_mat;
   Kokkos::View<polydem::DampingLaw<double> *, DeviceType> d_damp;

@@ -484,5 +484,8 @@ void *PairEllipsoid::extract(const char *str, int &dim)
   if (strcmp(str, "friction") == 0) return (void *) friction;
   dim = 1;
   if (strcmp(str, "counters") == 0) return (void *) counters;
+  dim = 0;    // tangential k_t / k_n and gamma_t / gamma_n (fix wall/mesh)
+  if (strcmp(str, "kt_ratio") == 0) return (void *) &kt_ratio;
+  if (strcmp(str, "gt_ratio") == 0) return (void *) &gt_ratio;
   return nullptr;
 }

@@ -46,6 +46,11 @@ constexpr int WALL_HIST = 4 + CONTACT_HIST;
 constexpr int WALL_HIST_SIZE = WALL_MAX_PATCH * WALL_HIST;
 constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle (more: clipped at once)
 
+// One patch. Ellipsoids (polydem_wall_ellipsoid.h) fill the same fields
+// with the patch's closest point: volume the overlap volume of the support
+// plane (diagnostic: overlap/warn), area 0, S and M the gradient of the
+// overlap delta (mesh frame), ac the contact point, vc the deepest point,
+// depth delta, tri the triangle of the closest point.
 template <typename T> struct WallPatch {
   Vec3<T> nseed;    // first facet's normal n_w (mesh frame)
   T volume, area;
@@ -54,6 +59,7 @@ template <typename T> struct WallPatch {
   Vec3<T> vc;       // volume-weighted sum of volume centroids
   T depth;          // deepest particle vertex behind the first facet's plane
   int behind;       // the particle's centroid is behind a clipped triangle (in its prism)
+  int tri;          // ellipsoids: the triangle of the patch's closest point
 };
 
 template <typename T> struct WallPatches {
@@ -741,18 +747,61 @@ template <typename T> struct WallForce {
   Vec3<T> fpatch[WALL_MAX_PATCH];    // force of each patch of P on the particle (lab)
 };
 
-// Forces of all patches on the particle (lab frame) and the update of its
-// tangential history hist[WALL_HIST_SIZE] for this mesh: each patch takes
+// The contacts of one particle with one mesh as the contact layer sees them
+// (lab frame), indexed like the patches they come from: on[k] = 0 when
+// patch k makes no contact. Polyhedron patches (wall_patch_contacts) and
+// ellipsoid patches (polydem_wall_ellipsoid.h) both end here, and
+// wall_contact_forces is the one loop of slot matching, contact_step and
+// history for both.
+template <typename T> struct WallContacts {
+  int n;
+  int on[WALL_MAX_PATCH];
+  ContactGeometry<T> g[WALL_MAX_PATCH];
+};
+
+// Polyhedron patches: V, S = -sum n_t A_t, M summed over the patch's
+// triangles (mesh frame) -> one contact each, normal S / |S| from the
+// particle into the wall, contact point the area-weighted section centroid
+// (the volume centroid if the patch has no section area).
+template <typename T>
+POLYDEM_FN WallContacts<T> wall_patch_contacts(const WallPatches<T> &P, const MeshPose<T> &mp)
+{
+  WallContacts<T> C;
+  C.n = P.n;
+  const Vec3<T> xw = mp.o + mp.d;    // a point of the wall's rotation axis (lab)
+  for (int k = 0; k < P.n; ++k) {
+    const WallPatch<T> &q = P.p[k];
+    const T an = norm(q.S);
+    C.on[k] = q.volume > T(0) && an > T(0);
+    if (!C.on[k]) continue;
+    ContactGeometry<T> &g = C.g[k];
+    g.volume = q.volume;
+    g.area = an;
+    g.S_A = matvec(mp.R, q.S);
+    g.M_A = matvec(mp.R, q.M);
+    g.M_B = make_vec3(T(0), T(0), T(0));
+    g.normal = (T(1) / an) * g.S_A;    // from the particle into the wall
+    const Vec3<T> cm = q.area > T(0) ? (T(1) / q.area) * q.ac : (T(1) / q.volume) * q.vc;
+    g.centroid = xw + matvec(mp.R, cm - mp.o);
+    g.gradient_damping = 0;
+  }
+  return C;
+}
+
+// Forces of all contacts on the particle (lab frame) and the update of its
+// tangential history hist[WALL_HIST_SIZE] for this mesh: each contact takes
 // the old slot whose normal is closest within the patch angle (else a fresh
 // spring); unmatched slots are cleared. Each slot also keeps its plane's
 // distance from the centroid (WallSides). law: the particle's wall law
-// (wall_law); m its mass, Iinv its inverse principal moments, R its
-// rotation; dt the time step (0: no history increment, setup).
+// (wall_law, or ellipsoid_law); m its mass, Iinv its inverse principal
+// moments, R its rotation (body -> frame of the contact normals, for the
+// contact point's mass); dt the time step (0: no history increment, setup).
 template <typename T>
-POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &mp,
-                                    const ContactLaw<T> &law, T m, const Vec3<T> &Iinv,
-                                    const Mat3<T> &R, T cosmax, const Vec3<T> &x,
-                                    const Vec3<T> &v, const Vec3<T> &w, T dt, T *hist, bool update)
+POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const MeshPose<T> &mp,
+                                            const ContactLaw<T> &law, T m, const Vec3<T> &Iinv,
+                                            const Mat3<T> &R, T cosmax, const Vec3<T> &x,
+                                            const Vec3<T> &v, const Vec3<T> &w, T dt, T *hist,
+                                            bool update)
 {
   WallForce<T> out;
   out.f = out.tau = make_vec3(T(0), T(0), T(0));
@@ -772,20 +821,9 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
   kin.wA = w;
   kin.wB = mp.w;
   kin.dt = dt;
-  for (int k = 0; k < P.n; ++k) {
-    const WallPatch<T> &q = P.p[k];
-    const T an = norm(q.S);
-    if (!(q.volume > T(0)) || !(an > T(0))) continue;
-    ContactGeometry<T> g;
-    g.volume = q.volume;
-    g.area = an;
-    g.S_A = matvec(mp.R, q.S);
-    g.M_A = matvec(mp.R, q.M);
-    g.M_B = make_vec3(T(0), T(0), T(0));
-    g.normal = (T(1) / an) * g.S_A;    // from the particle into the wall
-    const Vec3<T> cm = q.area > T(0) ? (T(1) / q.area) * q.ac : (T(1) / q.volume) * q.vc;
-    g.centroid = xw + matvec(mp.R, cm - mp.o);
-    g.gradient_damping = 0;
+  for (int k = 0; k < C.n; ++k) {
+    if (!C.on[k]) continue;
+    const ContactGeometry<T> &g = C.g[k];
     // history slot with the closest normal (lab frame)
     int best = -1;
     T bc = cosmax;
@@ -824,6 +862,17 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
   if (update)    // setup (no time step yet) leaves the history as it was
     for (int i = 0; i < WALL_HIST_SIZE; ++i) hist[i] = newh[i];
   return out;
+}
+
+// Forces of the polyhedron patches P (wall_patch_contacts, wall_contact_forces).
+template <typename T>
+POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &mp,
+                                    const ContactLaw<T> &law, T m, const Vec3<T> &Iinv,
+                                    const Mat3<T> &R, T cosmax, const Vec3<T> &x,
+                                    const Vec3<T> &v, const Vec3<T> &w, T dt, T *hist, bool update)
+{
+  return wall_contact_forces(wall_patch_contacts(P, mp), mp, law, m, Iinv, R, cosmax, x, v, w, dt,
+                             hist, update);
 }
 
 // Wall law of a particle (volume V, material E, nu) on the wall (wE, wnu):

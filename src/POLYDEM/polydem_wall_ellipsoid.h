@@ -1,0 +1,319 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - contact of one ellipsoid with a triangle mesh (fix wall/mesh and
+   /kk), host and device. No LAMMPS includes; no allocation, loops bounded
+   by the grid's bin lists, a few hundred bytes of stack.
+
+   Ellipsoid: centre c, rotation R (body -> mesh frame), semi-axes
+   A = diag(a, b, c); M = R A^2 R^T. The affine map p' = A^-1 R^T (p - c)
+   takes it to the unit sphere and a triangle to a triangle. For each
+   candidate triangle (met from its side s, WallSides: wall normal n_w = s n_t
+   towards the particle, h = n_w . (c - t0) the centre's height) let q' be
+   the closest point of the mapped triangle to the origin, r' = |q'|:
+   r' < 1 is a contact. With u' = q' / r' (a point of the unit sphere), the
+   contact normal, from the particle into the wall, is the ellipsoid's
+   surface normal at p* = c + R A u',
+     n_s = R A^-1 u' / |R A^-1 u'|,
+   and the overlap is the depth of the support plane through the closest
+   point,  delta = (1 - r') sigma(n_s),  sigma(n) = sqrt(n^T M n).
+
+   Faces (q' inside the mapped triangle, the foot of the centre on the
+   plane): r' = h / sigma(n_w), n_s = -n_w, delta = sigma(n_w) - h and
+   p* = c - M n_w / sigma(n_w), the deepest point: exactly the support-
+   function depth of the plane, computed from the stored plane (not from
+   q', so that coplanar triangles give the same numbers). The force
+   -k_n delta n_s at p* (any point of that line) is then the exact gradient
+   of 1/2 k_n delta^2 in translation (d delta/dc = n_s) and rotation (d delta
+   /dtheta = (p* - c) x n_s, the envelope theorem on sigma). Edges and
+   vertices: the same formulas with the closest point on the border, a
+   continuous approximation (the support plane through the closest point,
+   normal by the affine map; not the metric closest point, and the force is
+   not an exact gradient there). A flat wall gives one contact whatever its
+   triangulation: the coplanar triangles under the foot all give it, the
+   others are farther (r' larger), and per patch the smallest r' is kept.
+
+   Each triangle's contact is continuous in the pose, so are their sums; at
+   a convex sharp edge (beyond the patch angle) both faces' contacts can see
+   the edge (up to twice one contact's force there, as the prisms of
+   polyhedra overlap behind a convex edge).
+
+   Patches: the touching triangles are grouped by their normals n_w (within
+   the fix's patch angle of the patch's first triangle, at most
+   WALL_MAX_PATCH; beyond, the closest patch, counted as merged); each patch
+   keeps its closest point and is one contact of the contact layer
+   (wall_ellipsoid_contacts -> wall_contact_forces): measure delta, area 0,
+   S_A = n_s, M_A = (p* - x) x n_s, point damping at the contact point
+   p_c = p* - delta n_s (on the force line, in the wall's plane for a face).
+
+   Centre behind the acting side (h < 0: a kept contact pushed past its
+   centre, or a one-sided wall met from behind): faces keep the plane
+   formula (delta = sigma - h > sigma, pushed back to the side the contact
+   began on); edges and vertices reflect the normal part of q' (q' = f' + e',
+   f' the foot, e' in the plane): u' ~ e' - f', r' = |e'| - |f'|, continuous
+   with both the face formula (e' = 0) and the front (h = 0).
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_WALL_ELLIPSOID_H
+#define POLYDEM_WALL_ELLIPSOID_H
+
+#include "polydem_ellipsoid_force.h"    // ellipsoid_law
+#include "polydem_wall_contact.h"
+
+namespace polydem {
+
+// One ellipsoid in the mesh frame
+template <typename T> struct WallEllipsoid {
+  Vec3<T> c;     // centre
+  Mat3<T> R;     // body -> mesh frame
+  Vec3<T> ax;    // semi-axes [length]
+};
+
+// Closest point of triangle (a, b, c) to p by its Voronoi regions (as
+// point_triangle_dist2); face = 1 if it is inside the triangle
+template <typename T>
+POLYDEM_FN Vec3<T> triangle_closest_point(const Vec3<T> &p, const Vec3<T> &a, const Vec3<T> &b,
+                                          const Vec3<T> &c, int &face)
+{
+  face = 0;
+  const Vec3<T> ab = b - a, ac = c - a, ap = p - a;
+  const T d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= T(0) && d2 <= T(0)) return a;
+  const Vec3<T> bp = p - b;
+  const T d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= T(0) && d4 <= d3) return b;
+  const T vc = d1 * d4 - d3 * d2;
+  if (vc <= T(0) && d1 >= T(0) && d3 <= T(0)) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3<T> cp = p - c;
+  const T d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= T(0) && d5 <= d6) return c;
+  const T vb = d5 * d2 - d1 * d6;
+  if (vb <= T(0) && d2 >= T(0) && d6 <= T(0)) return a + (d2 / (d2 - d6)) * ac;
+  const T va = d3 * d6 - d5 * d4;
+  if (va <= T(0) && (d4 - d3) >= T(0) && (d5 - d6) >= T(0))
+    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  face = 1;
+  const T den = T(1) / (va + vb + vc);
+  return a + (vb * den) * ab + (vc * den) * ac;
+}
+
+// Support of the ellipsoid along n (unit): sigma(n) = |A R^T n|; Av = A^2 R^T n
+// (body frame), so that M n = R Av
+template <typename T>
+POLYDEM_FN T ellipsoid_support(const WallEllipsoid<T> &e, const Vec3<T> &n, Vec3<T> &Av)
+{
+  const Vec3<T> nb = matTvec(e.R, n);
+  const Vec3<T> v = make_vec3(e.ax.x * nb.x, e.ax.y * nb.y, e.ax.z * nb.z);
+  Av = make_vec3(e.ax.x * v.x, e.ax.y * v.y, e.ax.z * v.z);
+  return norm(v);
+}
+
+// Overlap of the ellipsoid with triangle t met from side 'side' (+1 front).
+// Returns false if they do not touch; else r' (r), delta, the normal n_s
+// into the wall, the point p* (ps), and whether the closest point is the
+// foot of the centre with the centre behind the plane (behind).
+template <typename T>
+POLYDEM_FN bool ellipsoid_triangle(const WallEllipsoid<T> &e, const MeshGridView<T> &g, int t,
+                                   int side, T &r, T &delta, Vec3<T> &ns, Vec3<T> &ps,
+                                   int &behind, int &degenerate)
+{
+  const T *pl = g.plane + 4 * t;
+  const Vec3<T> nw = T(side) * make_vec3(pl[0], pl[1], pl[2]);
+  const T h = T(side) * (pl[0] * e.c.x + pl[1] * e.c.y + pl[2] * e.c.z - pl[3]);
+  Vec3<T> Av;
+  const T sig = ellipsoid_support(e, nw, Av);
+  degenerate = !(h == h) || !(sig > T(0)) || !(sig < T(1e300));
+  if (degenerate || !(h < sig)) return false;    // the plane is not reached
+  // the triangle mapped to the unit sphere's frame, and its closest point q'
+  Vec3<T> tp[3];
+  const T *q = g.tri + 9 * t;
+  T pmax = T(0);
+  for (int v = 0; v < 3; ++v) {
+    const Vec3<T> d = matTvec(e.R, make_vec3(q[3 * v], q[3 * v + 1], q[3 * v + 2]) - e.c);
+    tp[v] = make_vec3(d.x / e.ax.x, d.y / e.ax.y, d.z / e.ax.z);
+    const T a = norm(tp[v]);
+    pmax = a > pmax ? a : pmax;
+  }
+  int face;
+  const Vec3<T> qp = triangle_closest_point(make_vec3(T(0), T(0), T(0)), tp[0], tp[1], tp[2], face);
+  // the mapped plane: unit normal N' = A R^T n_w / sigma (to the acting
+  // side), foot of the origin f' = -(h / sigma) N'; e' = q' - f' in the plane
+  const Vec3<T> Np = matTvec(e.R, nw);
+  const Vec3<T> N = (T(1) / sig) * make_vec3(e.ax.x * Np.x, e.ax.y * Np.y, e.ax.z * Np.z);
+  const Vec3<T> ep = qp + (h / sig) * N;
+  const T en = norm(ep);
+  // round-off of q' on the border through the foot [mapped length]: the foot
+  if (face || !(en > T(1e-13) * (T(1) + pmax))) {
+    r = h / sig;
+    ns = -nw;
+    delta = sig - h;
+    ps = e.c - (T(1) / sig) * matvec(e.R, Av);
+    behind = h < T(0);
+    return true;
+  }
+  behind = 0;
+  Vec3<T> u;
+  if (h >= T(0)) {
+    r = norm(qp);
+    u = (T(1) / r) * qp;
+  } else {    // reflect the normal part: u' ~ e' - f', r' = |e'| - |f'|
+    r = en + h / sig;
+    const Vec3<T> qr = ep + (h / sig) * N;
+    u = (T(1) / norm(qr)) * qr;
+  }
+  if (!(r < T(1))) return false;
+  const Vec3<T> w = matvec(e.R, make_vec3(u.x / e.ax.x, u.y / e.ax.y, u.z / e.ax.z));
+  ns = (T(1) / norm(w)) * w;
+  delta = (T(1) - r) * ellipsoid_support(e, ns, Av);
+  ps = e.c + matvec(e.R, make_vec3(e.ax.x * u.x, e.ax.y * u.y, e.ax.z * u.z));
+  return delta > T(0);
+}
+
+// Overlap volume fraction of the unit ball cut by a plane at distance r'
+// from its centre (a cap of height 1 - r', clamped to [0, 2]): the volume
+// fraction of the ellipsoid behind its support plane (affine maps keep
+// volume ratios)
+template <typename T> POLYDEM_FN T ellipsoid_cap_fraction(T r)
+{
+  T x = T(1) - r;
+  x = x < T(0) ? T(0) : (x > T(2) ? T(2) : x);
+  return T(0.25) * x * x * (T(3) - x);
+}
+
+// grid visitor: each touching triangle joins the patch of the closest
+// normal (a new one beyond the patch angle), which keeps its smallest r'
+template <typename T> struct WallEllipsoidAccumulate {
+  const WallEllipsoid<T> *e;
+  const MeshGridView<T> *g;
+  WallPatches<T> *out;
+  T cosmax, rb, vol;    // cos(patch angle), bounding radius, ellipsoid volume
+  const WallSides<T> *sides;
+  T rbest[WALL_MAX_PATCH];
+
+  POLYDEM_FN void operator()(int t)
+  {
+    const int side = wall_side(sides, g->plane + 4 * t, e->c, rb);
+    T r, delta;
+    Vec3<T> ns, ps;
+    int behind, degenerate;
+    if (!ellipsoid_triangle(*e, *g, t, side, r, delta, ns, ps, behind, degenerate)) {
+      out->ndegenerate += degenerate;
+      return;
+    }
+    out->ntri++;
+    const T *pl = g->plane + 4 * t;
+    const Vec3<T> nw = T(side) * make_vec3(pl[0], pl[1], pl[2]);
+    int k = -1;
+    T best = T(-2);
+    for (int i = 0; i < out->n; ++i) {
+      const T c = dot(out->p[i].nseed, nw);
+      if (c > best) {
+        best = c;
+        k = i;
+      }
+    }
+    if (k < 0 || best < cosmax) {
+      if (out->n < WALL_MAX_PATCH) {
+        k = out->n++;
+        out->p[k].nseed = nw;
+        out->p[k].behind = 0;
+        rbest[k] = T(2);    // > any contact's r' (< 1)
+      } else
+        out->nmerged++;    // more orientations than patches: join the closest
+    }
+    WallPatch<T> &p = out->p[k];
+    p.behind |= behind;
+    if (!(r < rbest[k])) return;    // ties: the first (coplanar triangles agree)
+    rbest[k] = r;
+    p.volume = vol * ellipsoid_cap_fraction(r);
+    p.area = T(0);
+    p.S = ns;
+    p.M = cross(ps - e->c, ns);
+    p.ac = ps - delta * ns;
+    p.vc = ps;
+    p.depth = delta;
+    p.tri = t;
+  }
+};
+
+// Patches of ellipsoid e (mesh frame) against the mesh: every triangle
+// within its bounding sphere (the grid; no near lists). sides: which side
+// of each triangle acts (null: the front only).
+template <typename T>
+POLYDEM_FN void wall_ellipsoid_patches(const WallEllipsoid<T> &e, const MeshGridView<T> &g,
+                                       T cosmax, WallPatches<T> &out,
+                                       const WallSides<T> *sides = nullptr)
+{
+  out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = out.nunrecorded = 0;
+  WallEllipsoidAccumulate<T> acc;
+  acc.e = &e;
+  acc.g = &g;
+  acc.out = &out;
+  acc.cosmax = cosmax;
+  acc.sides = sides;
+  acc.rb = e.ax.x > e.ax.y ? e.ax.x : e.ax.y;
+  acc.rb = e.ax.z > acc.rb ? e.ax.z : acc.rb;
+  acc.vol = T(4.18879020478639098462) * e.ax.x * e.ax.y * e.ax.z;    // 4/3 pi abc
+  mesh_for_each_near(g, e.c, acc.rb, acc);
+}
+
+// ellipsoid patches -> contacts of the contact layer (lab frame)
+template <typename T>
+POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, const MeshPose<T> &mp)
+{
+  WallContacts<T> C;
+  C.n = P.n;
+  const Vec3<T> xw = mp.o + mp.d;
+  for (int k = 0; k < P.n; ++k) {
+    const WallPatch<T> &q = P.p[k];
+    C.on[k] = q.depth > T(0);
+    if (!C.on[k]) continue;
+    ContactGeometry<T> &g = C.g[k];
+    g.volume = q.depth;
+    g.area = T(0);
+    g.S_A = matvec(mp.R, q.S);
+    g.normal = g.S_A;    // unit, from the particle into the wall
+    g.M_A = matvec(mp.R, q.M);
+    g.M_B = make_vec3(T(0), T(0), T(0));
+    g.centroid = xw + matvec(mp.R, q.ac - mp.o);
+    g.gradient_damping = 0;
+  }
+  return C;
+}
+
+// Everything for one ellipsoid (semi-axes ax [length], lab pose x, q;
+// velocity v, spin w): pose into the mesh frame, patches, forces back in the
+// lab frame (wall_contact_forces, the contact point's mass with the solid
+// ellipsoid's moments I_x = m (b^2 + c^2) / 5, ...). law: ellipsoid_law.
+template <typename T>
+POLYDEM_FN WallForce<T>
+wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T> &mp,
+                        const MeshGridView<T> &g, const ContactLaw<T> &law, T m, T dt, T cosmax,
+                        int both, const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update,
+                        WallPatches<T> &P)
+{
+  WallEllipsoid<T> e;
+  e.c = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
+  e.R = quat_to_mat(qmul(qconj(mp.q), lab.q));
+  e.ax = ax;
+  const WallSides<T> sides = wall_kept_sides(hist, mp, both);
+  wall_ellipsoid_patches(e, g, cosmax, P, &sides);
+  const T a2 = ax.x * ax.x, b2 = ax.y * ax.y, c2 = ax.z * ax.z;
+  const Vec3<T> Iinv = make_vec3(T(5) / (m * (b2 + c2)), T(5) / (m * (a2 + c2)),
+                                 T(5) / (m * (a2 + b2)));
+  return wall_contact_forces(wall_ellipsoid_contacts(P, mp), mp, law, m, Iinv,
+                             quat_to_mat(lab.q), cosmax, lab.x, v, w, dt, hist, update);
+}
+
+// Per-triangle forces (pertriangle yes): each patch's force on the wall
+// goes to the triangle of its closest point.
+template <typename T, typename F>
+POLYDEM_FN void wall_ellipsoid_triangle_forces(const WallPatches<T> &P, const WallForce<T> &wf,
+                                               F &add)
+{
+  for (int k = 0; k < P.n; ++k)
+    if (P.p[k].depth > T(0))
+      add(P.p[k].tri, -wf.fpatch[k].x, -wf.fpatch[k].y, -wf.fpatch[k].z);
+}
+
+}    // namespace polydem
+
+#endif

@@ -1,0 +1,287 @@
+// Kernel of ellipsoids on mesh walls (polydem_wall_ellipsoid.h, issue 16),
+// float and double, without LAMMPS:
+// - plane: the overlap is the support-function depth sigma(n) - h, the
+//   deepest point c - M n / sigma, S = -n, M = (p* - c) x (-n), the cap
+//   volume fraction (1-r)^2 (2+r)/4; for random orientations, tilted meshes,
+//   foot anywhere (vertices, edges, inside) - to 1e-13 (double) / 2e-5 (float)
+//   of the semi-axis;
+// - S and M are the gradient of delta (central differences in translation
+//   and rotation, 1e-7 relative);
+// - a sweep across the border of an open mesh (face -> edge -> vertex ->
+//   gone) is continuous: no step of 5e-4 a changes delta by more than
+//   2e-3 a nor the normal by more than 1e-2;
+// - behind the acting side (kept side): the face contact keeps pushing back;
+// - NaN poses are counted as degenerate, never a contact.
+#include "polydem_stl.h"
+#include "polydem_wall_ellipsoid.h"
+#include "wall_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace polydem;
+using wall_test::Tris;
+
+namespace {
+
+// a mesh and its grid as kernel data of type T (storage kept here)
+template <typename T> struct Mesh {
+  std::vector<T> tri, plane, box;
+  MeshGrid g;
+  MeshGridView<T> v;
+  explicit Mesh(const Tris &t, double h = 0.05)
+  {
+    g = build_mesh_grid(t, h);
+    tri.assign(t.begin(), t.end());
+    plane.assign(g.plane.begin(), g.plane.end());
+    box.assign(g.box.begin(), g.box.end());
+    v.tri = tri.data();
+    v.ntri = (int) (t.size() / 9);
+    for (int d = 0; d < 3; d++) {
+      v.lo[d] = T(g.lo[d]);
+      v.n[d] = g.n[d];
+    }
+    v.h = T(g.h);
+    v.start = g.start.data();
+    v.items = g.items.data();
+    v.plane = plane.data();
+    v.box = box.data();
+    v.tbin = g.tbin.data();
+  }
+};
+
+// rotate the points of t by R about the origin, then shift by d
+Tris transformed(const Tris &t, const Mat3<double> &R, const Vec3<double> &d)
+{
+  Tris o(t.size());
+  for (size_t k = 0; k < t.size(); k += 3) {
+    const Vec3<double> p = matvec(R, make_vec3(t[k], t[k + 1], t[k + 2])) + d;
+    o[k] = p.x, o[k + 1] = p.y, o[k + 2] = p.z;
+  }
+  return o;
+}
+
+Quat<double> random_quat(std::mt19937_64 &rng)
+{
+  std::normal_distribution<double> g;
+  return qnormalize(make_quat(g(rng), g(rng), g(rng), g(rng)));
+}
+
+template <typename T> WallEllipsoid<T> posed(const Vec3<double> &c, const Mat3<double> &R,
+                                              const Vec3<double> &ax)
+{
+  WallEllipsoid<T> e;
+  e.c = make_vec3(T(c.x), T(c.y), T(c.z));
+  for (int i = 0; i < 3; i++)
+    for (int k = 0; k < 3; k++) e.R.m[i][k] = T(R.m[i][k]);
+  e.ax = make_vec3(T(ax.x), T(ax.y), T(ax.z));
+  return e;
+}
+
+// delta of the single patch of e (0 if none)
+template <typename T> T depth_of(const WallEllipsoid<T> &e, const MeshGridView<T> &g)
+{
+  WallPatches<T> P;
+  wall_ellipsoid_patches(e, g, T(std::cos(20.0 * M_PI / 180.0)), P);
+  return P.n ? P.p[0].depth : T(0);
+}
+
+template <typename T> void plane_case(double tol)
+{
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
+  double worst = 0.0;
+  int n = 0;
+  for (int trial = 0; trial < 200; trial++) {
+    // a flat 4 x 4 mesh (32 triangles) of side 0.2, tilted and shifted
+    const Mat3<double> Rw = quat_to_mat(random_quat(rng));
+    const Vec3<double> d = make_vec3(0.01 * u(rng), 0.01 * u(rng), 0.01 * u(rng));
+    const Mesh<T> m(transformed(wall_test::flat(-0.1, 0.1, -0.1, 0.1, 0.0, 4, 4), Rw, d));
+    const Vec3<double> nw = matvec(Rw, make_vec3(0.0, 0.0, 1.0));
+    const Mat3<double> R = quat_to_mat(random_quat(rng));
+    // foot: anywhere, or on a vertex / an edge / the diagonal of the mesh
+    Vec3<double> foot = make_vec3(0.09 * u(rng), 0.09 * u(rng), 0.0);
+    if (trial % 4 == 1) foot = make_vec3(0.05, -0.05, 0.0);    // a vertex
+    if (trial % 4 == 2) foot.x = 0.0;                          // an edge
+    if (trial % 4 == 3) foot.y = foot.x;                       // a diagonal
+    // support sigma(n) = |A R^T n|, deepest point c - M n / sigma
+    const Vec3<double> nb = matTvec(R, nw);
+    const Vec3<double> an = make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z);
+    const double sig = norm(an);
+    const double h = sig * (0.5 + 0.49 * u(rng));    // overlap (0.01 .. 0.99) x sigma
+    const Vec3<double> c = matvec(Rw, foot) + d + h * nw;
+    const Vec3<double> Mn = matvec(R, make_vec3(ax.x * an.x, ax.y * an.y, ax.z * an.z));
+    const Vec3<double> ps = c - (1.0 / sig) * Mn;
+    const double r = h / sig, frac = (1 - r) * (1 - r) * (2 + r) / 4;
+    WallPatches<T> P;
+    const auto e = posed<T>(c, R, ax);
+    wall_ellipsoid_patches(e, m.v, T(std::cos(20.0 * M_PI / 180.0)), P);
+    ASSERT_EQ(P.n, 1) << trial;
+    const WallPatch<T> &p = P.p[0];
+    const double a = ax.x;
+    auto err = [&](const Vec3<T> &x, const Vec3<double> &y) {
+      return norm(make_vec3(double(x.x) - y.x, double(x.y) - y.y, double(x.z) - y.z));
+    };
+    const double e1 = std::fabs(double(p.depth) - (sig - h)) / a;
+    const double e2 = err(p.S, -1.0 * nw);
+    const double e3 = err(p.vc, ps) / a;
+    const double e4 = err(p.M, cross(ps - c, -1.0 * nw)) / a;
+    const double e5 = err(p.ac, ps + (sig - h) * nw) / a;    // in the wall's plane
+    const double e6 = std::fabs(double(p.volume) / (4.0 / 3.0 * M_PI * ax.x * ax.y * ax.z) - frac);
+    for (double x : {e1, e2, e3, e4, e5, e6}) {
+      EXPECT_LE(x, tol) << trial << ": " << e1 << " " << e2 << " " << e3 << " " << e4 << " " << e5
+                        << " " << e6;
+      worst = std::fmax(worst, x);
+    }
+    EXPECT_FALSE(p.behind);
+    n++;
+  }
+  std::printf("[ ell wall ] %s plane: %d poses, largest error %.3g (of the semi-axis a)\n",
+              sizeof(T) == 8 ? "double" : "float", n, worst);
+}
+
+}    // namespace
+
+TEST(WallEllipsoidKernel, PlaneIsTheSupportDepthDouble) { plane_case<double>(1e-13); }
+TEST(WallEllipsoidKernel, PlaneIsTheSupportDepthFloat) { plane_case<float>(2e-5); }
+
+// dm/dx = S, dm/dtheta = M (central differences of the kernel's own delta) for
+// face contacts (the foot of the centre, along -M n, well inside the mesh)
+TEST(WallEllipsoidKernel, GradientOfTheOverlap)
+{
+  std::mt19937_64 rng(5);
+  const Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
+  const Mat3<double> Rw = quat_to_mat(random_quat(rng));
+  const Mesh<double> m(transformed(wall_test::flat(-0.1, 0.1, -0.1, 0.1, 0.0, 3, 3), Rw,
+                                   make_vec3(0.0, 0.0, 0.0)));
+  const Vec3<double> nw = matvec(Rw, make_vec3(0.0, 0.0, 1.0));
+  double worst = 0.0;
+  for (int trial = 0; trial < 20; trial++) {
+    const Quat<double> q = random_quat(rng);
+    const Mat3<double> R = quat_to_mat(q);
+    const Vec3<double> nb = matTvec(R, nw);
+    const double sig = norm(make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z));
+    const Vec3<double> c = matvec(Rw, make_vec3(0.006 * trial - 0.06, 0.02, 0.0)) +
+        0.8 * sig * nw;
+    WallPatches<double> P;
+    wall_ellipsoid_patches(posed<double>(c, R, ax), m.v, std::cos(20.0 * M_PI / 180.0), P);
+    ASSERT_EQ(P.n, 1);
+    const double eps = 1e-6 * ax.x;
+    for (int k = 0; k < 3; k++) {
+      Vec3<double> dx = make_vec3(0.0, 0.0, 0.0);
+      dx[k] = eps;
+      const double g = (depth_of(posed<double>(c + dx, R, ax), m.v) -
+                        depth_of(posed<double>(c - dx, R, ax), m.v)) /
+          (2 * eps);
+      EXPECT_NEAR(g, P.p[0].S[k], 1e-7);
+      worst = std::fmax(worst, std::fabs(g - P.p[0].S[k]));
+      // rotation by +-phi about lab axis k
+      const double phi = 1e-6;
+      Vec3<double> axis = make_vec3(0.0, 0.0, 0.0);
+      axis[k] = 1.0;
+      auto rot = [&](double a) {
+        const Quat<double> dq = make_quat(std::cos(a / 2), std::sin(a / 2) * axis.x,
+                                          std::sin(a / 2) * axis.y, std::sin(a / 2) * axis.z);
+        return quat_to_mat(qmul(dq, q));
+      };
+      const double gr = (depth_of(posed<double>(c, rot(phi), ax), m.v) -
+                         depth_of(posed<double>(c, rot(-phi), ax), m.v)) /
+          (2 * phi);
+      EXPECT_NEAR(gr, P.p[0].M[k], 1e-7 * ax.x);
+      worst = std::fmax(worst, std::fabs(gr - P.p[0].M[k]) / ax.x);
+    }
+  }
+  std::printf("[ ell wall ] gradient: largest |finite difference - (S, M/a)| %.3g\n", worst);
+}
+
+// An ellipsoid slides off the corner of an open square plate: face, then
+// edge, then vertex region, then no contact. delta and the normal change
+// continuously.
+TEST(WallEllipsoidKernel, ContinuousAcrossTheBorder)
+{
+  const Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
+  const Mesh<double> m(wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
+  const Mat3<double> R = quat_to_mat(qnormalize(make_quat(0.9, 0.2, -0.3, 0.25)));
+  const Vec3<double> nb = matTvec(R, make_vec3(0.0, 0.0, 1.0));
+  const double sig = norm(make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z));
+  double dprev = -1.0, jump = 0.0, njump = 0.0;
+  Vec3<double> nprev = make_vec3(0.0, 0.0, 0.0);
+  int regions[3] = {0, 0, 0};    // face, border, none
+  const int nstep = 6000;    // steps of 1e-5 = 5e-4 a
+  for (int s = 0; s <= nstep; s++) {
+    // from inside across the edge x = 0.05 (at y = 0.045), then past the corner
+    const double t = 0.03 + 0.06 * s / nstep;
+    const Vec3<double> c = make_vec3(t, 0.9 * t, 0.7 * sig);
+    WallPatches<double> P;
+    wall_ellipsoid_patches(posed<double>(c, R, ax), m.v, std::cos(20.0 * M_PI / 180.0), P);
+    const double d = P.n ? P.p[0].depth : 0.0;
+    if (!P.n) regions[2]++;
+    else if (std::fabs(P.p[0].S.z + 1.0) < 1e-12) regions[0]++;
+    else regions[1]++;
+    if (dprev >= 0.0) {
+      jump = std::fmax(jump, std::fabs(d - dprev));
+      if (P.n && norm(nprev) > 0.0) njump = std::fmax(njump, norm(P.p[0].S - nprev));
+    }
+    dprev = d;
+    nprev = P.n ? P.p[0].S : make_vec3(0.0, 0.0, 0.0);
+  }
+  std::printf("[ ell wall ] border sweep: %d face, %d edge/vertex, %d apart; largest step of "
+              "delta %.3g a, of the normal %.3g\n", regions[0], regions[1], regions[2],
+              jump / ax.x, njump);
+  EXPECT_GT(regions[0], 10);
+  EXPECT_GT(regions[1], 10);
+  EXPECT_GT(regions[2], 10);
+  EXPECT_LT(jump, 2e-3 * ax.x);
+  EXPECT_LT(njump, 1e-2);
+}
+
+// Two-sided wall, centre pushed behind the plane while a kept contact claims
+// the front: the overlap grows beyond sigma and the normal still points
+// into the wall from the front (the particle is pushed back, not through).
+TEST(WallEllipsoidKernel, KeptSideBehindThePlane)
+{
+  const Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
+  const Mesh<double> m(wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
+  const Mat3<double> R = quat_to_mat(qnormalize(make_quat(0.9, 0.2, -0.3, 0.25)));
+  const Vec3<double> nb = matTvec(R, make_vec3(0.0, 0.0, 1.0));
+  const double sig = norm(make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z));
+  WallSides<double> sides;
+  sides.both = 1;
+  sides.n = 1;
+  sides.nc[0] = make_vec3(0.0, 0.0, -1.0);    // kept: met from the front (+z)
+  for (double h : {0.01 * sig, -0.0002, -0.0005}) {
+    sides.ec[0] = h;    // the kept plane distance follows the centre
+    WallPatches<double> P;
+    wall_ellipsoid_patches(posed<double>(make_vec3(0.01, 0.003, h), R, ax), m.v,
+                           std::cos(20.0 * M_PI / 180.0), P, &sides);
+    ASSERT_EQ(P.n, 1);
+    EXPECT_NEAR(P.p[0].depth, sig - h, 1e-15);
+    EXPECT_NEAR(P.p[0].S.z, -1.0, 1e-15);
+    EXPECT_EQ(P.p[0].behind, h < 0.0 ? 1 : 0);
+  }
+  // without the kept side the centre's side acts: the back, pushed down
+  WallPatches<double> P;
+  sides.n = 0;
+  wall_ellipsoid_patches(posed<double>(make_vec3(0.01, 0.003, -0.0005), R, ax), m.v,
+                         std::cos(20.0 * M_PI / 180.0), P, &sides);
+  ASSERT_EQ(P.n, 1);
+  EXPECT_NEAR(P.p[0].S.z, 1.0, 1e-15);
+  EXPECT_NEAR(P.p[0].depth, sig - 0.0005, 1e-15);
+}
+
+TEST(WallEllipsoidKernel, NanIsDegenerate)
+{
+  const Mesh<double> m(wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
+  WallPatches<double> P;
+  const double nan = std::nan("");
+  auto e = posed<double>(make_vec3(0.0, 0.0, 0.001), quat_to_mat(make_quat(1.0, 0.0, 0.0, 0.0)),
+                         make_vec3(0.02, 0.012, 0.007));
+  e.R.m[0][0] = nan;
+  wall_ellipsoid_patches(e, m.v, 0.9, P);
+  EXPECT_EQ(P.n, 0);
+  EXPECT_GT(P.ndegenerate, 0);
+}
