@@ -932,7 +932,11 @@ wall_particle(const ShapeView<T> &sv, const Pose<T> &lab, const MeshPose<T> &mp,
   const T rho = m / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
   const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),
                                  T(1) / (rho * s5 * sv.inertia[2]));
-  return wall_forces(P, mp, law, m, Iinv, a.R, cosmax, lab.x, v, w, dt, hist, update);
+  // the contact-point mass needs the particle's lab rotation (a.R is in the
+  // mesh frame: on a rotating mesh it used the wrong body axes until
+  // December 2026)
+  return wall_forces(P, mp, law, m, Iinv, quat_to_mat(lab.q), cosmax, lab.x, v, w, dt, hist,
+                     update);
 }
 
 // What fix wall/mesh warns about, per particle (issue 17): contacts whose
