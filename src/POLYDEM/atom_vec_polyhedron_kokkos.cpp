@@ -493,8 +493,8 @@ template <class DeviceType> struct PolyUnpackExchange {
   X_FLOAT lo, hi;
 
   PolyUnpackExchange(AtomKokkos *atomKK, AtomVecPolyhedronKokkos *avec,
-                     const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_1d &k_nlocal,
-                     int dim_, X_FLOAT lo_, X_FLOAT hi_) :
+                     const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_1d &k_nlocal, int dim_,
+                     X_FLOAT lo_, X_FLOAT hi_) :
       a(atomKK, avec),
       nlocal(k_nlocal.view<DeviceType>()), dim(dim_), lo(lo_), hi(hi_)
   {
@@ -542,16 +542,16 @@ AtomVecPolyhedronKokkos::AtomVecPolyhedronKokkos(LAMMPS *lmp) :
 
   // the device kernels above move exactly these fields (the host paths
   // follow the lists whatever they are): a change must reach the kernels
-  const char *expected[][2] = {
-      {fields_comm, "quat"},
-      {fields_comm_vel, "quat omega angmom"},
-      {fields_border, "radius rmass quat pshape pscale"},
-      {fields_border_vel, "radius rmass quat pshape pscale omega angmom"},
-      {fields_exchange, "radius rmass omega angmom quat pshape pscale"}};
+  const char *expected[][2] = {{fields_comm, "quat"},
+                               {fields_comm_vel, "quat omega angmom"},
+                               {fields_border, "radius rmass quat pshape pscale"},
+                               {fields_border_vel, "radius rmass quat pshape pscale omega angmom"},
+                               {fields_exchange, "radius rmass omega angmom quat pshape pscale"}};
   for (auto &e : expected)
     if (!e[0] || strcmp(e[0], e[1]) != 0)
-      error->all(FLERR, "atom_style polyhedron/kk: atom_style polyhedron now communicates '{}' "
-                        "instead of '{}'; update the Kokkos kernels",
+      error->all(FLERR,
+                 "atom_style polyhedron/kk: atom_style polyhedron now communicates '{}' "
+                 "instead of '{}'; update the Kokkos kernels",
                  e[0] ? e[0] : "", e[1]);
 
   commKK = (CommKokkos *) comm;
@@ -688,8 +688,7 @@ int AtomVecPolyhedronKokkos::pack_comm(int n, int *list, double *buf, int pbc_fl
   return AtomVec::pack_comm(n, list, buf, pbc_flag, pbc);
 }
 
-int AtomVecPolyhedronKokkos::pack_comm_vel(int n, int *list, double *buf, int pbc_flag,
-                                               int *pbc)
+int AtomVecPolyhedronKokkos::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
   atomKK->sync(Host, COMM_VEL_MASK);
   return AtomVec::pack_comm_vel(n, list, buf, pbc_flag, pbc);
@@ -728,8 +727,7 @@ int AtomVecPolyhedronKokkos::pack_border(int n, int *list, double *buf, int pbc_
   return AtomVec::pack_border(n, list, buf, pbc_flag, pbc);
 }
 
-int AtomVecPolyhedronKokkos::pack_border_vel(int n, int *list, double *buf, int pbc_flag,
-                                                 int *pbc)
+int AtomVecPolyhedronKokkos::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
   atomKK->sync(Host, BORDER_VEL_MASK);
   return AtomVec::pack_border_vel(n, list, buf, pbc_flag, pbc);
@@ -862,8 +860,7 @@ int AtomVecPolyhedronKokkos::property_atom(char *name)
   return PolyShapeLibrary::property_atom(name);
 }
 
-void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nvalues,
-                                                 int groupbit)
+void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nvalues, int groupbit)
 {
   sync_host_all();
   shapes.pack_property_atom(index, buf, nvalues, groupbit);
@@ -874,9 +871,8 @@ void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nva
 ====================================================================== */
 
 int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const DAT::tdual_int_2d &list,
-                                                  const int &iswap,
-                                                  const DAT::tdual_xfloat_2d &buf,
-                                                  const int &pbc_flag, const int pbc[])
+                                              const int &iswap, const DAT::tdual_xfloat_2d &buf,
+                                              const int &pbc_flag, const int pbc[])
 {
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -893,7 +889,7 @@ int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const DAT::tdual_int
 }
 
 void AtomVecPolyhedronKokkos::unpack_comm_kokkos(const int &n, const int &first,
-                                                     const DAT::tdual_xfloat_2d &buf)
+                                                 const DAT::tdual_xfloat_2d &buf)
 {
   if (commKK->forward_comm_on_host) {
     atomKK->sync(Host, COMM_MASK);
@@ -908,11 +904,9 @@ void AtomVecPolyhedronKokkos::unpack_comm_kokkos(const int &n, const int &first,
   }
 }
 
-int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n,
-                                                      const DAT::tdual_int_2d &list,
-                                                      const int &iswap,
-                                                      const DAT::tdual_xfloat_2d &buf,
-                                                      const int &pbc_flag, const int pbc[])
+int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const DAT::tdual_int_2d &list,
+                                                  const int &iswap, const DAT::tdual_xfloat_2d &buf,
+                                                  const int &pbc_flag, const int pbc[])
 {
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -936,7 +930,7 @@ int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n,
 }
 
 void AtomVecPolyhedronKokkos::unpack_comm_vel_kokkos(const int &n, const int &first,
-                                                         const DAT::tdual_xfloat_2d &buf)
+                                                     const DAT::tdual_xfloat_2d &buf)
 {
   if (commKK->forward_comm_on_host) {
     atomKK->sync(Host, COMM_VEL_MASK);
@@ -952,8 +946,8 @@ void AtomVecPolyhedronKokkos::unpack_comm_vel_kokkos(const int &n, const int &fi
 }
 
 int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const DAT::tdual_int_2d &list,
-                                                const int &iswap, const int nfirst,
-                                                const int &pbc_flag, const int pbc[])
+                                            const int &iswap, const int nfirst, const int &pbc_flag,
+                                            const int pbc[])
 {
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   if (commKK->forward_comm_on_host) {
@@ -970,10 +964,12 @@ int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const DAT::tdual_int_2
   return n * COMM_SIZE;
 }
 
-int AtomVecPolyhedronKokkos::pack_comm_self_fused(
-    const int &n, const DAT::tdual_int_2d &list, const DAT::tdual_int_1d &sendnum_scan,
-    const DAT::tdual_int_1d &firstrecv, const DAT::tdual_int_1d &pbc_flag,
-    const DAT::tdual_int_2d &pbc, const DAT::tdual_int_1d &g2l)
+int AtomVecPolyhedronKokkos::pack_comm_self_fused(const int &n, const DAT::tdual_int_2d &list,
+                                                  const DAT::tdual_int_1d &sendnum_scan,
+                                                  const DAT::tdual_int_1d &firstrecv,
+                                                  const DAT::tdual_int_1d &pbc_flag,
+                                                  const DAT::tdual_int_2d &pbc,
+                                                  const DAT::tdual_int_1d &g2l)
 {
   if (commKK->forward_comm_on_host) {
     atomKK->sync(Host, COMM_MASK);
@@ -994,8 +990,8 @@ int AtomVecPolyhedronKokkos::pack_comm_self_fused(
 /* ---------------------------------------------------------------------- */
 
 int AtomVecPolyhedronKokkos::pack_border_kokkos(int n, DAT::tdual_int_2d k_sendlist,
-                                                    DAT::tdual_xfloat_2d buf, int iswap,
-                                                    int pbc_flag, int *pbc, ExecutionSpace space)
+                                                DAT::tdual_xfloat_2d buf, int iswap, int pbc_flag,
+                                                int *pbc, ExecutionSpace space)
 {
   const Shift s = border_shift(domain, pbc_flag, pbc);
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -1015,8 +1011,8 @@ int AtomVecPolyhedronKokkos::pack_border_kokkos(int n, DAT::tdual_int_2d k_sendl
 }
 
 void AtomVecPolyhedronKokkos::unpack_border_kokkos(const int &n, const int &first,
-                                                       const DAT::tdual_xfloat_2d &buf,
-                                                       ExecutionSpace space)
+                                                   const DAT::tdual_xfloat_2d &buf,
+                                                   ExecutionSpace space)
 {
   while (first + n >= nmax) grow(0);
   atomKK->sync(space, BORDER_MASK);
@@ -1032,9 +1028,8 @@ void AtomVecPolyhedronKokkos::unpack_border_kokkos(const int &n, const int &firs
 
 // CommKokkos sizes a ghost-velocity border record as size_border + size_velocity
 int AtomVecPolyhedronKokkos::pack_border_vel_kokkos(int n, DAT::tdual_int_2d k_sendlist,
-                                                        DAT::tdual_xfloat_2d buf, int iswap,
-                                                        int pbc_flag, int *pbc,
-                                                        ExecutionSpace space)
+                                                    DAT::tdual_xfloat_2d buf, int iswap,
+                                                    int pbc_flag, int *pbc, ExecutionSpace space)
 {
   const Shift s = border_shift(domain, pbc_flag, pbc);
   X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -1059,8 +1054,8 @@ int AtomVecPolyhedronKokkos::pack_border_vel_kokkos(int n, DAT::tdual_int_2d k_s
 }
 
 void AtomVecPolyhedronKokkos::unpack_border_vel_kokkos(const int &n, const int &first,
-                                                           const DAT::tdual_xfloat_2d &buf,
-                                                           ExecutionSpace space)
+                                                       const DAT::tdual_xfloat_2d &buf,
+                                                       ExecutionSpace space)
 {
   while (first + n >= nmax) grow(0);
   const int stride = size_border + size_velocity;
@@ -1077,12 +1072,11 @@ void AtomVecPolyhedronKokkos::unpack_border_vel_kokkos(const int &n, const int &
 
 /* ---------------------------------------------------------------------- */
 
-int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend,
-                                                      DAT::tdual_xfloat_2d &k_buf,
-                                                      DAT::tdual_int_1d k_sendlist,
-                                                      DAT::tdual_int_1d k_copylist,
-                                                      ExecutionSpace space, int /*dim*/,
-                                                      X_FLOAT /*lo*/, X_FLOAT /*hi*/)
+int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend, DAT::tdual_xfloat_2d &k_buf,
+                                                  DAT::tdual_int_1d k_sendlist,
+                                                  DAT::tdual_int_1d k_copylist,
+                                                  ExecutionSpace space, int /*dim*/, X_FLOAT /*lo*/,
+                                                  X_FLOAT /*hi*/)
 {
   const int width = k_buf.view<LMPHostType>().extent(1);
   if (nsend > (int) (k_buf.view<LMPHostType>().extent(0) * width) / EXCHANGE_SIZE) {
@@ -1102,8 +1096,8 @@ int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend,
 }
 
 int AtomVecPolyhedronKokkos::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf, int nrecv,
-                                                        int nlocal, int dim, X_FLOAT lo,
-                                                        X_FLOAT hi, ExecutionSpace space)
+                                                    int nlocal, int dim, X_FLOAT lo, X_FLOAT hi,
+                                                    ExecutionSpace space)
 {
   // room for every incoming atom (CommKokkos does not grow before unpacking)
   const int nincoming = nrecv / EXCHANGE_SIZE;
@@ -1128,111 +1122,57 @@ int AtomVecPolyhedronKokkos::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf,
 }
 
 /* ======================================================================
-   sync / modified
+   sync / modified: the DualViews of the fields in mask, one order for all
 ====================================================================== */
+
+template <class F> void AtomVecPolyhedronKokkos::for_each_dual(unsigned int mask, F f)
+{
+  if (mask & X_MASK) f(atomKK->k_x);
+  if (mask & V_MASK) f(atomKK->k_v);
+  if (mask & F_MASK) f(atomKK->k_f);
+  if (mask & TAG_MASK) f(atomKK->k_tag);
+  if (mask & TYPE_MASK) f(atomKK->k_type);
+  if (mask & MASK_MASK) f(atomKK->k_mask);
+  if (mask & IMAGE_MASK) f(atomKK->k_image);
+  if (mask & RADIUS_MASK) f(atomKK->k_radius);
+  if (mask & RMASS_MASK) f(atomKK->k_rmass);
+  if (mask & OMEGA_MASK) f(atomKK->k_omega);
+  if (mask & ANGMOM_MASK) f(atomKK->k_angmom);
+  if (mask & TORQUE_MASK) f(atomKK->k_torque);
+  if (mask & POLYDEM_QUAT_MASK) f(k_quat);
+  if (mask & POLYDEM_PSHAPE_MASK) f(k_pshape);
+  if (mask & POLYDEM_PSCALE_MASK) f(k_pscale);
+}
 
 void AtomVecPolyhedronKokkos::sync(ExecutionSpace space, unsigned int mask)
 {
-  if (space == Device) {
-    if (mask & X_MASK) atomKK->k_x.sync<LMPDeviceType>();
-    if (mask & V_MASK) atomKK->k_v.sync<LMPDeviceType>();
-    if (mask & F_MASK) atomKK->k_f.sync<LMPDeviceType>();
-    if (mask & TAG_MASK) atomKK->k_tag.sync<LMPDeviceType>();
-    if (mask & TYPE_MASK) atomKK->k_type.sync<LMPDeviceType>();
-    if (mask & MASK_MASK) atomKK->k_mask.sync<LMPDeviceType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.sync<LMPDeviceType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.sync<LMPDeviceType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.sync<LMPDeviceType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.sync<LMPDeviceType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.sync<LMPDeviceType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.sync<LMPDeviceType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.sync<LMPDeviceType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.sync<LMPDeviceType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.sync<LMPDeviceType>();
-  } else {
-    if (mask & X_MASK) atomKK->k_x.sync<LMPHostType>();
-    if (mask & V_MASK) atomKK->k_v.sync<LMPHostType>();
-    if (mask & F_MASK) atomKK->k_f.sync<LMPHostType>();
-    if (mask & TAG_MASK) atomKK->k_tag.sync<LMPHostType>();
-    if (mask & TYPE_MASK) atomKK->k_type.sync<LMPHostType>();
-    if (mask & MASK_MASK) atomKK->k_mask.sync<LMPHostType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.sync<LMPHostType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.sync<LMPHostType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.sync<LMPHostType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.sync<LMPHostType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.sync<LMPHostType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.sync<LMPHostType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.sync<LMPHostType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.sync<LMPHostType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.sync<LMPHostType>();
-  }
+  if (space == Device)
+    for_each_dual(mask, [](auto &k) {
+      k.template sync<LMPDeviceType>();
+    });
+  else
+    for_each_dual(mask, [](auto &k) {
+      k.template sync<LMPHostType>();
+    });
 }
 
 void AtomVecPolyhedronKokkos::modified(ExecutionSpace space, unsigned int mask)
 {
-  if (space == Device) {
-    if (mask & X_MASK) atomKK->k_x.modify<LMPDeviceType>();
-    if (mask & V_MASK) atomKK->k_v.modify<LMPDeviceType>();
-    if (mask & F_MASK) atomKK->k_f.modify<LMPDeviceType>();
-    if (mask & TAG_MASK) atomKK->k_tag.modify<LMPDeviceType>();
-    if (mask & TYPE_MASK) atomKK->k_type.modify<LMPDeviceType>();
-    if (mask & MASK_MASK) atomKK->k_mask.modify<LMPDeviceType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.modify<LMPDeviceType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.modify<LMPDeviceType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.modify<LMPDeviceType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.modify<LMPDeviceType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.modify<LMPDeviceType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.modify<LMPDeviceType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.modify<LMPDeviceType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.modify<LMPDeviceType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.modify<LMPDeviceType>();
-  } else {
-    if (mask & X_MASK) atomKK->k_x.modify<LMPHostType>();
-    if (mask & V_MASK) atomKK->k_v.modify<LMPHostType>();
-    if (mask & F_MASK) atomKK->k_f.modify<LMPHostType>();
-    if (mask & TAG_MASK) atomKK->k_tag.modify<LMPHostType>();
-    if (mask & TYPE_MASK) atomKK->k_type.modify<LMPHostType>();
-    if (mask & MASK_MASK) atomKK->k_mask.modify<LMPHostType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.modify<LMPHostType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.modify<LMPHostType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.modify<LMPHostType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.modify<LMPHostType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.modify<LMPHostType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.modify<LMPHostType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.modify<LMPHostType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.modify<LMPHostType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.modify<LMPHostType>();
-  }
+  if (space == Device)
+    for_each_dual(mask, [](auto &k) {
+      k.template modify<LMPDeviceType>();
+    });
+  else
+    for_each_dual(mask, [](auto &k) {
+      k.template modify<LMPHostType>();
+    });
 }
-
-namespace {
-template <class DualViewType, class Callback>
-void overlap_one(DualViewType &k, ExecutionSpace space, Callback copy)
-{
-  if (space == Device) {
-    if (k.template need_sync<LMPDeviceType>()) copy(k);
-  } else {
-    if (k.template need_sync<LMPHostType>()) copy(k);
-  }
-}
-}    // namespace
 
 void AtomVecPolyhedronKokkos::sync_overlapping_device(ExecutionSpace space, unsigned int mask)
 {
-  auto copy = [&](auto &k) { perform_async_copy(k, space); };
-  if (mask & X_MASK) overlap_one(atomKK->k_x, space, copy);
-  if (mask & V_MASK) overlap_one(atomKK->k_v, space, copy);
-  if (mask & F_MASK) overlap_one(atomKK->k_f, space, copy);
-  if (mask & TAG_MASK) overlap_one(atomKK->k_tag, space, copy);
-  if (mask & TYPE_MASK) overlap_one(atomKK->k_type, space, copy);
-  if (mask & MASK_MASK) overlap_one(atomKK->k_mask, space, copy);
-  if (mask & IMAGE_MASK) overlap_one(atomKK->k_image, space, copy);
-  if (mask & RADIUS_MASK) overlap_one(atomKK->k_radius, space, copy);
-  if (mask & RMASS_MASK) overlap_one(atomKK->k_rmass, space, copy);
-  if (mask & OMEGA_MASK) overlap_one(atomKK->k_omega, space, copy);
-  if (mask & ANGMOM_MASK) overlap_one(atomKK->k_angmom, space, copy);
-  if (mask & TORQUE_MASK) overlap_one(atomKK->k_torque, space, copy);
-  if (mask & POLYDEM_QUAT_MASK) overlap_one(k_quat, space, copy);
-  if (mask & POLYDEM_PSHAPE_MASK) overlap_one(k_pshape, space, copy);
-  if (mask & POLYDEM_PSCALE_MASK) overlap_one(k_pscale, space, copy);
+  for_each_dual(mask, [&](auto &k) {
+    const bool stale = space == Device ? k.template need_sync<LMPDeviceType>()
+                                       : k.template need_sync<LMPHostType>();
+    if (stale) perform_async_copy(k, space);
+  });
 }

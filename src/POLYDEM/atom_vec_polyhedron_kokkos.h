@@ -26,8 +26,8 @@ AtomStyle(polyhedron/kk/host,AtomVecPolyhedronKokkos);
 
 #include "atom.h"
 #include "atom_vec_kokkos.h"
-#include "poly_shape_library.h"
 #include "kokkos_type.h"
+#include "poly_shape_library.h"
 #include "polydem_kokkos_masks.h"
 
 #include <type_traits>
@@ -149,6 +149,7 @@ class AtomVecPolyhedronKokkos : public AtomVecKokkos {
 
  private:
   PolyShapeLibrary shapes;
+  template <class F> void for_each_dual(unsigned int mask, F f);    // f(DualView) per field
   void sync_host_all();
   void modified_host_all();
   // forget the field lists so that ~AtomVec frees nothing: AtomKokkos owns
