@@ -1,328 +1,65 @@
 /* ----------------------------------------------------------------------
-   POLYDEM - atom_style polyhedron
+   POLYDEM - atom_style polyhedron: LAMMPS's generic AtomVec machinery on
+   the fields of PolyShapeLibrary::setup_style, whose hooks it forwards
 ------------------------------------------------------------------------- */
 
 #include "atom_vec_polyhedron.h"
-
-#include "atom.h"
-#include "domain.h"
-#include "error.h"
-#include "fix.h"
-#include "modify.h"
-#include "polydem_shape_record.h"
-#include "polydem_shape_template.h"
-
-#include <cmath>
-#include <cstdio>
-#include <cstring>
 
 using namespace LAMMPS_NS;
 
 /* ---------------------------------------------------------------------- */
 
-AtomVecPolyhedron::AtomVecPolyhedron(LAMMPS *lmp) : AtomVec(lmp), version(0)
+AtomVecPolyhedron::AtomVecPolyhedron(LAMMPS *lmp) : AtomVec(lmp), shapes(lmp, this)
 {
-  mass_type = PER_ATOM;
-  molecular = Atom::ATOMIC;
-  forceclearflag = 0;
-
-  atom->radius_flag = atom->rmass_flag = atom->omega_flag = atom->torque_flag =
-      atom->angmom_flag = 1;
-  atom->quat_flag = atom->pshape_flag = 1;
-
-  // LAMMPS 2021's main() answers error->one (LAMMPSAbortException) with
-  // MPI_Abort and no flush: with the screen redirected to a file the message
-  // and the log were lost (issue 17). Line buffering keeps both; glibc
-  // allows it on a stream already in use (it changes only the flags).
-  if (screen) setvbuf(screen, nullptr, _IOLBF, BUFSIZ);
-  if (logfile) setvbuf(logfile, nullptr, _IOLBF, BUFSIZ);
-  check_dimension();
-
-  // ghosts get template index, scale, quaternion (+ radius and mass for the
-  // neighbor cutoff and the effective mass), never vertices (seed §2.6)
-  fields_grow = (char *) "radius rmass omega angmom torque quat pshape pscale";
-  fields_copy = (char *) "radius rmass omega angmom quat pshape pscale";
-  fields_comm = (char *) "quat";
-  fields_comm_vel = (char *) "quat omega angmom";
-  fields_reverse = (char *) "torque";
-  fields_border = (char *) "radius rmass quat pshape pscale";
-  fields_border_vel = (char *) "radius rmass quat pshape pscale omega angmom";
-  fields_exchange = (char *) "radius rmass omega angmom quat pshape pscale";
-  fields_restart = (char *) "radius rmass omega angmom quat pshape pscale";
-  fields_create = (char *) "radius rmass omega angmom quat pshape pscale";
-  // data file: atom-ID atom-type shape scale density x y z qw qx qy qz
-  fields_data_atom = (char *) "id type pshape pscale rmass x quat";
-  fields_data_vel = (char *) "id v angmom";
+  shapes.setup_style();
 }
-
-AtomVecPolyhedron::~AtomVecPolyhedron() = default;
-
-/* ----------------------------------------------------------------------
-   arguments: none from the user. Restart files store the templates as
-   "shape ID RECORD" triples here (AtomVec::argcopy is what write_restart
-   saves and read_restart hands back), so a restart needs no shape files.
-------------------------------------------------------------------------- */
 
 void AtomVecPolyhedron::process_args(int narg, char **arg)
 {
-  int iarg = 0;
-  while (iarg < narg) {
-    if (strcmp(arg[iarg], "shape") != 0 || iarg + 3 > narg)
-      error->all(FLERR, "Illegal atom_style polyhedron command: unexpected argument '{}' "
-                 "(define templates with polyhedron_shape)", arg[iarg]);
-    std::string err;
-    auto t = polydem::shape_from_record(arg[iarg + 2], err);
-    if (!t) error->all(FLERR, "atom_style polyhedron: corrupt shape record for '{}': {}",
-                       arg[iarg + 1], err);
-    templates.push_back(std::move(t));
-    template_ids.emplace_back(arg[iarg + 1]);
-    iarg += 3;
-  }
-  version++;
+  shapes.process_args(narg, arg);
   setup_fields();
 }
-
-/* ----------------------------------------------------------------------
-   3-d only: the rigid-body integration and contacts are three-dimensional
-   (in 2-d particles left the plane)
-------------------------------------------------------------------------- */
 
 void AtomVecPolyhedron::init()
 {
   AtomVec::init();
-  check_dimension();
-  check_inserting_fixes();
-}
-
-void AtomVecPolyhedron::check_dimension()
-{
-  if (domain->dimension != 3)
-    error->all(FLERR, "atom_style polyhedron: 3-d only, got 'dimension {}'", domain->dimension);
-}
-
-/* ----------------------------------------------------------------------
-   LAMMPS's inserting fixes give their atoms a sphere's radius and mass and
-   no shape, scale or orientation of ours (fix pour then segfaulted at its
-   first insertion): refused before the run starts
-------------------------------------------------------------------------- */
-
-void AtomVecPolyhedron::check_inserting_fixes()
-{
-  for (int i = 0; i < modify->nfix; i++) {
-    const std::string style = modify->fix[i]->style;
-    if (style == "pour" || style == "deposit")
-      error->all(FLERR,
-                 "fix {} cannot insert atom_style polyhedron particles (it creates atoms "
-                 "without a polyhedron's shape, scale, orientation and mass): use fix "
-                 "insert/polyhedron",
-                 style);
-  }
+  shapes.init();
 }
 
 /* ---------------------------------------------------------------------- */
-
-int AtomVecPolyhedron::find_shape(const std::string &id) const
-{
-  for (int i = 0; i < (int) template_ids.size(); i++)
-    if (template_ids[i] == id) return i;
-  return -1;
-}
-
-int AtomVecPolyhedron::add_shape(const std::string &id,
-                                 std::unique_ptr<polydem::PolyShapeTemplate> t,
-                                 const std::string &record)
-{
-  if (find_shape(id) >= 0)
-    error->all(FLERR, "polyhedron_shape: shape ID '{}' is already defined", id);
-  templates.push_back(std::move(t));
-  template_ids.push_back(id);
-  version++;
-
-  // append "shape ID RECORD" to the stored arguments
-  char **newargs = new char *[nargcopy + 3];
-  for (int i = 0; i < nargcopy; i++) newargs[i] = argcopy[i];
-  newargs[nargcopy] = utils::strdup("shape");
-  newargs[nargcopy + 1] = utils::strdup(id);
-  newargs[nargcopy + 2] = utils::strdup(record);
-  delete[] argcopy;
-  argcopy = newargs;
-  nargcopy += 3;
-  return (int) templates.size() - 1;
-}
-
-/* ---------------------------------------------------------------------- */
-
-void AtomVecPolyhedron::grow_pointers()
-{
-  radius = atom->radius;
-  rmass = atom->rmass;
-  omega = atom->omega;
-  angmom = atom->angmom;
-  quat = atom->quat;
-  pshape = atom->pshape;
-  pscale = atom->pscale;
-}
-
-/* ---------------------------------------------------------------------- */
-
-double AtomVecPolyhedron::density(int i) const
-{
-  const auto v = templates[pshape[i]]->view();
-  const double s = pscale[i];
-  return rmass[i] / (v.volume * s * s * s);
-}
-
-void AtomVecPolyhedron::set_shape_scale(int i, int ishape, double scale)
-{
-  const double rho = density(i);
-  pshape[i] = ishape;
-  pscale[i] = scale;
-  const auto v = templates[ishape]->view();
-  rmass[i] = rho * v.volume * scale * scale * scale;
-  radius[i] = v.radius * scale;
-}
-
-void AtomVecPolyhedron::inertia(int i, double *moments) const
-{
-  const auto v = templates[pshape[i]]->view();
-  const double f = rmass[i] * pscale[i] * pscale[i] / v.volume;
-  for (int k = 0; k < 3; k++) moments[k] = f * v.inertia[k];
-}
-
-// mass and moments of inertia of atom i are normal numbers, the mass at
-// most MASS_MAX (a zero mass gave NaN energies, a zero moment no rotation,
-// density 1e308 an infinite kinetic energy: m v^2 must not overflow)
-static constexpr double MASS_MAX = 1e250;
-bool AtomVecPolyhedron::mass_is_normal(int i) const
-{
-  double m[3];
-  inertia(i, m);
-  bool ok = std::isnormal(rmass[i]) && rmass[i] > 0.0 && rmass[i] <= MASS_MAX;
-  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(m[k]) && m[k] > 0.0;
-  return ok;
-}
-
-/* ----------------------------------------------------------------------
-   create_atoms: first template, scale 1, density 1, identity orientation
-------------------------------------------------------------------------- */
 
 void AtomVecPolyhedron::create_atom_post(int ilocal)
 {
-  if (templates.empty())
-    error->one(FLERR, "atom_style polyhedron: define a shape with polyhedron_shape "
-               "before creating atoms");
-  const auto v = templates[0]->view();
-  pshape[ilocal] = 0;
-  pscale[ilocal] = 1.0;
-  rmass[ilocal] = v.volume;
-  radius[ilocal] = v.radius;
-  quat[ilocal][0] = 1.0;
-  quat[ilocal][1] = quat[ilocal][2] = quat[ilocal][3] = 0.0;
+  shapes.create_atom_post(ilocal);
 }
-
-/* ----------------------------------------------------------------------
-   read_data: shape index is 1-based (order of polyhedron_shape commands),
-   the mass column holds the density
-------------------------------------------------------------------------- */
 
 void AtomVecPolyhedron::data_atom_post(int ilocal)
 {
-  const int ishape = pshape[ilocal];
-  if (ishape < 1 || ishape > ntemplates())
-    error->one(FLERR, "Invalid shape index {} in Atoms section of data file: {} shape(s) "
-               "defined with polyhedron_shape", ishape, ntemplates());
-  pshape[ilocal] = ishape - 1;
-  const double s = pscale[ilocal];
-  if (!(s > 0.0) || !std::isfinite(s))
-    error->one(FLERR, "Invalid scale {} in Atoms section of data file", s);
-  const double rho = rmass[ilocal];
-  if (!(rho > 0.0) || !std::isfinite(rho))
-    error->one(FLERR, "Invalid density {} in Atoms section of data file", rho);
-  const auto v = templates[ishape - 1]->view();
-  rmass[ilocal] = rho * v.volume * s * s * s;
-  radius[ilocal] = v.radius * s;
-  if (!mass_is_normal(ilocal))
-    error->one(FLERR,
-               "Invalid density {} or scale {} in Atoms section of data file: the mass "
-               "{} must be in (0, 1e250] and the moments of inertia non-zero and finite",
-               rho, s, rmass[ilocal]);
-
-  double *q = quat[ilocal];
-  const double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
-  if (!(n > 0.0) || !std::isfinite(n))
-    error->one(FLERR, "Invalid quaternion in Atoms section of data file");
-  // accept slightly unnormalised input (e.g. printed with few digits)
-  if (fabs(n - 1.0) > 1.0e-12)
-    for (int k = 0; k < 4; k++) q[k] /= n;
-
-  angmom[ilocal][0] = angmom[ilocal][1] = angmom[ilocal][2] = 0.0;
-  omega[ilocal][0] = omega[ilocal][1] = omega[ilocal][2] = 0.0;
+  shapes.data_atom_post(ilocal);
 }
-
-/* ---------------------------------------------------------------------- */
 
 void AtomVecPolyhedron::data_vel(int ilocal, char **values)
 {
   AtomVec::data_vel(ilocal, values);
-  check_data_vel(error, atom->v[ilocal], angmom[ilocal]);
+  shapes.check_data_vel(ilocal);
 }
-
-void AtomVecPolyhedron::check_data_vel(Error *error, const double *v, const double *angmom)
-{
-  for (int k = 0; k < 3; k++)
-    if (!std::isfinite(v[k]) || !std::isfinite(angmom[k]))
-      error->one(FLERR,
-                 "Invalid velocity ({} {} {}) or angular momentum ({} {} {}) in "
-                 "Velocities section of data file: not finite",
-                 v[0], v[1], v[2], angmom[0], angmom[1], angmom[2]);
-}
-
-/* ---------------------------------------------------------------------- */
 
 void AtomVecPolyhedron::pack_data_pre(int ilocal)
 {
-  pshape_one = pshape[ilocal];
-  rmass_one = rmass[ilocal];
-  rmass[ilocal] = density(ilocal);
-  pshape[ilocal] = pshape_one + 1;
+  shapes.pack_data_pre(ilocal);
 }
 
 void AtomVecPolyhedron::pack_data_post(int ilocal)
 {
-  pshape[ilocal] = pshape_one;
-  rmass[ilocal] = rmass_one;
+  shapes.pack_data_post(ilocal);
 }
-
-/* ----------------------------------------------------------------------
-   compute property/atom names: shape scale density
-------------------------------------------------------------------------- */
 
 int AtomVecPolyhedron::property_atom(char *name)
 {
-  if (strcmp(name, "shape") == 0) return 0;
-  if (strcmp(name, "scale") == 0) return 1;
-  if (strcmp(name, "density") == 0) return 2;
-  if (strcmp(name, "quatw") == 0) return 3;
-  if (strcmp(name, "quati") == 0) return 4;
-  if (strcmp(name, "quatj") == 0) return 5;
-  if (strcmp(name, "quatk") == 0) return 6;
-  return -1;
+  return PolyShapeLibrary::property_atom(name);
 }
 
 void AtomVecPolyhedron::pack_property_atom(int index, double *buf, int nvalues, int groupbit)
 {
-  int *mask = atom->mask;
-  int nlocal = atom->nlocal;
-  int n = 0;
-  for (int i = 0; i < nlocal; i++) {
-    double value = 0.0;
-    if (mask[i] & groupbit) {
-      if (index == 0) value = pshape[i] + 1;
-      else if (index == 1) value = pscale[i];
-      else if (index == 2) value = density(i);
-      else value = quat[i][index - 3];
-    }
-    buf[n] = value;
-    n += nvalues;
-  }
+  shapes.pack_property_atom(index, buf, nvalues, groupbit);
 }

@@ -109,8 +109,8 @@ template <class DeviceType, int VEL> struct PolyPackComm {
     dvx = dv[0];
     dvy = dv[1];
     dvz = dv[2];
-    const int elements = VEL ? AtomVecPolyhedronKokkosBase::COMM_VEL_SIZE
-                             : AtomVecPolyhedronKokkosBase::COMM_SIZE;
+    const int elements = VEL ? AtomVecPolyhedronKokkos::COMM_VEL_SIZE
+                             : AtomVecPolyhedronKokkos::COMM_SIZE;
     const auto b = k_buf.view<DeviceType>();
     buf = typename AT::t_xfloat_2d_um(b.data(), (b.extent(0) * b.extent(1)) / elements, elements);
   }
@@ -160,8 +160,8 @@ template <class DeviceType, int VEL> struct PolyUnpackComm {
       omega = atomKK->k_omega.view<DeviceType>();
       angmom = atomKK->k_angmom.view<DeviceType>();
     }
-    const int elements = VEL ? AtomVecPolyhedronKokkosBase::COMM_VEL_SIZE
-                             : AtomVecPolyhedronKokkosBase::COMM_SIZE;
+    const int elements = VEL ? AtomVecPolyhedronKokkos::COMM_VEL_SIZE
+                             : AtomVecPolyhedronKokkos::COMM_SIZE;
     const auto b = k_buf.view<DeviceType>();
     buf = typename AT::t_xfloat_2d_const_um(b.data(), (b.extent(0) * b.extent(1)) / elements,
                                             elements);
@@ -290,7 +290,7 @@ template <class DeviceType, int VEL> struct PolyPackBorder {
   Shift s;
   X_FLOAT dvx, dvy, dvz;
 
-  PolyPackBorder(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
+  PolyPackBorder(AtomKokkos *atomKK, AtomVecPolyhedronKokkos *avec,
                  const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_2d &k_list, int iswap_,
                  int pbc_flag_, Shift s_, int deform_groupbit_, const X_FLOAT *dv, int stride) :
       list(k_list.view<DeviceType>()),
@@ -356,7 +356,7 @@ template <class DeviceType, int VEL> struct PolyUnpackBorder {
   t_quat<DeviceType> quat;
   int first;
 
-  PolyUnpackBorder(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
+  PolyUnpackBorder(AtomKokkos *atomKK, AtomVecPolyhedronKokkos *avec,
                    const DAT::tdual_xfloat_2d &k_buf, int first_, int stride) :
       x(atomKK->k_x.view<DeviceType>()),
       tag(atomKK->k_tag.view<DeviceType>()), type(atomKK->k_type.view<DeviceType>()),
@@ -411,7 +411,7 @@ template <class DeviceType> struct PolyExchangeViews {
   typename AT::t_float_1d radius, rmass, pscale;
   t_quat<DeviceType> quat;
 
-  PolyExchangeViews(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec) :
+  PolyExchangeViews(AtomKokkos *atomKK, AtomVecPolyhedronKokkos *avec) :
       x(atomKK->k_x.view<DeviceType>()), v(atomKK->k_v.view<DeviceType>()),
       omega(atomKK->k_omega.view<DeviceType>()), angmom(atomKK->k_angmom.view<DeviceType>()),
       tag(atomKK->k_tag.view<DeviceType>()), type(atomKK->k_type.view<DeviceType>()),
@@ -449,13 +449,13 @@ template <class DeviceType> struct PolyPackExchange {
   typename AT::t_xfloat_2d_um buf;
   typename AT::t_int_1d_const sendlist, copylist;
 
-  PolyPackExchange(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
+  PolyPackExchange(AtomKokkos *atomKK, AtomVecPolyhedronKokkos *avec,
                    const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_1d &k_sendlist,
                    const DAT::tdual_int_1d &k_copylist) :
       a(atomKK, avec),
       sendlist(k_sendlist.view<DeviceType>()), copylist(k_copylist.view<DeviceType>())
   {
-    const int elements = AtomVecPolyhedronKokkosBase::EXCHANGE_SIZE;
+    const int elements = AtomVecPolyhedronKokkos::EXCHANGE_SIZE;
     const auto b = k_buf.view<DeviceType>();
     buf = typename AT::t_xfloat_2d_um(b.data(), (b.extent(0) * b.extent(1)) / elements, elements);
   }
@@ -464,7 +464,7 @@ template <class DeviceType> struct PolyPackExchange {
   {
     const int i = sendlist(mysend);
     int m = 0;
-    buf(mysend, m++) = AtomVecPolyhedronKokkosBase::EXCHANGE_SIZE;
+    buf(mysend, m++) = AtomVecPolyhedronKokkos::EXCHANGE_SIZE;
     for (int k = 0; k < 3; k++) buf(mysend, m++) = a.x(i, k);
     for (int k = 0; k < 3; k++) buf(mysend, m++) = a.v(i, k);
     buf(mysend, m++) = d_ubuf(a.tag(i)).d;
@@ -492,13 +492,13 @@ template <class DeviceType> struct PolyUnpackExchange {
   int dim;
   X_FLOAT lo, hi;
 
-  PolyUnpackExchange(AtomKokkos *atomKK, AtomVecPolyhedronKokkosBase *avec,
-                     const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_1d &k_nlocal,
-                     int dim_, X_FLOAT lo_, X_FLOAT hi_) :
+  PolyUnpackExchange(AtomKokkos *atomKK, AtomVecPolyhedronKokkos *avec,
+                     const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_1d &k_nlocal, int dim_,
+                     X_FLOAT lo_, X_FLOAT hi_) :
       a(atomKK, avec),
       nlocal(k_nlocal.view<DeviceType>()), dim(dim_), lo(lo_), hi(hi_)
   {
-    const int elements = AtomVecPolyhedronKokkosBase::EXCHANGE_SIZE;
+    const int elements = AtomVecPolyhedronKokkos::EXCHANGE_SIZE;
     const auto b = k_buf.view<DeviceType>();
     buf = typename AT::t_xfloat_2d_um(b.data(), (b.extent(0) * b.extent(1)) / elements, elements);
   }
@@ -528,18 +528,31 @@ template <class DeviceType> struct PolyUnpackExchange {
 }    // namespace
 
 /* ======================================================================
-   AtomVecPolyhedronKokkosBase
+   AtomVecPolyhedronKokkos
 ====================================================================== */
 
-AtomVecPolyhedronKokkosBase::AtomVecPolyhedronKokkosBase(LAMMPS *lmp) : AtomVecKokkos(lmp)
+AtomVecPolyhedronKokkos::AtomVecPolyhedronKokkos(LAMMPS *lmp) :
+    AtomVecKokkos(lmp), shapes(lmp, this)
 {
   // e.g. a restart file written with -sf kk read without -k on
   if (!lmp->kokkos)
     error->all(FLERR, "atom_style polyhedron/kk requires Kokkos to be enabled (-k on); "
                       "use atom_style polyhedron without it");
-  mass_type = PER_ATOM;
-  molecular = Atom::ATOMIC;
-  forceclearflag = 0;
+  shapes.setup_style();
+
+  // the device kernels above move exactly these fields (the host paths
+  // follow the lists whatever they are): a change must reach the kernels
+  const char *expected[][2] = {{fields_comm, "quat"},
+                               {fields_comm_vel, "quat omega angmom"},
+                               {fields_border, "radius rmass quat pshape pscale"},
+                               {fields_border_vel, "radius rmass quat pshape pscale omega angmom"},
+                               {fields_exchange, "radius rmass omega angmom quat pshape pscale"}};
+  for (auto &e : expected)
+    if (!e[0] || strcmp(e[0], e[1]) != 0)
+      error->all(FLERR,
+                 "atom_style polyhedron/kk: atom_style polyhedron now communicates '{}' "
+                 "instead of '{}'; update the Kokkos kernels",
+                 e[0] ? e[0] : "", e[1]);
 
   commKK = (CommKokkos *) comm;
   k_count = DAT::tdual_int_1d("polyhedron:count", 1);
@@ -557,7 +570,7 @@ AtomVecPolyhedronKokkosBase::AtomVecPolyhedronKokkosBase(LAMMPS *lmp) : AtomVecK
    ours: release the DualViews and the row pointers of quat.
 ------------------------------------------------------------------------- */
 
-AtomVecPolyhedronKokkosBase::~AtomVecPolyhedronKokkosBase()
+AtomVecPolyhedronKokkos::~AtomVecPolyhedronKokkos()
 {
   memoryKK->destroy_kokkos(k_quat, atom->quat);
   memoryKK->destroy_kokkos(k_pshape, atom->pshape);
@@ -567,25 +580,15 @@ AtomVecPolyhedronKokkosBase::~AtomVecPolyhedronKokkosBase()
 
 /* ---------------------------------------------------------------------- */
 
-void AtomVecPolyhedronKokkosBase::set_fields(const AtomVec &plain)
+void AtomVecPolyhedronKokkos::process_args(int narg, char **arg)
 {
-  fields_grow = plain.fields_grow;
-  fields_copy = plain.fields_copy;
-  fields_comm = plain.fields_comm;
-  fields_comm_vel = plain.fields_comm_vel;
-  fields_reverse = plain.fields_reverse;
-  fields_border = plain.fields_border;
-  fields_border_vel = plain.fields_border_vel;
-  fields_exchange = plain.fields_exchange;
-  fields_restart = plain.fields_restart;
-  fields_create = plain.fields_create;
-  fields_data_atom = plain.fields_data_atom;
-  fields_data_vel = plain.fields_data_vel;
+  shapes.process_args(narg, arg);
+  setup_fields();
 }
 
 /* ---------------------------------------------------------------------- */
 
-void AtomVecPolyhedronKokkosBase::init()
+void AtomVecPolyhedronKokkos::init()
 {
   AtomVecKokkos::init();
 
@@ -596,13 +599,14 @@ void AtomVecPolyhedronKokkosBase::init()
                "atom_style polyhedron/kk: the communicated fields of atom_style polyhedron "
                "changed (forward {} velocity {} border {}); update the Kokkos kernels",
                size_forward, size_velocity, size_border);
+  shapes.init();
 }
 
 /* ----------------------------------------------------------------------
    grow atom arrays; n = 0 grows by a chunk, n > 0 allocates n
 ------------------------------------------------------------------------- */
 
-void AtomVecPolyhedronKokkosBase::grow(int n)
+void AtomVecPolyhedronKokkos::grow(int n)
 {
   const int step = MAX(LMP_KOKKOS_AV_DELTA, nmax * 0.01);
   if (n == 0) nmax += step;
@@ -641,7 +645,7 @@ void AtomVecPolyhedronKokkosBase::grow(int n)
    pointers of LAMMPS's generic AtomVec code (host data)
 ------------------------------------------------------------------------- */
 
-void AtomVecPolyhedronKokkosBase::grow_pointers()
+void AtomVecPolyhedronKokkos::grow_pointers()
 {
   tag = atomKK->tag;
   type = atomKK->type;
@@ -657,12 +661,12 @@ void AtomVecPolyhedronKokkosBase::grow_pointers()
 
 /* ---------------------------------------------------------------------- */
 
-void AtomVecPolyhedronKokkosBase::sync_host_all()
+void AtomVecPolyhedronKokkos::sync_host_all()
 {
   atomKK->sync(Host, STYLE_MASK);
 }
 
-void AtomVecPolyhedronKokkosBase::modified_host_all()
+void AtomVecPolyhedronKokkos::modified_host_all()
 {
   atomKK->modified(Host, STYLE_MASK);
 }
@@ -671,87 +675,85 @@ void AtomVecPolyhedronKokkosBase::modified_host_all()
    host paths: the generic AtomVec code, on current host data
 ------------------------------------------------------------------------- */
 
-void AtomVecPolyhedronKokkosBase::copy(int i, int j, int delflag)
+void AtomVecPolyhedronKokkos::copy(int i, int j, int delflag)
 {
   atomKK->sync(Host, EXCHANGE_MASK);
   AtomVec::copy(i, j, delflag);
   atomKK->modified(Host, EXCHANGE_MASK);
 }
 
-int AtomVecPolyhedronKokkosBase::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
+int AtomVecPolyhedronKokkos::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
   atomKK->sync(Host, COMM_MASK);
   return AtomVec::pack_comm(n, list, buf, pbc_flag, pbc);
 }
 
-int AtomVecPolyhedronKokkosBase::pack_comm_vel(int n, int *list, double *buf, int pbc_flag,
-                                               int *pbc)
+int AtomVecPolyhedronKokkos::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
   atomKK->sync(Host, COMM_VEL_MASK);
   return AtomVec::pack_comm_vel(n, list, buf, pbc_flag, pbc);
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_comm(int n, int first, double *buf)
+void AtomVecPolyhedronKokkos::unpack_comm(int n, int first, double *buf)
 {
   atomKK->sync(Host, COMM_MASK);
   AtomVec::unpack_comm(n, first, buf);
   atomKK->modified(Host, COMM_MASK);
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_comm_vel(int n, int first, double *buf)
+void AtomVecPolyhedronKokkos::unpack_comm_vel(int n, int first, double *buf)
 {
   atomKK->sync(Host, COMM_VEL_MASK);
   AtomVec::unpack_comm_vel(n, first, buf);
   atomKK->modified(Host, COMM_VEL_MASK);
 }
 
-int AtomVecPolyhedronKokkosBase::pack_reverse(int n, int first, double *buf)
+int AtomVecPolyhedronKokkos::pack_reverse(int n, int first, double *buf)
 {
   atomKK->sync(Host, REVERSE_MASK);
   return AtomVec::pack_reverse(n, first, buf);
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_reverse(int n, int *list, double *buf)
+void AtomVecPolyhedronKokkos::unpack_reverse(int n, int *list, double *buf)
 {
   atomKK->sync(Host, REVERSE_MASK);
   AtomVec::unpack_reverse(n, list, buf);
   atomKK->modified(Host, REVERSE_MASK);
 }
 
-int AtomVecPolyhedronKokkosBase::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc)
+int AtomVecPolyhedronKokkos::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
   atomKK->sync(Host, BORDER_MASK);
   return AtomVec::pack_border(n, list, buf, pbc_flag, pbc);
 }
 
-int AtomVecPolyhedronKokkosBase::pack_border_vel(int n, int *list, double *buf, int pbc_flag,
-                                                 int *pbc)
+int AtomVecPolyhedronKokkos::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
   atomKK->sync(Host, BORDER_VEL_MASK);
   return AtomVec::pack_border_vel(n, list, buf, pbc_flag, pbc);
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_border(int n, int first, double *buf)
+void AtomVecPolyhedronKokkos::unpack_border(int n, int first, double *buf)
 {
   atomKK->sync(Host, BORDER_MASK);
   AtomVec::unpack_border(n, first, buf);
   atomKK->modified(Host, BORDER_MASK);
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_border_vel(int n, int first, double *buf)
+void AtomVecPolyhedronKokkos::unpack_border_vel(int n, int first, double *buf)
 {
   atomKK->sync(Host, BORDER_VEL_MASK);
   AtomVec::unpack_border_vel(n, first, buf);
   atomKK->modified(Host, BORDER_VEL_MASK);
 }
 
-int AtomVecPolyhedronKokkosBase::pack_exchange(int i, double *buf)
+int AtomVecPolyhedronKokkos::pack_exchange(int i, double *buf)
 {
   atomKK->sync(Host, EXCHANGE_MASK);
   return AtomVec::pack_exchange(i, buf);
 }
 
-int AtomVecPolyhedronKokkosBase::unpack_exchange(double *buf)
+int AtomVecPolyhedronKokkos::unpack_exchange(double *buf)
 {
   atomKK->sync(Host, EXCHANGE_MASK);
   const int m = AtomVec::unpack_exchange(buf);
@@ -759,18 +761,18 @@ int AtomVecPolyhedronKokkosBase::unpack_exchange(double *buf)
   return m;
 }
 
-int AtomVecPolyhedronKokkosBase::size_restart()
+int AtomVecPolyhedronKokkos::size_restart()
 {
   return AtomVec::size_restart();
 }
 
-int AtomVecPolyhedronKokkosBase::pack_restart(int i, double *buf)
+int AtomVecPolyhedronKokkos::pack_restart(int i, double *buf)
 {
   atomKK->sync(Host, EXCHANGE_MASK);
   return AtomVec::pack_restart(i, buf);
 }
 
-int AtomVecPolyhedronKokkosBase::unpack_restart(double *buf)
+int AtomVecPolyhedronKokkos::unpack_restart(double *buf)
 {
   atomKK->sync(Host, EXCHANGE_MASK);
   const int m = AtomVec::unpack_restart(buf);
@@ -778,63 +780,99 @@ int AtomVecPolyhedronKokkosBase::unpack_restart(double *buf)
   return m;
 }
 
-void AtomVecPolyhedronKokkosBase::create_atom(int itype, double *coord)
+void AtomVecPolyhedronKokkos::create_atom(int itype, double *coord)
 {
   sync_host_all();
   AtomVec::create_atom(itype, coord);
   modified_host_all();
 }
 
-void AtomVecPolyhedronKokkosBase::data_atom(double *coord, imageint imagetmp, char **values)
+void AtomVecPolyhedronKokkos::data_atom(double *coord, imageint imagetmp, char **values)
 {
   sync_host_all();
   AtomVec::data_atom(coord, imagetmp, values);
   modified_host_all();
 }
 
-void AtomVecPolyhedronKokkosBase::pack_data(double **buf)
+void AtomVecPolyhedronKokkos::pack_data(double **buf)
 {
   sync_host_all();
   AtomVec::pack_data(buf);
 }
 
-void AtomVecPolyhedronKokkosBase::write_data(FILE *fp, int n, double **buf)
+void AtomVecPolyhedronKokkos::write_data(FILE *fp, int n, double **buf)
 {
   AtomVec::write_data(fp, n, buf);
 }
 
-void AtomVecPolyhedronKokkosBase::data_vel(int ilocal, char **values)
+void AtomVecPolyhedronKokkos::data_vel(int ilocal, char **values)
 {
   sync_host_all();
   AtomVec::data_vel(ilocal, values);
-  AtomVecPolyhedron::check_data_vel(error, atom->v[ilocal], atom->angmom[ilocal]);
+  shapes.check_data_vel(ilocal);
   modified_host_all();
 }
 
-void AtomVecPolyhedronKokkosBase::pack_vel(double **buf)
+void AtomVecPolyhedronKokkos::pack_vel(double **buf)
 {
   sync_host_all();
   AtomVec::pack_vel(buf);
 }
 
-void AtomVecPolyhedronKokkosBase::write_vel(FILE *fp, int n, double **buf)
+void AtomVecPolyhedronKokkos::write_vel(FILE *fp, int n, double **buf)
 {
   AtomVec::write_vel(fp, n, buf);
 }
 
-double AtomVecPolyhedronKokkosBase::memory_usage()
+double AtomVecPolyhedronKokkos::memory_usage()
 {
   return AtomVec::memory_usage();
+}
+
+/* ----------------------------------------------------------------------
+   per-atom semantics of the plain style: called from the generic code
+   above (inside its sync/modified brackets) or, for the property hooks,
+   by compute property/atom on the host
+------------------------------------------------------------------------- */
+
+void AtomVecPolyhedronKokkos::create_atom_post(int ilocal)
+{
+  shapes.create_atom_post(ilocal);
+}
+
+void AtomVecPolyhedronKokkos::data_atom_post(int ilocal)
+{
+  shapes.data_atom_post(ilocal);
+}
+
+void AtomVecPolyhedronKokkos::pack_data_pre(int ilocal)
+{
+  shapes.pack_data_pre(ilocal);
+}
+
+void AtomVecPolyhedronKokkos::pack_data_post(int ilocal)
+{
+  shapes.pack_data_post(ilocal);
+}
+
+int AtomVecPolyhedronKokkos::property_atom(char *name)
+{
+  return PolyShapeLibrary::property_atom(name);
+}
+
+void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nvalues, int groupbit)
+{
+  sync_host_all();
+  shapes.pack_property_atom(index, buf, nvalues, groupbit);
 }
 
 /* ======================================================================
    device paths
 ====================================================================== */
 
-int AtomVecPolyhedronKokkosBase::pack_comm_kokkos(const int &n, const DAT::tdual_int_2d &list,
-                                                  const int &iswap,
-                                                  const DAT::tdual_xfloat_2d &buf,
-                                                  const int &pbc_flag, const int pbc[])
+int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const DAT::tdual_int_2d &list,
+                                              const int &iswap, const DAT::tdual_xfloat_2d &buf,
+                                              const int &pbc_flag, const int pbc[])
 {
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -850,8 +888,8 @@ int AtomVecPolyhedronKokkosBase::pack_comm_kokkos(const int &n, const DAT::tdual
   return n * COMM_SIZE;
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_comm_kokkos(const int &n, const int &first,
-                                                     const DAT::tdual_xfloat_2d &buf)
+void AtomVecPolyhedronKokkos::unpack_comm_kokkos(const int &n, const int &first,
+                                                 const DAT::tdual_xfloat_2d &buf)
 {
   if (commKK->forward_comm_on_host) {
     atomKK->sync(Host, COMM_MASK);
@@ -866,11 +904,9 @@ void AtomVecPolyhedronKokkosBase::unpack_comm_kokkos(const int &n, const int &fi
   }
 }
 
-int AtomVecPolyhedronKokkosBase::pack_comm_vel_kokkos(const int &n,
-                                                      const DAT::tdual_int_2d &list,
-                                                      const int &iswap,
-                                                      const DAT::tdual_xfloat_2d &buf,
-                                                      const int &pbc_flag, const int pbc[])
+int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const DAT::tdual_int_2d &list,
+                                                  const int &iswap, const DAT::tdual_xfloat_2d &buf,
+                                                  const int &pbc_flag, const int pbc[])
 {
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -893,8 +929,8 @@ int AtomVecPolyhedronKokkosBase::pack_comm_vel_kokkos(const int &n,
   return n * COMM_VEL_SIZE;
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_comm_vel_kokkos(const int &n, const int &first,
-                                                         const DAT::tdual_xfloat_2d &buf)
+void AtomVecPolyhedronKokkos::unpack_comm_vel_kokkos(const int &n, const int &first,
+                                                     const DAT::tdual_xfloat_2d &buf)
 {
   if (commKK->forward_comm_on_host) {
     atomKK->sync(Host, COMM_VEL_MASK);
@@ -909,9 +945,9 @@ void AtomVecPolyhedronKokkosBase::unpack_comm_vel_kokkos(const int &n, const int
   }
 }
 
-int AtomVecPolyhedronKokkosBase::pack_comm_self(const int &n, const DAT::tdual_int_2d &list,
-                                                const int &iswap, const int nfirst,
-                                                const int &pbc_flag, const int pbc[])
+int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const DAT::tdual_int_2d &list,
+                                            const int &iswap, const int nfirst, const int &pbc_flag,
+                                            const int pbc[])
 {
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   if (commKK->forward_comm_on_host) {
@@ -928,10 +964,12 @@ int AtomVecPolyhedronKokkosBase::pack_comm_self(const int &n, const DAT::tdual_i
   return n * COMM_SIZE;
 }
 
-int AtomVecPolyhedronKokkosBase::pack_comm_self_fused(
-    const int &n, const DAT::tdual_int_2d &list, const DAT::tdual_int_1d &sendnum_scan,
-    const DAT::tdual_int_1d &firstrecv, const DAT::tdual_int_1d &pbc_flag,
-    const DAT::tdual_int_2d &pbc, const DAT::tdual_int_1d &g2l)
+int AtomVecPolyhedronKokkos::pack_comm_self_fused(const int &n, const DAT::tdual_int_2d &list,
+                                                  const DAT::tdual_int_1d &sendnum_scan,
+                                                  const DAT::tdual_int_1d &firstrecv,
+                                                  const DAT::tdual_int_1d &pbc_flag,
+                                                  const DAT::tdual_int_2d &pbc,
+                                                  const DAT::tdual_int_1d &g2l)
 {
   if (commKK->forward_comm_on_host) {
     atomKK->sync(Host, COMM_MASK);
@@ -951,9 +989,9 @@ int AtomVecPolyhedronKokkosBase::pack_comm_self_fused(
 
 /* ---------------------------------------------------------------------- */
 
-int AtomVecPolyhedronKokkosBase::pack_border_kokkos(int n, DAT::tdual_int_2d k_sendlist,
-                                                    DAT::tdual_xfloat_2d buf, int iswap,
-                                                    int pbc_flag, int *pbc, ExecutionSpace space)
+int AtomVecPolyhedronKokkos::pack_border_kokkos(int n, DAT::tdual_int_2d k_sendlist,
+                                                DAT::tdual_xfloat_2d buf, int iswap, int pbc_flag,
+                                                int *pbc, ExecutionSpace space)
 {
   const Shift s = border_shift(domain, pbc_flag, pbc);
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -972,9 +1010,9 @@ int AtomVecPolyhedronKokkosBase::pack_border_kokkos(int n, DAT::tdual_int_2d k_s
   return n * size_border;
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_border_kokkos(const int &n, const int &first,
-                                                       const DAT::tdual_xfloat_2d &buf,
-                                                       ExecutionSpace space)
+void AtomVecPolyhedronKokkos::unpack_border_kokkos(const int &n, const int &first,
+                                                   const DAT::tdual_xfloat_2d &buf,
+                                                   ExecutionSpace space)
 {
   while (first + n >= nmax) grow(0);
   atomKK->sync(space, BORDER_MASK);
@@ -989,10 +1027,9 @@ void AtomVecPolyhedronKokkosBase::unpack_border_kokkos(const int &n, const int &
 }
 
 // CommKokkos sizes a ghost-velocity border record as size_border + size_velocity
-int AtomVecPolyhedronKokkosBase::pack_border_vel_kokkos(int n, DAT::tdual_int_2d k_sendlist,
-                                                        DAT::tdual_xfloat_2d buf, int iswap,
-                                                        int pbc_flag, int *pbc,
-                                                        ExecutionSpace space)
+int AtomVecPolyhedronKokkos::pack_border_vel_kokkos(int n, DAT::tdual_int_2d k_sendlist,
+                                                    DAT::tdual_xfloat_2d buf, int iswap,
+                                                    int pbc_flag, int *pbc, ExecutionSpace space)
 {
   const Shift s = border_shift(domain, pbc_flag, pbc);
   X_FLOAT dv[3] = {0.0, 0.0, 0.0};
@@ -1016,9 +1053,9 @@ int AtomVecPolyhedronKokkosBase::pack_border_vel_kokkos(int n, DAT::tdual_int_2d
   return n * stride;
 }
 
-void AtomVecPolyhedronKokkosBase::unpack_border_vel_kokkos(const int &n, const int &first,
-                                                           const DAT::tdual_xfloat_2d &buf,
-                                                           ExecutionSpace space)
+void AtomVecPolyhedronKokkos::unpack_border_vel_kokkos(const int &n, const int &first,
+                                                       const DAT::tdual_xfloat_2d &buf,
+                                                       ExecutionSpace space)
 {
   while (first + n >= nmax) grow(0);
   const int stride = size_border + size_velocity;
@@ -1035,12 +1072,11 @@ void AtomVecPolyhedronKokkosBase::unpack_border_vel_kokkos(const int &n, const i
 
 /* ---------------------------------------------------------------------- */
 
-int AtomVecPolyhedronKokkosBase::pack_exchange_kokkos(const int &nsend,
-                                                      DAT::tdual_xfloat_2d &k_buf,
-                                                      DAT::tdual_int_1d k_sendlist,
-                                                      DAT::tdual_int_1d k_copylist,
-                                                      ExecutionSpace space, int /*dim*/,
-                                                      X_FLOAT /*lo*/, X_FLOAT /*hi*/)
+int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend, DAT::tdual_xfloat_2d &k_buf,
+                                                  DAT::tdual_int_1d k_sendlist,
+                                                  DAT::tdual_int_1d k_copylist,
+                                                  ExecutionSpace space, int /*dim*/, X_FLOAT /*lo*/,
+                                                  X_FLOAT /*hi*/)
 {
   const int width = k_buf.view<LMPHostType>().extent(1);
   if (nsend > (int) (k_buf.view<LMPHostType>().extent(0) * width) / EXCHANGE_SIZE) {
@@ -1059,9 +1095,9 @@ int AtomVecPolyhedronKokkosBase::pack_exchange_kokkos(const int &nsend,
   return nsend * EXCHANGE_SIZE;
 }
 
-int AtomVecPolyhedronKokkosBase::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf, int nrecv,
-                                                        int nlocal, int dim, X_FLOAT lo,
-                                                        X_FLOAT hi, ExecutionSpace space)
+int AtomVecPolyhedronKokkos::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf, int nrecv,
+                                                    int nlocal, int dim, X_FLOAT lo, X_FLOAT hi,
+                                                    ExecutionSpace space)
 {
   // room for every incoming atom (CommKokkos does not grow before unpacking)
   const int nincoming = nrecv / EXCHANGE_SIZE;
@@ -1086,369 +1122,57 @@ int AtomVecPolyhedronKokkosBase::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_
 }
 
 /* ======================================================================
-   sync / modified
+   sync / modified: the DualViews of the fields in mask, one order for all
 ====================================================================== */
 
-void AtomVecPolyhedronKokkosBase::sync(ExecutionSpace space, unsigned int mask)
+template <class F> void AtomVecPolyhedronKokkos::for_each_dual(unsigned int mask, F f)
 {
-  if (space == Device) {
-    if (mask & X_MASK) atomKK->k_x.sync<LMPDeviceType>();
-    if (mask & V_MASK) atomKK->k_v.sync<LMPDeviceType>();
-    if (mask & F_MASK) atomKK->k_f.sync<LMPDeviceType>();
-    if (mask & TAG_MASK) atomKK->k_tag.sync<LMPDeviceType>();
-    if (mask & TYPE_MASK) atomKK->k_type.sync<LMPDeviceType>();
-    if (mask & MASK_MASK) atomKK->k_mask.sync<LMPDeviceType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.sync<LMPDeviceType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.sync<LMPDeviceType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.sync<LMPDeviceType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.sync<LMPDeviceType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.sync<LMPDeviceType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.sync<LMPDeviceType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.sync<LMPDeviceType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.sync<LMPDeviceType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.sync<LMPDeviceType>();
-  } else {
-    if (mask & X_MASK) atomKK->k_x.sync<LMPHostType>();
-    if (mask & V_MASK) atomKK->k_v.sync<LMPHostType>();
-    if (mask & F_MASK) atomKK->k_f.sync<LMPHostType>();
-    if (mask & TAG_MASK) atomKK->k_tag.sync<LMPHostType>();
-    if (mask & TYPE_MASK) atomKK->k_type.sync<LMPHostType>();
-    if (mask & MASK_MASK) atomKK->k_mask.sync<LMPHostType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.sync<LMPHostType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.sync<LMPHostType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.sync<LMPHostType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.sync<LMPHostType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.sync<LMPHostType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.sync<LMPHostType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.sync<LMPHostType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.sync<LMPHostType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.sync<LMPHostType>();
-  }
+  if (mask & X_MASK) f(atomKK->k_x);
+  if (mask & V_MASK) f(atomKK->k_v);
+  if (mask & F_MASK) f(atomKK->k_f);
+  if (mask & TAG_MASK) f(atomKK->k_tag);
+  if (mask & TYPE_MASK) f(atomKK->k_type);
+  if (mask & MASK_MASK) f(atomKK->k_mask);
+  if (mask & IMAGE_MASK) f(atomKK->k_image);
+  if (mask & RADIUS_MASK) f(atomKK->k_radius);
+  if (mask & RMASS_MASK) f(atomKK->k_rmass);
+  if (mask & OMEGA_MASK) f(atomKK->k_omega);
+  if (mask & ANGMOM_MASK) f(atomKK->k_angmom);
+  if (mask & TORQUE_MASK) f(atomKK->k_torque);
+  if (mask & POLYDEM_QUAT_MASK) f(k_quat);
+  if (mask & POLYDEM_PSHAPE_MASK) f(k_pshape);
+  if (mask & POLYDEM_PSCALE_MASK) f(k_pscale);
 }
 
-void AtomVecPolyhedronKokkosBase::modified(ExecutionSpace space, unsigned int mask)
+void AtomVecPolyhedronKokkos::sync(ExecutionSpace space, unsigned int mask)
 {
-  if (space == Device) {
-    if (mask & X_MASK) atomKK->k_x.modify<LMPDeviceType>();
-    if (mask & V_MASK) atomKK->k_v.modify<LMPDeviceType>();
-    if (mask & F_MASK) atomKK->k_f.modify<LMPDeviceType>();
-    if (mask & TAG_MASK) atomKK->k_tag.modify<LMPDeviceType>();
-    if (mask & TYPE_MASK) atomKK->k_type.modify<LMPDeviceType>();
-    if (mask & MASK_MASK) atomKK->k_mask.modify<LMPDeviceType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.modify<LMPDeviceType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.modify<LMPDeviceType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.modify<LMPDeviceType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.modify<LMPDeviceType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.modify<LMPDeviceType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.modify<LMPDeviceType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.modify<LMPDeviceType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.modify<LMPDeviceType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.modify<LMPDeviceType>();
-  } else {
-    if (mask & X_MASK) atomKK->k_x.modify<LMPHostType>();
-    if (mask & V_MASK) atomKK->k_v.modify<LMPHostType>();
-    if (mask & F_MASK) atomKK->k_f.modify<LMPHostType>();
-    if (mask & TAG_MASK) atomKK->k_tag.modify<LMPHostType>();
-    if (mask & TYPE_MASK) atomKK->k_type.modify<LMPHostType>();
-    if (mask & MASK_MASK) atomKK->k_mask.modify<LMPHostType>();
-    if (mask & IMAGE_MASK) atomKK->k_image.modify<LMPHostType>();
-    if (mask & RADIUS_MASK) atomKK->k_radius.modify<LMPHostType>();
-    if (mask & RMASS_MASK) atomKK->k_rmass.modify<LMPHostType>();
-    if (mask & OMEGA_MASK) atomKK->k_omega.modify<LMPHostType>();
-    if (mask & ANGMOM_MASK) atomKK->k_angmom.modify<LMPHostType>();
-    if (mask & TORQUE_MASK) atomKK->k_torque.modify<LMPHostType>();
-    if (mask & POLYDEM_QUAT_MASK) k_quat.modify<LMPHostType>();
-    if (mask & POLYDEM_PSHAPE_MASK) k_pshape.modify<LMPHostType>();
-    if (mask & POLYDEM_PSCALE_MASK) k_pscale.modify<LMPHostType>();
-  }
+  if (space == Device)
+    for_each_dual(mask, [](auto &k) {
+      k.template sync<LMPDeviceType>();
+    });
+  else
+    for_each_dual(mask, [](auto &k) {
+      k.template sync<LMPHostType>();
+    });
 }
 
-namespace {
-template <class DualViewType, class Callback>
-void overlap_one(DualViewType &k, ExecutionSpace space, Callback copy)
+void AtomVecPolyhedronKokkos::modified(ExecutionSpace space, unsigned int mask)
 {
-  if (space == Device) {
-    if (k.template need_sync<LMPDeviceType>()) copy(k);
-  } else {
-    if (k.template need_sync<LMPHostType>()) copy(k);
-  }
-}
-}    // namespace
-
-void AtomVecPolyhedronKokkosBase::sync_overlapping_device(ExecutionSpace space, unsigned int mask)
-{
-  auto copy = [&](auto &k) { perform_async_copy(k, space); };
-  if (mask & X_MASK) overlap_one(atomKK->k_x, space, copy);
-  if (mask & V_MASK) overlap_one(atomKK->k_v, space, copy);
-  if (mask & F_MASK) overlap_one(atomKK->k_f, space, copy);
-  if (mask & TAG_MASK) overlap_one(atomKK->k_tag, space, copy);
-  if (mask & TYPE_MASK) overlap_one(atomKK->k_type, space, copy);
-  if (mask & MASK_MASK) overlap_one(atomKK->k_mask, space, copy);
-  if (mask & IMAGE_MASK) overlap_one(atomKK->k_image, space, copy);
-  if (mask & RADIUS_MASK) overlap_one(atomKK->k_radius, space, copy);
-  if (mask & RMASS_MASK) overlap_one(atomKK->k_rmass, space, copy);
-  if (mask & OMEGA_MASK) overlap_one(atomKK->k_omega, space, copy);
-  if (mask & ANGMOM_MASK) overlap_one(atomKK->k_angmom, space, copy);
-  if (mask & TORQUE_MASK) overlap_one(atomKK->k_torque, space, copy);
-  if (mask & POLYDEM_QUAT_MASK) overlap_one(k_quat, space, copy);
-  if (mask & POLYDEM_PSHAPE_MASK) overlap_one(k_pshape, space, copy);
-  if (mask & POLYDEM_PSCALE_MASK) overlap_one(k_pscale, space, copy);
+  if (space == Device)
+    for_each_dual(mask, [](auto &k) {
+      k.template modify<LMPDeviceType>();
+    });
+  else
+    for_each_dual(mask, [](auto &k) {
+      k.template modify<LMPHostType>();
+    });
 }
 
-/* ======================================================================
-   AtomVecPolyhedronKokkos
-====================================================================== */
-
-namespace LAMMPS_NS {
-template <> AtomVec *Atom::avec_creator<AtomVecPolyhedronKokkos>(LAMMPS *lmp)
+void AtomVecPolyhedronKokkos::sync_overlapping_device(ExecutionSpace space, unsigned int mask)
 {
-  return static_cast<AtomVecPolyhedronKokkosBase *>(new AtomVecPolyhedronKokkos(lmp));
-}
-}    // namespace LAMMPS_NS
-
-AtomVecPolyhedronKokkos::AtomVecPolyhedronKokkos(LAMMPS *lmp) :
-    AtomVecPolyhedronKokkosBase(lmp), AtomVecPolyhedron(lmp), args_version(-1)
-{
-  const AtomVec &plain = static_cast<AtomVecPolyhedron &>(*this);
-
-  // the device kernels above move exactly these fields (the host paths
-  // follow the lists whatever they are): a change must reach the kernels
-  const char *expected[][2] = {
-      {plain.fields_comm, "quat"},
-      {plain.fields_comm_vel, "quat omega angmom"},
-      {plain.fields_border, "radius rmass quat pshape pscale"},
-      {plain.fields_border_vel, "radius rmass quat pshape pscale omega angmom"},
-      {plain.fields_exchange, "radius rmass omega angmom quat pshape pscale"}};
-  for (auto &e : expected)
-    if (!e[0] || strcmp(e[0], e[1]) != 0)
-      AtomVecPolyhedronKokkosBase::error->all(
-          FLERR, "atom_style polyhedron/kk: atom_style polyhedron now communicates '{}' "
-                 "instead of '{}'; update the Kokkos kernels",
-          e[0] ? e[0] : "", e[1]);
-  set_fields(plain);
-  AtomVecPolyhedronKokkosBase::mass_type = plain.mass_type;
-  AtomVecPolyhedronKokkosBase::molecular = plain.molecular;
-  AtomVecPolyhedronKokkosBase::forceclearflag = plain.forceclearflag;
-}
-
-AtomVecPolyhedronKokkos::~AtomVecPolyhedronKokkos()
-{
-  // the plain sub-object's field lists point at the same Atom pointers
-  AtomVecPolyhedron::ngrow = 0;
-}
-
-/* ----------------------------------------------------------------------
-   the plain part parses the shape records and keeps its own copy of the
-   arguments (add_shape appends to it); the Kokkos part sets up LAMMPS's
-   generic field machinery with the same lists
-------------------------------------------------------------------------- */
-
-void AtomVecPolyhedronKokkos::process_args(int narg, char **arg)
-{
-  AtomVecPolyhedron::store_args(narg, arg);
-  AtomVecPolyhedron::process_args(narg, arg);
-  setup_generic_fields();
-  args_version = shape_version();
-}
-
-/* ----------------------------------------------------------------------
-   restart files and replicate read the arguments of the AtomVec LAMMPS
-   sees: mirror the plain part's (which add_shape extends) into it
-------------------------------------------------------------------------- */
-
-void AtomVecPolyhedronKokkos::sync_args()
-{
-  if (args_version == shape_version()) return;
-  AtomVecPolyhedronKokkosBase &kk = *this;
-  const AtomVecPolyhedron &plain = *this;
-  for (int i = 0; i < kk.nargcopy; i++) delete[] kk.argcopy[i];
-  delete[] kk.argcopy;
-  kk.nargcopy = plain.nargcopy;
-  kk.argcopy = new char *[kk.nargcopy];
-  for (int i = 0; i < kk.nargcopy; i++) kk.argcopy[i] = utils::strdup(plain.argcopy[i]);
-  args_version = shape_version();
-}
-
-void AtomVecPolyhedronKokkos::init()
-{
-  sync_args();
-  AtomVecPolyhedronKokkosBase::init();
-  check_dimension();
-  check_inserting_fixes();
-}
-
-void AtomVecPolyhedronKokkos::grow(int n)
-{
-  AtomVecPolyhedronKokkosBase::grow(n);
-}
-
-void AtomVecPolyhedronKokkos::grow_pointers()
-{
-  AtomVecPolyhedronKokkosBase::grow_pointers();
-  AtomVecPolyhedron::grow_pointers();
-}
-
-void AtomVecPolyhedronKokkos::copy(int i, int j, int delflag)
-{
-  AtomVecPolyhedronKokkosBase::copy(i, j, delflag);
-}
-
-int AtomVecPolyhedronKokkos::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
-{
-  return AtomVecPolyhedronKokkosBase::pack_comm(n, list, buf, pbc_flag, pbc);
-}
-
-int AtomVecPolyhedronKokkos::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
-{
-  return AtomVecPolyhedronKokkosBase::pack_comm_vel(n, list, buf, pbc_flag, pbc);
-}
-
-void AtomVecPolyhedronKokkos::unpack_comm(int n, int first, double *buf)
-{
-  AtomVecPolyhedronKokkosBase::unpack_comm(n, first, buf);
-}
-
-void AtomVecPolyhedronKokkos::unpack_comm_vel(int n, int first, double *buf)
-{
-  AtomVecPolyhedronKokkosBase::unpack_comm_vel(n, first, buf);
-}
-
-int AtomVecPolyhedronKokkos::pack_reverse(int n, int first, double *buf)
-{
-  return AtomVecPolyhedronKokkosBase::pack_reverse(n, first, buf);
-}
-
-void AtomVecPolyhedronKokkos::unpack_reverse(int n, int *list, double *buf)
-{
-  AtomVecPolyhedronKokkosBase::unpack_reverse(n, list, buf);
-}
-
-int AtomVecPolyhedronKokkos::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc)
-{
-  return AtomVecPolyhedronKokkosBase::pack_border(n, list, buf, pbc_flag, pbc);
-}
-
-int AtomVecPolyhedronKokkos::pack_border_vel(int n, int *list, double *buf, int pbc_flag,
-                                             int *pbc)
-{
-  return AtomVecPolyhedronKokkosBase::pack_border_vel(n, list, buf, pbc_flag, pbc);
-}
-
-void AtomVecPolyhedronKokkos::unpack_border(int n, int first, double *buf)
-{
-  AtomVecPolyhedronKokkosBase::unpack_border(n, first, buf);
-}
-
-void AtomVecPolyhedronKokkos::unpack_border_vel(int n, int first, double *buf)
-{
-  AtomVecPolyhedronKokkosBase::unpack_border_vel(n, first, buf);
-}
-
-int AtomVecPolyhedronKokkos::pack_exchange(int i, double *buf)
-{
-  return AtomVecPolyhedronKokkosBase::pack_exchange(i, buf);
-}
-
-int AtomVecPolyhedronKokkos::unpack_exchange(double *buf)
-{
-  return AtomVecPolyhedronKokkosBase::unpack_exchange(buf);
-}
-
-int AtomVecPolyhedronKokkos::size_restart()
-{
-  sync_args();
-  return AtomVecPolyhedronKokkosBase::size_restart();
-}
-
-int AtomVecPolyhedronKokkos::pack_restart(int i, double *buf)
-{
-  return AtomVecPolyhedronKokkosBase::pack_restart(i, buf);
-}
-
-int AtomVecPolyhedronKokkos::unpack_restart(double *buf)
-{
-  return AtomVecPolyhedronKokkosBase::unpack_restart(buf);
-}
-
-void AtomVecPolyhedronKokkos::create_atom(int itype, double *coord)
-{
-  AtomVecPolyhedronKokkosBase::create_atom(itype, coord);
-}
-
-void AtomVecPolyhedronKokkos::data_atom(double *coord, imageint imagetmp, char **values)
-{
-  AtomVecPolyhedronKokkosBase::data_atom(coord, imagetmp, values);
-}
-
-void AtomVecPolyhedronKokkos::pack_data(double **buf)
-{
-  AtomVecPolyhedronKokkosBase::pack_data(buf);
-}
-
-void AtomVecPolyhedronKokkos::write_data(FILE *fp, int n, double **buf)
-{
-  AtomVecPolyhedronKokkosBase::write_data(fp, n, buf);
-}
-
-void AtomVecPolyhedronKokkos::data_vel(int ilocal, char **values)
-{
-  AtomVecPolyhedronKokkosBase::data_vel(ilocal, values);
-}
-
-void AtomVecPolyhedronKokkos::pack_vel(double **buf)
-{
-  AtomVecPolyhedronKokkosBase::pack_vel(buf);
-}
-
-void AtomVecPolyhedronKokkos::write_vel(FILE *fp, int n, double **buf)
-{
-  AtomVecPolyhedronKokkosBase::write_vel(fp, n, buf);
-}
-
-double AtomVecPolyhedronKokkos::memory_usage()
-{
-  return AtomVecPolyhedronKokkosBase::memory_usage();
-}
-
-bigint AtomVecPolyhedronKokkos::roundup(bigint n)
-{
-  return AtomVecPolyhedronKokkosBase::roundup(n);
-}
-
-/* ----------------------------------------------------------------------
-   per-atom semantics of the plain style; called from the generic code
-   above (inside its sync/modified brackets) or, for the property hooks,
-   by compute property/atom on the host
-------------------------------------------------------------------------- */
-
-void AtomVecPolyhedronKokkos::create_atom_post(int ilocal)
-{
-  AtomVecPolyhedron::create_atom_post(ilocal);
-}
-
-void AtomVecPolyhedronKokkos::data_atom_post(int ilocal)
-{
-  AtomVecPolyhedron::data_atom_post(ilocal);
-}
-
-void AtomVecPolyhedronKokkos::pack_data_pre(int ilocal)
-{
-  AtomVecPolyhedron::pack_data_pre(ilocal);
-}
-
-void AtomVecPolyhedronKokkos::pack_data_post(int ilocal)
-{
-  AtomVecPolyhedron::pack_data_post(ilocal);
-}
-
-int AtomVecPolyhedronKokkos::property_atom(char *name)
-{
-  return AtomVecPolyhedron::property_atom(name);
-}
-
-void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nvalues,
-                                                 int groupbit)
-{
-  sync_host_all();
-  AtomVecPolyhedron::pack_property_atom(index, buf, nvalues, groupbit);
+  for_each_dual(mask, [&](auto &k) {
+    const bool stale = space == Device ? k.template need_sync<LMPDeviceType>()
+                                       : k.template need_sync<LMPHostType>();
+    if (stale) perform_async_copy(k, space);
+  });
 }

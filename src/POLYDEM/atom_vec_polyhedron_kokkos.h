@@ -3,20 +3,14 @@
    per-atom field in a Kokkos DualView, and device kernels for forward
    (quat), ghost-velocity, border and exchange communication.
 
-   Structure (LAMMPS 29Sep2021 has no virtual AtomVec base, so the later
-   LAMMPS pattern "AtomVecXKokkos : AtomVecKokkos, AtomVecX" with virtual
-   inheritance is not available):
-
-     AtomVecPolyhedronKokkosBase : AtomVecKokkos
-        the Kokkos machinery; this is the AtomVec LAMMPS sees (atom->avec),
-        its generic field lists are those of AtomVecPolyhedron
-     AtomVecPolyhedronKokkos : AtomVecPolyhedronKokkosBase, AtomVecPolyhedron
-        adds the shape-template library and per-atom semantics of the plain
-        style, so dynamic_cast<AtomVecPolyhedron *>(atom->avec) succeeds
-        (a cross-cast). The AtomVecPolyhedron part is a second, passive
-        AtomVec sub-object: LAMMPS never calls it; every virtual both bases
-        declare has one final overrider here, so calls through either base
-        reach the same code.
+   Structure: AtomVecPolyhedronKokkos : AtomVecKokkos only, as LAMMPS's
+   own /kk atom styles. The shape templates and the per-atom semantics of
+   the plain style (field lists, create_atoms and read_data defaults and
+   checks, write_data, property/atom) are the PolyShapeLibrary it owns, as
+   atom_style polyhedron owns one: both forward their hooks to it, here
+   inside the sync/modified brackets of the host paths. Other styles find
+   the library with PolyShapeLibrary::of, the DualViews with
+   AtomVecPolyhedronKokkos::of.
 ------------------------------------------------------------------------- */
 
 #ifdef ATOM_CLASS
@@ -32,8 +26,8 @@ AtomStyle(polyhedron/kk/host,AtomVecPolyhedronKokkos);
 
 #include "atom.h"
 #include "atom_vec_kokkos.h"
-#include "atom_vec_polyhedron.h"
 #include "kokkos_type.h"
+#include "poly_shape_library.h"
 #include "polydem_kokkos_masks.h"
 
 #include <type_traits>
@@ -50,16 +44,24 @@ template <class DualViewType, class DeviceType>
 using polydem_view_t = typename std::decay<decltype(
     std::declval<DualViewType &>().template view<DeviceType>())>::type;
 
-class AtomVecPolyhedronKokkosBase : public AtomVecKokkos {
+class AtomVecPolyhedronKokkos : public AtomVecKokkos {
  public:
-  AtomVecPolyhedronKokkosBase(class LAMMPS *);
-  ~AtomVecPolyhedronKokkosBase() override;
+  AtomVecPolyhedronKokkos(class LAMMPS *);
+  ~AtomVecPolyhedronKokkos() override;
+
+  // the /kk atom style of atom, or nullptr
+  static AtomVecPolyhedronKokkos *of(class Atom *atom)
+  {
+    return dynamic_cast<AtomVecPolyhedronKokkos *>(atom->avec);
+  }
+  PolyShapeLibrary *shape_library() { return &shapes; }
 
   // POLYDEM per-atom fields (the standard ones are in AtomKokkos)
   tdual_quat_array k_quat;
   DAT::tdual_int_1d k_pshape;
   DAT::tdual_float_1d k_pscale;
 
+  void process_args(int, char **) override;
   void init() override;
   void grow(int) override;
   void grow_pointers() override;
@@ -90,6 +92,14 @@ class AtomVecPolyhedronKokkosBase : public AtomVecKokkos {
   void pack_vel(double **) override;
   void write_vel(FILE *, int, double **) override;
   double memory_usage() override;
+
+  // per-atom semantics of the plain style (PolyShapeLibrary)
+  void create_atom_post(int) override;
+  void data_atom_post(int) override;
+  void pack_data_pre(int) override;
+  void pack_data_post(int) override;
+  int property_atom(char *) override;
+  void pack_property_atom(int, double *, int, int) override;
 
   // device paths
   int pack_comm_kokkos(const int &n, const DAT::tdual_int_2d &list, const int &iswap,
@@ -137,9 +147,9 @@ class AtomVecPolyhedronKokkosBase : public AtomVecKokkos {
   static constexpr int EXCHANGE_SIZE = 25;    // count, x, v, tag, type, mask, image, radius, rmass,
                                               // omega, angmom, quat, pshape, pscale
 
- protected:
-  void set_fields(const AtomVec &plain);    // copy the plain style's field lists
-  void setup_generic_fields() { setup_fields(); }
+ private:
+  PolyShapeLibrary shapes;
+  template <class F> void for_each_dual(unsigned int mask, F f);    // f(DualView) per field
   void sync_host_all();
   void modified_host_all();
   // forget the field lists so that ~AtomVec frees nothing: AtomKokkos owns
@@ -148,64 +158,6 @@ class AtomVecPolyhedronKokkosBase : public AtomVecKokkos {
 
   DAT::tdual_int_1d k_count;
 };
-
-class AtomVecPolyhedronKokkos : public AtomVecPolyhedronKokkosBase, public AtomVecPolyhedron {
- public:
-  AtomVecPolyhedronKokkos(class LAMMPS *);
-  ~AtomVecPolyhedronKokkos() override;
-
-  // the /kk atom style of atom, or nullptr
-  static AtomVecPolyhedronKokkos *of(class Atom *atom)
-  {
-    return dynamic_cast<AtomVecPolyhedronKokkos *>(atom->avec);
-  }
-
-  // virtuals declared by both bases: one final overrider each
-  void process_args(int, char **) override;
-  void init() override;
-  void grow(int) override;
-  void grow_pointers() override;
-  void copy(int, int, int) override;
-  int pack_comm(int, int *, double *, int, int *) override;
-  int pack_comm_vel(int, int *, double *, int, int *) override;
-  void unpack_comm(int, int, double *) override;
-  void unpack_comm_vel(int, int, double *) override;
-  int pack_reverse(int, int, double *) override;
-  void unpack_reverse(int, int *, double *) override;
-  int pack_border(int, int *, double *, int, int *) override;
-  int pack_border_vel(int, int *, double *, int, int *) override;
-  void unpack_border(int, int, double *) override;
-  void unpack_border_vel(int, int, double *) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(double *) override;
-  int size_restart() override;
-  int pack_restart(int, double *) override;
-  int unpack_restart(double *) override;
-  void create_atom(int, double *) override;
-  void data_atom(double *, imageint, char **) override;
-  void pack_data(double **) override;
-  void write_data(FILE *, int, double **) override;
-  void data_vel(int, char **) override;
-  void pack_vel(double **) override;
-  void write_vel(FILE *, int, double **) override;
-  double memory_usage() override;
-  bigint roundup(bigint) override;
-
-  void create_atom_post(int) override;
-  void data_atom_post(int) override;
-  void pack_data_pre(int) override;
-  void pack_data_post(int) override;
-  int property_atom(char *) override;
-  void pack_property_atom(int, double *, int, int) override;
-
- private:
-  int args_version;    // shape_version() whose records the LAMMPS-visible argcopy holds
-  void sync_args();
-};
-
-// Atom::avec_creator<T> converts T * to AtomVec *, ambiguous here (two AtomVec
-// sub-objects). The AtomVec LAMMPS must see is the Kokkos one.
-template <> AtomVec *Atom::avec_creator<AtomVecPolyhedronKokkos>(LAMMPS *);
 
 }    // namespace LAMMPS_NS
 

@@ -5,9 +5,9 @@
 #include "compute_erotate_polyhedron.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
 #include "error.h"
 #include "force.h"
+#include "poly_shape_library.h"
 #include "polydem_rigid.h"
 #include "update.h"
 
@@ -20,14 +20,12 @@ ComputeERotatePolyhedron::ComputeERotatePolyhedron(LAMMPS *lmp, int narg, char *
     error->all(FLERR, "Illegal compute erotate/polyhedron command: no arguments expected");
   scalar_flag = 1;
   extscalar = 1;
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "Compute erotate/polyhedron requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "Compute erotate/polyhedron");
 }
 
 void ComputeERotatePolyhedron::init()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "Compute erotate/polyhedron requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "Compute erotate/polyhedron");
 }
 
 double ComputeERotatePolyhedron::compute_scalar()

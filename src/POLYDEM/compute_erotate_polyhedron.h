@@ -23,7 +23,7 @@ class ComputeERotatePolyhedron : public Compute {
   double compute_scalar() override;
 
  private:
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
 };
 
 }    // namespace LAMMPS_NS

@@ -9,9 +9,9 @@
 #include "accelerator_kokkos.h"
 #include "atom.h"
 #include "atom_masks.h"
-#include "atom_vec_polyhedron.h"
 #include "error.h"
 #include "memory.h"
+#include "poly_shape_library.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -23,8 +23,7 @@ ComputePropertyPolyhedron::ComputePropertyPolyhedron(LAMMPS *lmp, int narg, char
     error->all(FLERR,
                "Illegal compute property/polyhedron command: expected at least one of "
                "shape scale density quatw quati quatj quatk");
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "compute property/polyhedron requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "compute property/polyhedron");
   for (int iarg = 3; iarg < narg; iarg++) {
     const int k = avec->property_atom(arg[iarg]);
     if (k < 0)
@@ -46,8 +45,7 @@ ComputePropertyPolyhedron::~ComputePropertyPolyhedron()
 
 void ComputePropertyPolyhedron::init()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "compute property/polyhedron requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "compute property/polyhedron");
 }
 
 void ComputePropertyPolyhedron::compute_peratom()

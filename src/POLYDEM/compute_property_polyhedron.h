@@ -29,8 +29,8 @@ class ComputePropertyPolyhedron : public Compute {
   double memory_usage() override;
 
  private:
-  class AtomVecPolyhedron *avec;
-  std::vector<int> index;    // AtomVecPolyhedron::property_atom of each keyword
+  class PolyShapeLibrary *avec;
+  std::vector<int> index;    // PolyShapeLibrary::property_atom of each keyword
   int nmax;
   double *vector;
   double **array;

@@ -5,9 +5,9 @@
 #include "dump_polyhedron_vtk.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
 #include "domain.h"
 #include "error.h"
+#include "poly_shape_library.h"
 #include "polydem_shape_template.h"
 #include "update.h"
 
@@ -30,8 +30,7 @@ DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg) :
                "polyhedron/vtk N file");
   if (binary || multiproc || compressed)
     error->all(FLERR, "dump polyhedron/vtk: file name must not end in .bin or .gz or contain %");
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "dump polyhedron/vtk requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "dump polyhedron/vtk");
   size_one = NREC;
   sort_flag = 1;
   sortcol = 0;
@@ -41,8 +40,7 @@ DumpPolyhedronVTK::DumpPolyhedronVTK(LAMMPS *lmp, int narg, char **arg) :
 
 void DumpPolyhedronVTK::init_style()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "dump polyhedron/vtk requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "dump polyhedron/vtk");
   // without '*' one file holds the latest snapshot, rewritten each time
   // (several datasets in one legacy VTK file are read as the first only)
   if (!multifile) {

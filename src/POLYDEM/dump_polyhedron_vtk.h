@@ -31,7 +31,7 @@ class DumpPolyhedronVTK : public Dump {
   void write_data(int, double *) override;
 
  private:
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
   bigint nexpected;               // particles in this snapshot
   std::vector<double> records;    // gathered on the writing rank
   // what is drawn for each shape template (unit scale, body frame): the

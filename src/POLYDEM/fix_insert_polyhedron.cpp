@@ -7,7 +7,7 @@
 #include "accelerator_kokkos.h"
 #include "atom.h"
 #include "atom_masks.h"
-#include "atom_vec_polyhedron.h"
+#include "atom_vec.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
@@ -17,6 +17,7 @@
 #include "math_const.h"
 #include "modify.h"
 #include "pair.h"
+#include "poly_shape_library.h"
 #include "polydem_parse.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
@@ -72,8 +73,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   const std::string me = "fix insert/polyhedron";
   if (narg < 5)
     error->all(FLERR, "{}: needs N and seed (fix ID group insert/polyhedron N seed ...)", me);
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "{} requires atom_style polyhedron", me);
+  avec = PolyShapeLibrary::of(lmp, me);
   if (domain->dimension != 3) error->all(FLERR, "{}: 3d simulations only", me);
   if (domain->triclinic) error->all(FLERR, "{}: triclinic boxes are not supported", me);
 

@@ -65,7 +65,7 @@ class FixInsertPolyhedron : public Fix {
     double pnum;    // number probability (cumulative over kinds)
   };
 
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
   std::vector<Kind> kinds;
   std::string idregion;
   class Region *region;

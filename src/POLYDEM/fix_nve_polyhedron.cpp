@@ -5,8 +5,8 @@
 #include "fix_nve_polyhedron.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
 #include "error.h"
+#include "poly_shape_library.h"
 #include "polydem_rigid.h"
 
 using namespace LAMMPS_NS;
@@ -18,8 +18,7 @@ FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     FixNVE(lmp, narg, arg), avec(nullptr)
 {
   if (narg != 3) error->all(FLERR, "Illegal fix nve/polyhedron command: no arguments expected");
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "Fix nve/polyhedron requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "Fix nve/polyhedron");
 }
 
 /* ----------------------------------------------------------------------
@@ -30,8 +29,7 @@ FixNVEPolyhedron::FixNVEPolyhedron(LAMMPS *lmp, int narg, char **arg) :
 void FixNVEPolyhedron::init()
 {
   FixNVE::init();
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "Fix nve/polyhedron requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "Fix nve/polyhedron");
 
   double **angmom = atom->angmom, **omega = atom->omega, **quat = atom->quat;
   int *mask = atom->mask;

@@ -24,7 +24,7 @@ class FixNVEPolyhedron : public FixNVE {
   void final_integrate() override;
 
  protected:
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
 };
 
 }    // namespace LAMMPS_NS

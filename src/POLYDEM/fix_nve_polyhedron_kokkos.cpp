@@ -6,7 +6,6 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
-#include "atom_vec_polyhedron.h"
 #include "atom_vec_polyhedron_kokkos.h"
 #include "error.h"
 #include "polydem_kokkos_masks.h"
@@ -60,7 +59,7 @@ template <class DeviceType, int MODE> struct FixNVEPolyhedronKokkosFunctor {
         angmom(i, k) += dtf * torque(i, k);
       }
     }
-    // principal moments I_k = m s^2 J_k / V (AtomVecPolyhedron::inertia)
+    // principal moments I_k = m s^2 J_k / V (PolyShapeLibrary::inertia)
     const int t = pshape(i);
     const double fct = rmass(i) * pscale(i) * pscale(i) / props(t, 0);
     const double inertia[3] = {fct * props(t, 1), fct * props(t, 2), fct * props(t, 3)};
@@ -99,8 +98,8 @@ FixNVEPolyhedronKokkos<DeviceType>::FixNVEPolyhedronKokkos(LAMMPS *lmp, int narg
 template <class DeviceType> void FixNVEPolyhedronKokkos<DeviceType>::find_style()
 {
   avecKK = AtomVecPolyhedronKokkos::of(atom);
-  avec = avecKK;
   if (!avecKK) error->all(FLERR, "Fix nve/polyhedron/kk requires atom_style polyhedron/kk");
+  avec = PolyShapeLibrary::of(lmp, "Fix nve/polyhedron/kk");
 }
 
 /* ----------------------------------------------------------------------

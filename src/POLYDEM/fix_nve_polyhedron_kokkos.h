@@ -35,9 +35,9 @@ template <class DeviceType> class FixNVEPolyhedronKokkos : public FixNVE {
   enum { OMEGA_ONLY = 0, INITIAL = 1, FINAL = 2 };
 
  private:
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
   class AtomVecPolyhedronKokkos *avecKK;
-  int table_version;    // AtomVecPolyhedron::shape_version() of k_props
+  int table_version;    // PolyShapeLibrary::shape_version() of k_props
   tdual_shape_props k_props;
 
   void find_style();

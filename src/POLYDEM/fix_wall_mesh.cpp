@@ -5,7 +5,6 @@
 #include "fix_wall_mesh.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_insert_polyhedron.h"
@@ -14,6 +13,7 @@
 #include "memory.h"
 #include "neighbor.h"
 #include "pair.h"
+#include "poly_shape_library.h"
 #include "update.h"
 
 #include "polydem_contact_law.h"
@@ -362,8 +362,7 @@ int FixWallMesh::setmask()
 
 void FixWallMesh::init()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "fix wall/mesh requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "fix wall/mesh");
   // the group's shapes, and those an insertion fix will add to it (every
   // rank sees the same candidates: counted on rank 0)
   int nkind[2] = {0, 0};    // polyhedra, ellipsoids

@@ -106,7 +106,7 @@ class FixWallMesh : public Fix {
   double fresh_local[4];
   void absorb(const polydem::WallTally<double> &t);
   void report_initial_overlaps();
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
   std::unique_ptr<polydem::WallWorkspace<double>> ws;
   // near lists (keyword cache): entries per particle, skin / bounding radius;
   // per local atom, valid until the next reneighboring (plain fix; /kk has its own)

@@ -6,7 +6,6 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
-#include "atom_vec_polyhedron.h"
 #include "atom_vec_polyhedron_kokkos.h"
 #include "error.h"
 #include "memory_kokkos.h"
@@ -236,8 +235,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
 
 template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
 {
-  if (shape_version == avecKK->shape_version()) return;
-  AtomVecPolyhedron *av = avecKK;
+  if (shape_version == avec->shape_version()) return;
+  const PolyShapeLibrary *av = avec;
   const int n = av->ntemplates();
   if (n == 0) error->all(FLERR, "fix wall/mesh/kk: no shape defined (polyhedron_shape)");
   int size[5] = {0, 0, 0, 0, 0};    // verts, planes, face_start, face_verts, edges
@@ -291,7 +290,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
   Kokkos::deep_copy(d_sface_verts, h_fv);
   Kokkos::deep_copy(d_sedges, h_edges);
   Kokkos::deep_copy(d_shapes, h_shapes);
-  shape_version = avecKK->shape_version();
+  shape_version = avec->shape_version();
 }
 
 /* ---------------------------------------------------------------------- */

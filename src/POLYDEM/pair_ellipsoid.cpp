@@ -5,7 +5,7 @@
 #include "pair_ellipsoid.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
+#include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_insert_polyhedron.h"
@@ -184,8 +184,7 @@ void PairEllipsoid::coeff(int narg, char **arg)
 
 void PairEllipsoid::init_style()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "pair_style ellipsoid requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "pair_style ellipsoid");
   if (comm->ghost_velocity == 0)
     error->all(FLERR, "pair_style ellipsoid requires ghost velocities: use 'comm_modify vel yes'");
   // mixed polyhedron-ellipsoid contacts are not supported

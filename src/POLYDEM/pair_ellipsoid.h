@@ -58,7 +58,7 @@ class PairEllipsoid : public Pair {
   double overlap_warn;           // warn for delta > overlap_warn * smallest semi-axis
   int overlap;                   // polydem::OVERLAP_CENTRE or OVERLAP_CHORD
   int damping_mass;              // polydem::DAMPING_REDUCED or DAMPING_CONTACT
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
   double local_counts[NCOUNT];
   double reported[NCOUNT];
 

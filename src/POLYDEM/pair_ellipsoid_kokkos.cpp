@@ -208,8 +208,8 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
 
 template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::update_device_data()
 {
-  if (shape_version != avecKK->shape_version()) {
-    AtomVecPolyhedron *av = avecKK;
+  if (shape_version != avec->shape_version()) {
+    const PolyShapeLibrary *av = avec;
     const int n = av->ntemplates();
     d_axes = Kokkos::View<double *[3], DeviceType>("ellipsoid/kk:axes", n > 0 ? n : 1);
     auto h = Kokkos::create_mirror_view(d_axes);

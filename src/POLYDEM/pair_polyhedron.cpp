@@ -5,7 +5,7 @@
 #include "pair_polyhedron.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
+#include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
 #include "fix_insert_polyhedron.h"
@@ -204,8 +204,7 @@ void PairPolyhedron::coeff(int narg, char **arg)
 
 void PairPolyhedron::init_style()
 {
-  avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "pair_style polyhedron requires atom_style polyhedron");
+  avec = PolyShapeLibrary::of(lmp, "pair_style polyhedron");
   if (comm->ghost_velocity == 0)
     error->all(FLERR, "pair_style polyhedron requires ghost velocities: use 'comm_modify vel yes'");
   for (int t = 0; t < avec->ntemplates(); t++)

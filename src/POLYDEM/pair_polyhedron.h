@@ -68,7 +68,7 @@ class PairPolyhedron : public Pair {
   double core;                 // quadratic W below V0 = core * smaller particle volume
   double dt;
 
-  class AtomVecPolyhedron *avec;
+  class PolyShapeLibrary *avec;
   class FixDummy *fix_dummy;
   class FixNeighHistory *fix_history;
   // suffix of the history fix ID: counts polyhedron pair styles of this

@@ -328,8 +328,8 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::init_style()
 
 template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes()
 {
-  if (shape_version == avecKK->shape_version()) return;
-  AtomVecPolyhedron *av = avecKK;
+  if (shape_version == avec->shape_version()) return;
+  const PolyShapeLibrary *av = avec;
   const int n = av->ntemplates();
   if (n == 0) error->all(FLERR, "pair_style polyhedron/kk: no shape defined (polyhedron_shape)");
   int nv = 0, np = 0, nfs = 0, nfv = 0, ne = 0, nd = 0;
@@ -391,7 +391,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
   Kokkos::deep_copy(d_sedges, h_edges);
   Kokkos::deep_copy(d_sdual, h_dual);
   Kokkos::deep_copy(d_shapes, h_shapes);
-  shape_version = avecKK->shape_version();
+  shape_version = avec->shape_version();
 }
 
 /* ----------------------------------------------------------------------

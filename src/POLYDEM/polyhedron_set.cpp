@@ -7,12 +7,12 @@
 #include "accelerator_kokkos.h"
 #include "atom.h"
 #include "atom_masks.h"
-#include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "group.h"
 #include "math_const.h"
+#include "poly_shape_library.h"
 #include "polydem_parse.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
@@ -47,8 +47,7 @@ void PolyhedronSet::command(int narg, char **arg)
     error->all(FLERR, "polyhedron_set command before simulation box is defined");
   if (atom->natoms == 0) error->all(FLERR, "polyhedron_set command with no atoms existing");
   if (narg < 4) error->all(FLERR, "Illegal polyhedron_set command: too few arguments");
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "polyhedron_set requires atom_style polyhedron");
+  auto avec = PolyShapeLibrary::of(lmp, "polyhedron_set");
 
   // ---- selection
   const int nlocal = atom->nlocal;

@@ -5,9 +5,9 @@
 #include "polyhedron_shape.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
 #include "comm.h"
 #include "error.h"
+#include "poly_shape_library.h"
 #include "polydem_parse.h"
 #include "polydem_shape_record.h"
 #include "polydem_shape_template.h"
@@ -27,8 +27,7 @@ using namespace LAMMPS_NS;
 void PolyhedronShape::command(int narg, char **arg)
 {
   if (narg < 2) error->all(FLERR, "Illegal polyhedron_shape command: expected ID and file");
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(atom->avec);
-  if (!avec) error->all(FLERR, "polyhedron_shape requires atom_style polyhedron");
+  auto avec = PolyShapeLibrary::of(lmp, "polyhedron_shape");
   avec->check_dimension();
 
   const std::string id = arg[0];

@@ -4,7 +4,7 @@
 
 #include "polydem_lmp.h"
 
-#include "atom_vec_polyhedron.h"
+#include "poly_shape_library.h"
 #include "force.h"
 #include "pair.h"
 #include "ellipsoid_gas.h"
@@ -21,9 +21,9 @@ using polydem_test::num;
 
 namespace {
 
-LAMMPS_NS::AtomVecPolyhedron *avec_of(Lmp &l)
+LAMMPS_NS::PolyShapeLibrary *avec_of(Lmp &l)
 {
-  return dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+  return LAMMPS_NS::PolyShapeLibrary::of(l.lmp, "test");
 }
 
 std::vector<std::string> box_cmds()

@@ -7,7 +7,7 @@
 #include "insert_scene.h"
 #include "insert_stats.h"
 
-#include "atom_vec_polyhedron.h"
+#include "poly_shape_library.h"
 #include "domain.h"
 #include "compute.h"
 #include "fix.h"
@@ -25,7 +25,7 @@
 #include <memory>
 
 using namespace insert_test;
-using LAMMPS_NS::AtomVecPolyhedron;
+using LAMMPS_NS::PolyShapeLibrary;
 using insert_test::ks_crit;
 
 namespace {
@@ -98,7 +98,7 @@ bool inside(const polydem::PolyShapeTemplate &t, const Particle &p, const polyde
 // the other. Returns the number of overlapping pairs.
 int overlaps(Lmp &l, long tag0, int *npairs_close = nullptr)
 {
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+  auto avec = PolyShapeLibrary::of(l.lmp, "test");
   const auto ps = particles(l);
   auto ws = std::make_unique<polydem::OverlapWorkspace<double>>();
   std::vector<polydem::ShapeView<double>> views;
@@ -142,7 +142,7 @@ int overlaps(Lmp &l, long tag0, int *npairs_close = nullptr)
 // container (x, y in (-0.02, 0.02), z > 0)
 int outside_container(Lmp &l, long tag0)
 {
-  auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+  auto avec = PolyShapeLibrary::of(l.lmp, "test");
   int n = 0;
   for (const auto &p : particles(l)) {
     if (p.tag <= tag0) continue;
@@ -294,7 +294,7 @@ TEST(Insert, MovingRegionsAreFollowed)
             "fix ins all insert/polyhedron 0 5 region feed per 20 every 100 density 1000 "
             "mass/total 1.0 shape d 1 scale 0.0008",
             "fix nve all nve/polyhedron", "timestep 1e-4"});
-    auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+    auto avec = PolyShapeLibrary::of(l.lmp, "test");
     long tag0 = 0;
     int outside = 0, n = 0;
     for (int e = 0; e < 6; e++) {
@@ -380,7 +380,7 @@ TEST(Insert, FractionsScalesAndOrientationsFollowTheRequest)
           "shape c 0.2 scale 0.12 density 1000");
     l.cmd("run 0");
     ASSERT_EQ(l.lmp->atom->natoms, 6000);
-    auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+    auto avec = PolyShapeLibrary::of(l.lmp, "test");
     const double f[3] = {0.5, 0.3, 0.2};
     const int idx[3] = {0, 2, 1};    // template index of d, q, c
     double p[3];
@@ -430,7 +430,7 @@ TEST(Insert, FixedAndAxisOrientations)
                       "all_in no shape c 1 scale 0.5 orient ") +
           (axis ? "axis 1 0 0" : "fixed 1 0 0 30"));
     l.cmd("run 0");
-    auto avec = dynamic_cast<AtomVecPolyhedron *>(l.lmp->atom->avec);
+    auto avec = PolyShapeLibrary::of(l.lmp, "test");
     const auto q0 = avec->shape(1).input_orientation();    // file frame -> principal frame
     std::vector<double> ang;
     for (const auto &p : particles(l)) {

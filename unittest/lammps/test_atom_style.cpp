@@ -3,7 +3,7 @@
 
 #include "polydem_lmp.h"
 
-#include "atom_vec_polyhedron.h"
+#include "poly_shape_library.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
 
@@ -110,7 +110,7 @@ TEST(AtomStyle, TorqueFreeGrainFollowsKernel)
           "timestep 1e-4", "run 0"});
   const double e0 = l.thermo("c_er");
   auto s0 = l.local_state().at(1);
-  auto avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+  auto avec = LAMMPS_NS::PolyShapeLibrary::of(l.lmp, "test");
   ASSERT_NE(avec, nullptr);
   double inertia[3];
   avec->inertia(0, inertia);
@@ -144,7 +144,7 @@ TEST(AtomStyle, RestartContinuesBitIdentically)
     l.cmds({"read_restart " + rfile, "neighbor 0.3 bin", "fix 1 all nve/polyhedron",
             "timestep 0.005", "run 300"});
     b = l.local_state();
-    auto avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+    auto avec = LAMMPS_NS::PolyShapeLibrary::of(l.lmp, "test");
     ASSERT_EQ(avec->ntemplates(), 2);
     EXPECT_EQ(avec->shape_id(1), "dodeca");
   }
@@ -222,7 +222,7 @@ TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
   EXPECT_EQ(npoints, 5 * 8 + 5 * 20);
   EXPECT_EQ(npolys, 5 * 6 + 5 * 12);
   auto st = l.local_state();
-  auto avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+  auto avec = LAMMPS_NS::PolyShapeLibrary::of(l.lmp, "test");
   size_t off = 0;
   for (auto &kv : st) {
     const auto v = avec->shape(kv.second.shape).view();
@@ -522,7 +522,7 @@ TEST(AtomStyle, ComputePropertyPolyhedron)
     l.cmds({"compute q all property/polyhedron quatw quati quatj quatk shape scale density",
             "compute w all property/polyhedron quatw", "run 20"});
     auto *a = l.lmp->atom;
-    auto *avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(a->avec);
+    auto *avec = LAMMPS_NS::PolyShapeLibrary::of(l.lmp, "test");
     auto *q = (double **) lammps_extract_compute(l.lmp, "q", LMP_STYLE_ATOM, LMP_TYPE_ARRAY);
     auto *w = (double *) lammps_extract_compute(l.lmp, "w", LMP_STYLE_ATOM, LMP_TYPE_VECTOR);
     ASSERT_TRUE(q && w);

@@ -4,7 +4,7 @@
 #include "wall_meshes.h"
 #include "wall_scene.h"
 
-#include "atom_vec_polyhedron.h"
+#include "poly_shape_library.h"
 #include "fix.h"
 #include "polydem_shape_template.h"
 #include "modify.h"
@@ -467,7 +467,7 @@ Impact cylinder_impact(double theta_deg, double V = 0.5, const std::string &extr
           "fix w all wall/mesh " + stl + " " + extra, "fix nve all nve/polyhedron",
           "timestep 5e-7"});
   // orientation: the file's frame (axis z, C on +x), then tilted about y
-  auto *avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+  auto *avec = LAMMPS_NS::PolyShapeLibrary::of(l.lmp, "test");
   const auto &tp = avec->shape(0);
   const auto qi = tp.input_orientation();
   const double th = theta_deg * PI / 180.0;

@@ -7,7 +7,7 @@
 #include "wall_meshes.h"
 #include "wall_scene.h"
 
-#include "atom_vec_polyhedron.h"
+#include "poly_shape_library.h"
 #include "fix.h"
 #include "fix_wall_mesh.h"
 #include "modify.h"
@@ -386,7 +386,7 @@ TEST(WallSides, InsertionClearFromEitherSide)
     l.cmds({"fix w all wall/mesh " + c.stl + " " + c.args, "run 0"});
     auto *w = dynamic_cast<LAMMPS_NS::FixWallMesh *>(fix_of(l, "w"));
     ASSERT_NE(w, nullptr);
-    auto *avec = dynamic_cast<LAMMPS_NS::AtomVecPolyhedron *>(l.lmp->atom->avec);
+    auto *avec = LAMMPS_NS::PolyShapeLibrary::of(l.lmp, "test");
     const auto sv = avec->shape(0).view();
     polydem::InsertBody<double> b;
     b.view = &sv;

@@ -1,0 +1,344 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - shape-template library and per-atom semantics of
+   atom_style polyhedron (and polyhedron/kk)
+------------------------------------------------------------------------- */
+
+#include "poly_shape_library.h"
+
+#include "atom.h"
+#include "atom_vec_polyhedron.h"
+#include "domain.h"
+#include "error.h"
+#include "fix.h"
+#include "modify.h"
+#include "polydem_shape_record.h"
+#include "polydem_shape_template.h"
+
+#ifdef LMP_KOKKOS
+#include "atom_vec_polyhedron_kokkos.h"
+#endif
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+/* ---------------------------------------------------------------------- */
+
+PolyShapeLibrary::PolyShapeLibrary(LAMMPS *lmp, AtomVec *owner_) :
+    Pointers(lmp), owner(owner_), version(0), pshape_one(0), rmass_one(0.0)
+{
+}
+
+PolyShapeLibrary::~PolyShapeLibrary() = default;
+
+PolyShapeLibrary *PolyShapeLibrary::of(LAMMPS *lmp, const std::string &who)
+{
+  AtomVec *avec = lmp->atom->avec;
+  if (auto *a = dynamic_cast<AtomVecPolyhedron *>(avec)) return a->shape_library();
+#ifdef LMP_KOKKOS
+  if (auto *a = dynamic_cast<AtomVecPolyhedronKokkos *>(avec)) return a->shape_library();
+#endif
+  lmp->error->all(FLERR, "{} requires atom_style polyhedron", who);
+  return nullptr;
+}
+
+/* ----------------------------------------------------------------------
+   what the constructor of either atom style sets
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::setup_style()
+{
+  owner->mass_type = AtomVec::PER_ATOM;
+  owner->molecular = Atom::ATOMIC;
+  owner->forceclearflag = 0;
+
+  atom->radius_flag = atom->rmass_flag = atom->omega_flag = atom->torque_flag =
+      atom->angmom_flag = 1;
+  atom->quat_flag = atom->pshape_flag = 1;
+
+  // LAMMPS 2021's main() answers error->one (LAMMPSAbortException) with
+  // MPI_Abort and no flush: with the screen redirected to a file the message
+  // and the log were lost (issue 17). Line buffering keeps both; glibc
+  // allows it on a stream already in use (it changes only the flags).
+  if (screen) setvbuf(screen, nullptr, _IOLBF, BUFSIZ);
+  if (logfile) setvbuf(logfile, nullptr, _IOLBF, BUFSIZ);
+  check_dimension();
+
+  // ghosts get template index, scale, quaternion (+ radius and mass for the
+  // neighbor cutoff and the effective mass), never vertices (seed §2.6)
+  owner->fields_grow = (char *) "radius rmass omega angmom torque quat pshape pscale";
+  owner->fields_copy = (char *) "radius rmass omega angmom quat pshape pscale";
+  owner->fields_comm = (char *) "quat";
+  owner->fields_comm_vel = (char *) "quat omega angmom";
+  owner->fields_reverse = (char *) "torque";
+  owner->fields_border = (char *) "radius rmass quat pshape pscale";
+  owner->fields_border_vel = (char *) "radius rmass quat pshape pscale omega angmom";
+  owner->fields_exchange = (char *) "radius rmass omega angmom quat pshape pscale";
+  owner->fields_restart = (char *) "radius rmass omega angmom quat pshape pscale";
+  owner->fields_create = (char *) "radius rmass omega angmom quat pshape pscale";
+  // data file: atom-ID atom-type shape scale density x y z qw qx qy qz
+  owner->fields_data_atom = (char *) "id type pshape pscale rmass x quat";
+  owner->fields_data_vel = (char *) "id v angmom";
+}
+
+/* ----------------------------------------------------------------------
+   arguments: none from the user. Restart files store the templates as
+   "shape ID RECORD" triples here (AtomVec::argcopy is what write_restart
+   saves and read_restart hands back), so a restart needs no shape files.
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::process_args(int narg, char **arg)
+{
+  int iarg = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "shape") != 0 || iarg + 3 > narg)
+      error->all(FLERR, "Illegal atom_style polyhedron command: unexpected argument '{}' "
+                 "(define templates with polyhedron_shape)", arg[iarg]);
+    std::string err;
+    auto t = polydem::shape_from_record(arg[iarg + 2], err);
+    if (!t) error->all(FLERR, "atom_style polyhedron: corrupt shape record for '{}': {}",
+                       arg[iarg + 1], err);
+    templates.push_back(std::move(t));
+    template_ids.emplace_back(arg[iarg + 1]);
+    iarg += 3;
+  }
+  version++;
+}
+
+/* ----------------------------------------------------------------------
+   3-d only: the rigid-body integration and contacts are three-dimensional
+   (in 2-d particles left the plane)
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::init()
+{
+  check_dimension();
+  check_inserting_fixes();
+}
+
+void PolyShapeLibrary::check_dimension()
+{
+  if (domain->dimension != 3)
+    error->all(FLERR, "atom_style polyhedron: 3-d only, got 'dimension {}'", domain->dimension);
+}
+
+/* ----------------------------------------------------------------------
+   LAMMPS's inserting fixes give their atoms a sphere's radius and mass and
+   no shape, scale or orientation of ours (fix pour then segfaulted at its
+   first insertion): refused before the run starts
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::check_inserting_fixes()
+{
+  for (int i = 0; i < modify->nfix; i++) {
+    const std::string style = modify->fix[i]->style;
+    if (style == "pour" || style == "deposit")
+      error->all(FLERR,
+                 "fix {} cannot insert atom_style polyhedron particles (it creates atoms "
+                 "without a polyhedron's shape, scale, orientation and mass): use fix "
+                 "insert/polyhedron",
+                 style);
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+int PolyShapeLibrary::find_shape(const std::string &id) const
+{
+  for (int i = 0; i < (int) template_ids.size(); i++)
+    if (template_ids[i] == id) return i;
+  return -1;
+}
+
+int PolyShapeLibrary::add_shape(const std::string &id,
+                                std::unique_ptr<polydem::PolyShapeTemplate> t,
+                                const std::string &record)
+{
+  if (find_shape(id) >= 0)
+    error->all(FLERR, "polyhedron_shape: shape ID '{}' is already defined", id);
+  templates.push_back(std::move(t));
+  template_ids.push_back(id);
+  version++;
+
+  // append "shape ID RECORD" to the owner's stored arguments
+  char **newargs = new char *[owner->nargcopy + 3];
+  for (int i = 0; i < owner->nargcopy; i++) newargs[i] = owner->argcopy[i];
+  newargs[owner->nargcopy] = utils::strdup("shape");
+  newargs[owner->nargcopy + 1] = utils::strdup(id);
+  newargs[owner->nargcopy + 2] = utils::strdup(record);
+  delete[] owner->argcopy;
+  owner->argcopy = newargs;
+  owner->nargcopy += 3;
+  return (int) templates.size() - 1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PolyShapeLibrary::density(int i) const
+{
+  const auto v = templates[atom->pshape[i]]->view();
+  const double s = atom->pscale[i];
+  return atom->rmass[i] / (v.volume * s * s * s);
+}
+
+void PolyShapeLibrary::set_shape_scale(int i, int ishape, double scale)
+{
+  const double rho = density(i);
+  atom->pshape[i] = ishape;
+  atom->pscale[i] = scale;
+  const auto v = templates[ishape]->view();
+  atom->rmass[i] = rho * v.volume * scale * scale * scale;
+  atom->radius[i] = v.radius * scale;
+}
+
+void PolyShapeLibrary::inertia(int i, double *moments) const
+{
+  const auto v = templates[atom->pshape[i]]->view();
+  const double f = atom->rmass[i] * atom->pscale[i] * atom->pscale[i] / v.volume;
+  for (int k = 0; k < 3; k++) moments[k] = f * v.inertia[k];
+}
+
+// mass and moments of inertia of atom i are normal numbers, the mass at
+// most MASS_MAX (a zero mass gave NaN energies, a zero moment no rotation,
+// density 1e308 an infinite kinetic energy: m v^2 must not overflow)
+static constexpr double MASS_MAX = 1e250;
+bool PolyShapeLibrary::mass_is_normal(int i) const
+{
+  double m[3];
+  inertia(i, m);
+  const double mass = atom->rmass[i];
+  bool ok = std::isnormal(mass) && mass > 0.0 && mass <= MASS_MAX;
+  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(m[k]) && m[k] > 0.0;
+  return ok;
+}
+
+/* ----------------------------------------------------------------------
+   create_atoms: first template, scale 1, density 1, identity orientation
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::create_atom_post(int ilocal)
+{
+  if (templates.empty())
+    error->one(FLERR, "atom_style polyhedron: define a shape with polyhedron_shape "
+               "before creating atoms");
+  const auto v = templates[0]->view();
+  atom->pshape[ilocal] = 0;
+  atom->pscale[ilocal] = 1.0;
+  atom->rmass[ilocal] = v.volume;
+  atom->radius[ilocal] = v.radius;
+  double *q = atom->quat[ilocal];
+  q[0] = 1.0;
+  q[1] = q[2] = q[3] = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   read_data: shape index is 1-based (order of polyhedron_shape commands),
+   the mass column holds the density
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::data_atom_post(int ilocal)
+{
+  int *pshape = atom->pshape;
+  double *rmass = atom->rmass;
+  const int ishape = pshape[ilocal];
+  if (ishape < 1 || ishape > ntemplates())
+    error->one(FLERR, "Invalid shape index {} in Atoms section of data file: {} shape(s) "
+               "defined with polyhedron_shape", ishape, ntemplates());
+  pshape[ilocal] = ishape - 1;
+  const double s = atom->pscale[ilocal];
+  if (!(s > 0.0) || !std::isfinite(s))
+    error->one(FLERR, "Invalid scale {} in Atoms section of data file", s);
+  const double rho = rmass[ilocal];
+  if (!(rho > 0.0) || !std::isfinite(rho))
+    error->one(FLERR, "Invalid density {} in Atoms section of data file", rho);
+  const auto v = templates[ishape - 1]->view();
+  rmass[ilocal] = rho * v.volume * s * s * s;
+  atom->radius[ilocal] = v.radius * s;
+  if (!mass_is_normal(ilocal))
+    error->one(FLERR,
+               "Invalid density {} or scale {} in Atoms section of data file: the mass "
+               "{} must be in (0, 1e250] and the moments of inertia non-zero and finite",
+               rho, s, rmass[ilocal]);
+
+  double *q = atom->quat[ilocal];
+  const double n = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (!(n > 0.0) || !std::isfinite(n))
+    error->one(FLERR, "Invalid quaternion in Atoms section of data file");
+  // accept slightly unnormalised input (e.g. printed with few digits)
+  if (fabs(n - 1.0) > 1.0e-12)
+    for (int k = 0; k < 4; k++) q[k] /= n;
+
+  double *angmom = atom->angmom[ilocal], *omega = atom->omega[ilocal];
+  angmom[0] = angmom[1] = angmom[2] = 0.0;
+  omega[0] = omega[1] = omega[2] = 0.0;
+}
+
+/* ----------------------------------------------------------------------
+   Velocities section: v and angmom of atom i must be finite (an
+   overflowing number such as 1e999 parses as inf)
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::check_data_vel(int ilocal)
+{
+  const double *v = atom->v[ilocal], *angmom = atom->angmom[ilocal];
+  for (int k = 0; k < 3; k++)
+    if (!std::isfinite(v[k]) || !std::isfinite(angmom[k]))
+      error->one(FLERR,
+                 "Invalid velocity ({} {} {}) or angular momentum ({} {} {}) in "
+                 "Velocities section of data file: not finite",
+                 v[0], v[1], v[2], angmom[0], angmom[1], angmom[2]);
+}
+
+/* ----------------------------------------------------------------------
+   write_data: 1-based shape index, density in the mass column
+------------------------------------------------------------------------- */
+
+void PolyShapeLibrary::pack_data_pre(int ilocal)
+{
+  pshape_one = atom->pshape[ilocal];
+  rmass_one = atom->rmass[ilocal];
+  atom->rmass[ilocal] = density(ilocal);
+  atom->pshape[ilocal] = pshape_one + 1;
+}
+
+void PolyShapeLibrary::pack_data_post(int ilocal)
+{
+  atom->pshape[ilocal] = pshape_one;
+  atom->rmass[ilocal] = rmass_one;
+}
+
+/* ----------------------------------------------------------------------
+   compute property/atom names: shape scale density quatw quati quatj quatk
+------------------------------------------------------------------------- */
+
+int PolyShapeLibrary::property_atom(const char *name)
+{
+  if (strcmp(name, "shape") == 0) return 0;
+  if (strcmp(name, "scale") == 0) return 1;
+  if (strcmp(name, "density") == 0) return 2;
+  if (strcmp(name, "quatw") == 0) return 3;
+  if (strcmp(name, "quati") == 0) return 4;
+  if (strcmp(name, "quatj") == 0) return 5;
+  if (strcmp(name, "quatk") == 0) return 6;
+  return -1;
+}
+
+void PolyShapeLibrary::pack_property_atom(int index, double *buf, int nvalues, int groupbit)
+{
+  const int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  int n = 0;
+  for (int i = 0; i < nlocal; i++) {
+    double value = 0.0;
+    if (mask[i] & groupbit) {
+      if (index == 0) value = atom->pshape[i] + 1;
+      else if (index == 1) value = atom->pscale[i];
+      else if (index == 2) value = density(i);
+      else value = atom->quat[i][index - 3];
+    }
+    buf[n] = value;
+    n += nvalues;
+  }
+}
