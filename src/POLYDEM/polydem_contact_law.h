@@ -420,7 +420,7 @@ POLYDEM_FN ContactLaw<T> feng_law(T Ei, T nui, T Vi, T Ej, T nuj, T Vj, const Da
                                   T mu, T core, int twist)
 {
   const T f = T(3) / (T(4) * T(3.14159265358979323846));
-  const T Ri = cbrt(f * Vi), Rj = cbrt(f * Vj);
+  const T Ri = cbrt(f * Vi), Rj = Vj == Vi ? Ri : cbrt(f * Vj);    // walls, equal grains: one cbrt
   ContactLaw<T> L;
   L.normal.kind = NORMAL_FENG;
   L.normal.K = Ei / Ri + Ej / Rj;
