@@ -201,15 +201,8 @@ template <typename T> struct WallEllipsoidAccumulate {
     out->ntri++;
     const T *pl = g->plane + 4 * t;
     const Vec3<T> nw = T(side) * make_vec3(pl[0], pl[1], pl[2]);
-    int k = -1;
-    T best = T(-2);
-    for (int i = 0; i < out->n; ++i) {
-      const T c = dot(out->p[i].nseed, nw);
-      if (c > best) {
-        best = c;
-        k = i;
-      }
-    }
+    T best;
+    int k = wall_closest_patch(*out, nw, best);
     if (k < 0 || best < cosmax) {
       if (out->n < WALL_MAX_PATCH) {
         k = out->n++;

@@ -104,6 +104,24 @@ constexpr int NEAR_REACH = 8;    // query reach r + NEAR_REACH x skin at a build
 constexpr int NEAR_REBUILD = -1;
 constexpr int NEAR_OVERFLOW = -2;
 
+// The patch whose first facet's normal is closest to n (largest cosine,
+// returned in best), -1 if there is none yet; the caller opens a new patch
+// if best < cos(patch angle). Polyhedra and ellipsoids (polydem_wall_ellipsoid.h).
+template <typename T>
+POLYDEM_FN int wall_closest_patch(const WallPatches<T> &P, const Vec3<T> &n, T &best)
+{
+  int k = -1;
+  best = T(-2);
+  for (int i = 0; i < P.n; ++i) {
+    const T c = dot(P.p[i].nseed, n);
+    if (c > best) {
+      best = c;
+      k = i;
+    }
+  }
+  return k;
+}
+
 template <typename T, int MF, int ME> struct WallAccumulate {
   const PosedShape<T> *a;
   const MeshGridView<T> *g;
@@ -399,15 +417,8 @@ template <typename T, int MF, int ME> struct WallAccumulate {
       return;
     }
     out->ntri++;
-    int k = -1;
-    T best = T(-2);
-    for (int i = 0; i < out->n; ++i) {
-      const T c = dot(out->p[i].nseed, r.normal);
-      if (c > best) {
-        best = c;
-        k = i;
-      }
-    }
+    T best;
+    int k = wall_closest_patch(*out, r.normal, best);
     if (k < 0 || best < cosmax) {
       if (out->n < WALL_MAX_PATCH) {
         k = out->n++;

@@ -19,32 +19,6 @@ using namespace wall_test;
 
 namespace {
 
-std::vector<double> gather(Lmp &l, MPI_Comm comm)
-{
-  std::vector<double> mine;
-  for (auto &kv : l.local_state()) {
-    mine.push_back((double) kv.first);
-    for (int k = 0; k < 3; k++) mine.push_back(kv.second.x[k]);
-    for (int k = 0; k < 3; k++) mine.push_back(kv.second.v[k]);
-  }
-  int np;
-  MPI_Comm_size(comm, &np);
-  int n = (int) mine.size();
-  std::vector<int> counts(np), displs(np);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int p = 0; p < np; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  std::vector<std::vector<double>> recs;
-  for (int i = 0; i < total; i += 7) recs.emplace_back(all.begin() + i, all.begin() + i + 7);
-  std::sort(recs.begin(), recs.end());
-  std::vector<double> out;
-  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
-  return out;
-}
-
 struct Result {
   std::vector<double> state;
   double fmesh[3];
@@ -71,7 +45,7 @@ Result run(MPI_Comm comm, const std::string &data, const std::string &stl, const
   }
   r.natoms = (double) l.lmp->atom->natoms;
   for (int k = 0; k < 3; k++) r.fmesh[k] = fix->compute_vector(k);
-  r.state = gather(l, comm);
+  r.state = gathered_state(l, comm);
   return r;
 }
 

@@ -9,6 +9,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <fstream>
 #include <random>
 #include <string>
@@ -86,6 +87,34 @@ inline std::vector<std::string> scene_setup(const std::string &data)
           "pair_coeff * * 1.0e7 0.3 0.5 0.5", "neighbor 0.002 bin",
           "neigh_modify every 1 delay 0 check yes", "fix nve all nve/polyhedron",
           "fix g all gravity 9.81 vector 0 0 -1", "timestep 2e-5"};
+}
+
+// every rank's atoms as (ID, x, v) records sorted by ID, on every rank (the
+// 1 vs N ranks comparisons)
+inline std::vector<double> gathered_state(polydem_test::Lmp &l, MPI_Comm comm)
+{
+  std::vector<double> mine;
+  for (auto &kv : l.local_state()) {
+    mine.push_back((double) kv.first);
+    for (int k = 0; k < 3; k++) mine.push_back(kv.second.x[k]);
+    for (int k = 0; k < 3; k++) mine.push_back(kv.second.v[k]);
+  }
+  int np;
+  MPI_Comm_size(comm, &np);
+  int n = (int) mine.size();
+  std::vector<int> counts(np), displs(np);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  int total = 0;
+  for (int p = 0; p < np; p++) displs[p] = total, total += counts[p];
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, comm);
+  std::vector<std::vector<double>> recs;
+  for (int i = 0; i < total; i += 7) recs.emplace_back(all.begin() + i, all.begin() + i + 7);
+  std::sort(recs.begin(), recs.end());
+  std::vector<double> out;
+  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
+  return out;
 }
 
 }    // namespace wall_test
