@@ -76,7 +76,7 @@ if [ ! -f "$ksrc/.polydem-patched" ]; then
   sha256sum "$repo/tools/kokkos-cuda13.patch" | cut -d' ' -f1 > "$ksrc/.polydem-patched"
 fi
 mkdir -p "$kit/kokkos"
-(cd "$ksrc" && tar -c --exclude=./doc --exclude=./example --exclude=./benchmarks \
+(cd "$ksrc" && tar -c --exclude=./doc --exclude=./benchmarks \
   --exclude='./*/unit_test' --exclude='./*/unit_tests' --exclude='./*/perf_test' . ) |
   tar -x -C "$kit/kokkos"
 
