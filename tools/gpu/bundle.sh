@@ -10,7 +10,7 @@
 #     polydem/    this repository at HEAD (git archive) + the meshes the checks use
 #     lammps/     the LAMMPS source POLYDEM builds against (29 Sep 2021, Debian's
 #                 source package): top-level src/ files, KOKKOS, ASPHERE,
-#                 GRANULAR, STUBS (MPI stubs), cmake/
+#                 GRANULAR, STUBS (MPI stubs), fmt, cmake/
 #     kokkos/     Kokkos 3.4.01 (Debian's trilinos source) with our CUDA 13 patch
 #     deps/       CGAL, Boost (the headers our shape code includes), GMP and MPFR
 #                 (headers and x86-64 shared libraries, glibc >= 2.14)
@@ -58,7 +58,7 @@ mkdir -p "$kit/lammps/src"
 cp -r "$lsrc/cmake" "$kit/lammps/"
 cp "$lsrc/LICENSE" "$lsrc/README" "$kit/lammps/"
 find "$lsrc/src" -maxdepth 1 -type f -exec cp {} "$kit/lammps/src/" \;
-for p in KOKKOS ASPHERE GRANULAR STUBS; do cp -r "$lsrc/src/$p" "$kit/lammps/src/"; done
+for p in KOKKOS ASPHERE GRANULAR STUBS fmt; do cp -r "$lsrc/src/$p" "$kit/lammps/src/"; done
 
 # --- Kokkos ------------------------------------------------------------------------
 ksrc="$cache/kokkos-3.4.01-src"
