@@ -177,7 +177,7 @@ build_kokkos() {
     cmake --build "$work/kokkos-$mode-build" -j "$jobs" &&
     cmake --install "$work/kokkos-$mode-build"
 }
-step kokkos 60 400 build_kokkos || { note "stopped: no Kokkos"; exit 1; }
+step kokkos 60 100000 build_kokkos || { note "stopped: no Kokkos"; exit 1; }
 kconfig=$(dirname "$(find "$kprefix" -name KokkosConfig.cmake | head -n1)")
 
 # --- 2. LAMMPS + POLYDEM -----------------------------------------------------------------
@@ -194,7 +194,7 @@ build_lammps() {
   cmake -S "$src" -B "$build" "${gen[@]}" "${lmp_cfg[@]}" &&
     cmake --build "$build" -j "$jobs" --target lmp
 }
-step lammps 120 480 build_lammps || { note "stopped: no lmp"; exit 1; }
+step lammps 120 100000 build_lammps || { note "stopped: no lmp"; exit 1; }
 lmp=$build/lmp
 
 # the kernel check program (unittest/cuda/kernels_cuda.cpp)
