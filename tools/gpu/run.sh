@@ -242,7 +242,8 @@ kk_case() {
     exit $rc
   )
 }
-step kk_pair 30 120 kk_case pair "$src/bench/in.dodeca_dense" -var nx 8 -var ny 8 -var nz 8 -var steps 50
+step kk_pair 30 120 kk_case pair "$src/bench/in.dodeca_dense" -var nx 8 -var ny 8 -var nz 8 -var steps 50 \
+  -var every 10
 step kk_wall 30 120 kk_case wall "$src/bench/wall_mesh/in.floor" -var mesh "$data/floor10k.stl" \
   -var steps1 1000 -var steps2 500 -var every 250
 step kk_ellipsoid 30 120 kk_case ellipsoid "$src/bench/in.ellipsoid_cundall" -var nside 6 \
@@ -254,7 +255,7 @@ rate() {
 }
 example() {
   (cd "$scratch" && cp -r "$src/examples/hopper" . && cd hopper &&
-    "$lmp" "${kkargs[@]}" -in in.hopper -log log.kk -screen none &&
+    "$lmp" "${kkargs[@]}" -in in.hopper -var pot "$pot" -log log.kk -screen none &&
     cp log.kk "$out/log.hopper.kk" &&
     echo "BENCH $(rate log.kk) particle-steps/s (last run)")
 }
