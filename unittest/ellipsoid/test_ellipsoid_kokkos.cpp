@@ -24,7 +24,8 @@ using polydem_test::num;
 
 namespace {
 
-const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
+const std::vector<std::string> KK =
+    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
 
 int me()
 {

@@ -29,7 +29,7 @@ using polydem_test::potentials;
 
 namespace {
 
-const std::vector<std::string> KK = {"-k", "on", "-sf", "kk"};
+const std::vector<std::string> KK = polydem_test::kk({"-sf", "kk"});
 
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string> &b)
 {

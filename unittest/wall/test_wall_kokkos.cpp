@@ -18,7 +18,8 @@ using namespace wall_test;
 
 namespace {
 
-const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
+const std::vector<std::string> KK =
+    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
 
 struct Snapshot {
   std::map<long, std::vector<double>> atoms;    // f, torque, x, v, wall history
