@@ -45,7 +45,7 @@ esac
 build="$cache/kokkos-$variant-build"
 prefix="$cache/kokkos-$variant"
 stamp="$prefix/.polydem-stamp"
-want_stamp="kokkos=3.4.01 variant=$variant opts=${opts[*]} cxx=$cxx:$("$cxx" -dumpfullversion)"
+want_stamp="kokkos=3.4.01 variant=$variant opts=${opts[*]} cxx=$cxx:$("$cxx" -dumpfullversion) script=$(sha256sum "${BASH_SOURCE[0]}" | cut -c1-16)"
 done_() {
   [ -f "$stamp" ] && [ "$(head -n1 "$stamp")" = "$want_stamp" ] &&
     [ -f "$prefix/lib/cmake/Kokkos/KokkosConfig.cmake" ]
@@ -63,6 +63,39 @@ if done_; then
 fi
 t0=$(date +%s)
 src=$("$here/kokkos-source.sh" "$cache" | tail -n1)
+if [ "$variant" = tsan ]; then
+  # Kokkos 3.4's Threads backend hands work and reductions between threads
+  # through volatile int flags (m_pool_state) and spin loops: correct on x86,
+  # but invisible to TSan, which then reports every handshake and all data
+  # passed through it (4.x uses atomics). Make the flag accesses GCC atomic
+  # builtins (release stores, acquire loads) in a copy of the source.
+  tsrc="$cache/kokkos-tsan-src"
+  rm -rf "$tsrc"
+  cp -a "$src" "$tsrc"
+  src=$tsrc
+  T="$src/core/src/Threads"
+  # stores: X.m_pool_state = ThreadsExec::S;  X->state() = ThreadsExec::S;
+  sed -E -i 's/^(\s*)([^=;]*(m_pool_state|state\(\))) *= *(ThreadsExec::[A-Za-z]+);/\1__atomic_store_n(\&(\2), \4, __ATOMIC_RELEASE);/' \
+    "$T"/Kokkos_ThreadsExec.cpp "$T"/Kokkos_ThreadsExec.hpp "$T"/Kokkos_ThreadsTeam.hpp
+  # loads: the spin-wait loops and the two plain reads of a flag
+  sed -E -i 's/while \(value (==|!=) flag\)/while (value \1 __atomic_load_n(\&flag, __ATOMIC_ACQUIRE))/' \
+    "$src"/core/src/impl/Kokkos_Spinwait.hpp "$T"/Kokkos_ThreadsExec_base.cpp
+  sed -E -i 's/ThreadsExec::Active == this_thread\.m_pool_state/ThreadsExec::Active == __atomic_load_n(\&this_thread.m_pool_state, __ATOMIC_ACQUIRE)/;
+             s/if \(s_threads_process\.m_pool_state == ThreadsExec::Terminating\)/if (__atomic_load_n(\&s_threads_process.m_pool_state, __ATOMIC_ACQUIRE) == ThreadsExec::Terminating)/' \
+    "$T"/Kokkos_ThreadsExec.cpp
+  # the CAS loops of atomic_add etc. on double/float start from a plain read
+  # of the target, which races (benignly: the CAS checks it) with the other
+  # threads' CAS; make it an atomic relaxed load
+  sed -E -i 's/^(\s*)oldval\.t = \*dest;/\1__atomic_load(dest, \&oldval.t, __ATOMIC_RELAXED);/' \
+    "$src"/core/src/impl/Kokkos_Atomic_*.hpp
+  left=$(grep -nE '(m_pool_state|state\(\)) *= *ThreadsExec::|while \(value [!=]= flag\)' \
+           "$T"/*.cpp "$T"/*.hpp "$src"/core/src/impl/Kokkos_Spinwait.hpp || true)
+  left+=$(grep -n 'oldval\.t = \*dest;' "$src"/core/src/impl/Kokkos_Atomic_*.hpp || true)
+  if [ -n "$left" ]; then
+    log "plain flag accesses left after the TSan edits:"; echo "$left" >&2; exit 1
+  fi
+  log "TSan edits: $(grep -c __ATOMIC_RELEASE "$T"/*.cpp "$T"/*.hpp | awk -F: '{s += $2} END {print s}') atomic stores"
+fi
 launcher=()
 if command -v ccache > /dev/null 2>&1; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER="$(command -v ccache)")

@@ -34,7 +34,7 @@ targets=(lmp test_kokkos_integrator test_pair_kokkos test_contact_computes test_
          dualview_check planted_race)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 echo "tsan.sh: build took $(( $(date +%s) - start )) s"
-export TSAN_OPTIONS="exitcode=66 halt_on_error=0 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
+export TSAN_OPTIONS="exitcode=66 halt_on_error=0 second_deadlock_stack=1 suppressions=$PWD/unittest/threads/tsan.supp ${TSAN_OPTIONS:-}"
 # one test at a time: each runs $threads threads
 ctest --test-dir "$build" --output-on-failure -R '(_threads$|^tsan\.|^threads\.)'
 echo "tsan.sh: build + tests took $(( $(date +%s) - start )) s"
