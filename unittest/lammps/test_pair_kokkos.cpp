@@ -4,7 +4,7 @@
 // with small random displacements, so that most neighbours overlap a little;
 // friction on, so that the contact history matters. Per-atom forces and
 // torques after "run 0", and positions, velocities, forces and torques after
-// 100 steps, of "-k on -sf kk" (Kokkos Serial here) must agree with the plain
+// 100 steps, of "-k on -sf kk" (1 thread, _threads: 2) must agree with the plain
 // styles to 1e-12 relative; so must the potential energy, the pressure (virial)
 // and the number of contacts. Run on 1 rank and under mpirun -np 2 (both
 // instances then use the same 2-rank decomposition).
