@@ -155,24 +155,53 @@ file(COPY_FILE ${POLYDEM_STAGE}/cmake/CMakeLists.txt.tmp ${POLYDEM_STAGE}/cmake/
 file(REMOVE ${POLYDEM_STAGE}/cmake/CMakeLists.txt.tmp)
 
 # ---------------------------------------------------------------------------
-# 3. Kokkos: Debian's libtrilinos-kokkos-dev (Serial) unless Kokkos_DIR is given.
-# Debian's KokkosConfig.cmake points its include directory at /usr/lib/include
-# (it forgets the multiarch level); use a corrected copy (DESIGN.md section 5).
+# 3. Kokkos. POLYDEM_KOKKOS_BACKEND (unless Kokkos_DIR is given):
+#   openmp  (default) Kokkos 3.4.01 Serial + OpenMP, built from Debian's trilinos
+#           source package into POLYDEM_CACHE_DIR/kokkos-openmp at configure time
+#           (tools/build-kokkos-host.sh; the source is fetched with apt once, as
+#           for the CUDA compile check): `lmp -k on t N` runs N threads
+#   tsan    Serial + Threads, ThreadSanitizer, Kokkos debug checks (tools/tsan.sh)
+#   debian  Debian's libtrilinos-kokkos-dev (Serial only: `t N` runs serially).
+#           Its KokkosConfig.cmake points its include directory at
+#           /usr/lib/include (it forgets the multiarch level); a corrected copy
+#           is used (DESIGN.md section 5).
 option(POLYDEM_KOKKOS "Build the KOKKOS package and the /kk styles" ON)
-if(POLYDEM_KOKKOS AND NOT Kokkos_DIR)
-  set(_deb_kokkos /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake)
-  if(NOT EXISTS ${_deb_kokkos}/Kokkos/KokkosConfig.cmake)
-    message(FATAL_ERROR "POLYDEM: Kokkos not found: install libtrilinos-kokkos-dev (tools/install-deps.sh) "
-                        "or pass -DKokkos_DIR=..., or -DPOLYDEM_KOKKOS=OFF")
+set(POLYDEM_KOKKOS_BACKEND openmp CACHE STRING "Kokkos for the KOKKOS package: openmp, tsan or debian")
+set_property(CACHE POLYDEM_KOKKOS_BACKEND PROPERTY STRINGS openmp tsan debian)
+# Kokkos_DIR chosen here on an earlier configure is chosen again (the backend may have changed)
+if(POLYDEM_KOKKOS AND (NOT Kokkos_DIR OR Kokkos_DIR STREQUAL "${_POLYDEM_KOKKOS_AUTO_DIR}"))
+  if(POLYDEM_KOKKOS_BACKEND STREQUAL "debian")
+    set(_deb_kokkos /usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake)
+    if(NOT EXISTS ${_deb_kokkos}/Kokkos/KokkosConfig.cmake)
+      message(FATAL_ERROR "POLYDEM: Kokkos not found: install libtrilinos-kokkos-dev (tools/install-deps.sh) "
+                          "or pass -DKokkos_DIR=..., or -DPOLYDEM_KOKKOS=OFF")
+    endif()
+    set(_fixed ${CMAKE_BINARY_DIR}/kokkos-config)
+    file(READ ${_deb_kokkos}/Kokkos/KokkosConfig.cmake _kc)
+    string(REPLACE "\${CMAKE_CURRENT_LIST_DIR}/../" "${_deb_kokkos}/" _kc "${_kc}")
+    string(REPLACE "\${CMAKE_CURRENT_LIST_DIR}/../../../../include/trilinos" "/usr/include/trilinos" _kc "${_kc}")
+    string(REPLACE "\${KOKKOS_IMPORT_PREFIX}/include" "/usr/include/trilinos" _kc "${_kc}")
+    file(WRITE ${_fixed}/KokkosConfig.cmake "${_kc}")
+    file(COPY_FILE ${_deb_kokkos}/Kokkos/KokkosConfigVersion.cmake ${_fixed}/KokkosConfigVersion.cmake)
+    set(_kdir ${_fixed})
+  elseif(POLYDEM_KOKKOS_BACKEND MATCHES "^(openmp|tsan)$")
+    message(STATUS "POLYDEM: Kokkos 3.4.01 (${POLYDEM_KOKKOS_BACKEND}) in ${POLYDEM_CACHE_DIR}/kokkos-${POLYDEM_KOKKOS_BACKEND}")
+    execute_process(
+      COMMAND ${CMAKE_COMMAND} -E env CMAKE=${CMAKE_COMMAND} CXX=${CMAKE_CXX_COMPILER}
+              bash ${CMAKE_SOURCE_DIR}/tools/build-kokkos-host.sh ${POLYDEM_CACHE_DIR} ${POLYDEM_KOKKOS_BACKEND}
+      RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
+    if(NOT _rc EQUAL 0)
+      message(FATAL_ERROR "POLYDEM: building Kokkos (${POLYDEM_KOKKOS_BACKEND}) failed:\n${_out}\n${_err}\n"
+                          "Run tools/install-deps.sh first, or -DPOLYDEM_KOKKOS_BACKEND=debian, or -DKokkos_DIR=...")
+    endif()
+    string(STRIP "${_out}" _out)
+    string(REGEX REPLACE ".*\n" "" _prefix "${_out}")
+    set(_kdir ${_prefix}/lib/cmake/Kokkos)
+  else()
+    message(FATAL_ERROR "POLYDEM_KOKKOS_BACKEND must be openmp, tsan or debian (got '${POLYDEM_KOKKOS_BACKEND}')")
   endif()
-  set(_fixed ${CMAKE_BINARY_DIR}/kokkos-config)
-  file(READ ${_deb_kokkos}/Kokkos/KokkosConfig.cmake _kc)
-  string(REPLACE "\${CMAKE_CURRENT_LIST_DIR}/../" "${_deb_kokkos}/" _kc "${_kc}")
-  string(REPLACE "\${CMAKE_CURRENT_LIST_DIR}/../../../../include/trilinos" "/usr/include/trilinos" _kc "${_kc}")
-  string(REPLACE "\${KOKKOS_IMPORT_PREFIX}/include" "/usr/include/trilinos" _kc "${_kc}")
-  file(WRITE ${_fixed}/KokkosConfig.cmake "${_kc}")
-  file(COPY_FILE ${_deb_kokkos}/Kokkos/KokkosConfigVersion.cmake ${_fixed}/KokkosConfigVersion.cmake)
-  set(Kokkos_DIR ${_fixed} CACHE PATH "Kokkos CMake config directory" FORCE)
+  set(Kokkos_DIR ${_kdir} CACHE PATH "Kokkos CMake config directory" FORCE)
+  set(_POLYDEM_KOKKOS_AUTO_DIR ${_kdir} CACHE INTERNAL "Kokkos_DIR chosen by POLYDEM_KOKKOS_BACKEND")
 endif()
 
 # ---------------------------------------------------------------------------

@@ -8,6 +8,7 @@
 #
 #   source : packages/kokkos of Debian's trilinos 13.2.0-4 source package,
 #            fetched with tools/fetch-debian-source.sh into CACHE_DIR/src/trilinos
+#            and extracted by tools/kokkos-source.sh
 #   patch  : tools/kokkos-cuda13.patch (CUDA 13 fixes)
 #   build  : CACHE_DIR/kokkos-cuda-build, compiler = Kokkos's bin/nvcc_wrapper
 #            (installed as CACHE_DIR/kokkos-cuda/bin/nvcc_wrapper), ccache if present
@@ -31,7 +32,6 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 mkdir -p "$1"
 cache=$(cd "$1" && pwd)
 
-tri_pkg=trilinos
 tri_version=13.2.0-4
 patch_file="$here/kokkos-cuda13.patch"
 jobs=${POLYDEM_JOBS:-2}
@@ -93,19 +93,10 @@ fi
 
 t0=$(date +%s)
 
-# --- 1. source: only packages/kokkos, patched --------------------------------
-if [ ! -f "$src/.polydem-patched" ] || [ "$(cat "$src/.polydem-patched")" != "$patch_sum" ]; then
-  tarball=$("$here/fetch-debian-source.sh" "$tri_pkg" "$tri_version" "$cache/src/$tri_pkg" | head -n1)
-  log "extracting packages/kokkos from $(basename "$tarball")"
-  tmp="$cache/.kokkos-extract.$$"
-  rm -rf "$tmp" "$src"
-  mkdir -p "$tmp"
-  tar -xf "$tarball" -C "$tmp" --wildcards --no-wildcards-match-slash '*/packages/kokkos'
-  mv "$tmp"/*/packages/kokkos "$src"
-  rm -rf "$tmp"
-  log "applying $(basename "$patch_file")"
-  patch -p1 -d "$src" --forward --batch < "$patch_file" >&2
-  echo "$patch_sum" > "$src/.polydem-patched"
+# --- 1. source: only packages/kokkos, patched (tools/kokkos-source.sh) ----
+old_src_sum=$(cat "$src/.polydem-patched" 2>/dev/null || true)
+"$here/kokkos-source.sh" "$cache" > /dev/null
+if [ "$old_src_sum" != "$patch_sum" ]; then
   rm -rf "$build"    # configured from the old tree
 fi
 

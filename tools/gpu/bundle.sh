@@ -61,20 +61,7 @@ find "$lsrc/src" -maxdepth 1 -type f -exec cp {} "$kit/lammps/src/" \;
 for p in KOKKOS ASPHERE GRANULAR STUBS fmt; do cp -r "$lsrc/src/$p" "$kit/lammps/src/"; done
 
 # --- Kokkos ------------------------------------------------------------------------
-ksrc="$cache/kokkos-3.4.01-src"
-if [ ! -f "$ksrc/.polydem-patched" ]; then
-  log "fetching and patching Kokkos 3.4.01 (tools/build-kokkos-cuda.sh does it)"
-  # the CUDA build needs nvcc; only its first step (source + patch) is wanted
-  # here, so reproduce that step
-  tarball=$(bash "$repo/tools/fetch-debian-source.sh" trilinos 13.2.0-4 "$cache/src/trilinos" | head -n1)
-  tmp=$(mktemp -d)
-  tar -xf "$tarball" -C "$tmp" --wildcards --no-wildcards-match-slash '*/packages/kokkos'
-  rm -rf "$ksrc"
-  mv "$tmp"/*/packages/kokkos "$ksrc"
-  rm -rf "$tmp"
-  patch -p1 -d "$ksrc" --forward --batch < "$repo/tools/kokkos-cuda13.patch" >&2
-  sha256sum "$repo/tools/kokkos-cuda13.patch" | cut -d' ' -f1 > "$ksrc/.polydem-patched"
-fi
+ksrc=$(bash "$repo/tools/kokkos-source.sh" "$cache" | tail -n1)    # fetched and patched if missing
 mkdir -p "$kit/kokkos"
 (cd "$ksrc" && tar -c --exclude=./doc --exclude=./benchmarks \
   --exclude='./*/unit_test' --exclude='./*/unit_tests' --exclude='./*/perf_test' . ) |

@@ -1,4 +1,4 @@
-// pair_style ellipsoid/kk (Kokkos Serial) against plain pair_style ellipsoid,
+// pair_style ellipsoid/kk (Kokkos) against plain pair_style ellipsoid,
 // and 1 vs 2 MPI ranks (issue 6, acceptance 4). A gas of 216 prolate
 // ellipsoids (xi = 2, solid fraction 0.1, v_rms 5 m/s, e_n = 0.9) crossing
 // periodic and subdomain boundaries.
@@ -24,7 +24,8 @@ using polydem_test::num;
 
 namespace {
 
-const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
+const std::vector<std::string> KK =
+    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
 
 int me()
 {

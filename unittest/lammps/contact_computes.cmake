@@ -3,6 +3,7 @@
 polydem_lammps_test(test_contact_computes test_contact_computes.cpp)
 if(POLYDEM_KOKKOS)
   add_test(NAME lammps.contact_computes COMMAND test_contact_computes)
+  polydem_kk_threads_test(lammps.contact_computes 5 test_contact_computes)
   add_test(NAME lammps.contact_computes_2_ranks
     COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2
             $<TARGET_FILE:test_contact_computes>)

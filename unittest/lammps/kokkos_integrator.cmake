@@ -4,6 +4,7 @@
 if(POLYDEM_KOKKOS)
   polydem_lammps_test(test_kokkos_integrator test_kokkos_integrator.cpp)
   add_test(NAME lammps.kokkos_vs_plain COMMAND test_kokkos_integrator)
+  polydem_kk_threads_test(lammps.kokkos_vs_plain 3 test_kokkos_integrator)
   # /kk on 2 ranks: exchange and borders between ranks, against plain on 1 rank
   add_test(NAME lammps.kokkos_2_ranks
     COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2

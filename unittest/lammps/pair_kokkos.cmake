@@ -9,6 +9,7 @@ if(POLYDEM_KOKKOS)
   endif()
   target_link_libraries(test_pair_kokkos PRIVATE Kokkos::kokkos)
   add_test(NAME lammps.pair_kokkos_vs_plain COMMAND test_pair_kokkos)
+  polydem_kk_threads_test(lammps.pair_kokkos_vs_plain 4 test_pair_kokkos)
   # both instances on the same 2-rank decomposition (atoms migrate between ranks)
   add_test(NAME lammps.pair_kokkos_2_ranks
     COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2

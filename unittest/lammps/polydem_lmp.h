@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -37,6 +38,26 @@ inline std::string read_text(const std::string &path)
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+// "-k on" for the /kk runs, plus "t N" when POLYDEM_KK_THREADS=N is set (the
+// *_threads ctest entries run the /kk tests with N = 2 real threads), then rest
+inline std::vector<std::string> kk(const std::vector<std::string> &rest)
+{
+  std::vector<std::string> a = {"-k", "on"};
+  if (const char *t = std::getenv("POLYDEM_KK_THREADS")) {
+    a.push_back("t");
+    a.push_back(t);
+  }
+  a.insert(a.end(), rest.begin(), rest.end());
+  return a;
+}
+
+// the thread count the /kk runs ask for (1 unless POLYDEM_KK_THREADS is set)
+inline int kk_threads()
+{
+  const char *t = std::getenv("POLYDEM_KK_THREADS");
+  return t ? std::atoi(t) : 1;
 }
 
 class Lmp {

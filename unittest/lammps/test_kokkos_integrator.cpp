@@ -1,7 +1,7 @@
 // atom_style polyhedron/kk + fix nve/polyhedron/kk against the plain styles
 // (issue 2, acceptance item 3): a few hundred randomly oriented, spinning
 // polyhedra of two shapes in a periodic box, non-interacting, run with
-// "-k on -sf kk" (Kokkos Serial here) and without; positions, image flags,
+// "-k on -sf kk" (1 thread, _threads: 2) and without; positions, image flags,
 // quaternions, angular momenta, velocities and angular velocities must agree
 // to 1e-12 relative after many steps with particles crossing periodic (and,
 // on 2 ranks, subdomain) boundaries, for each Kokkos communication mode.
@@ -29,7 +29,7 @@ using polydem_test::potentials;
 
 namespace {
 
-const std::vector<std::string> KK = {"-k", "on", "-sf", "kk"};
+const std::vector<std::string> KK = polydem_test::kk({"-sf", "kk"});
 
 std::vector<std::string> with(std::vector<std::string> a, const std::vector<std::string> &b)
 {

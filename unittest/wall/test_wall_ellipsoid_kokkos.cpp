@@ -1,4 +1,4 @@
-// fix wall/mesh/kk (Kokkos Serial) against plain fix wall/mesh for
+// fix wall/mesh/kk (Kokkos) against plain fix wall/mesh for
 // ellipsoids (issue 16): 18 ellipsoids in a closed box mesh, translating or
 // rotating (45 rpm), a curved floor with per-triangle forces, friction and
 // damping, 1,500 steps (30 or more wall contacts summed over 150 samples):
@@ -19,7 +19,8 @@ using namespace wall_test;
 
 namespace {
 
-const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
+const std::vector<std::string> KK =
+    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
 
 struct Snapshot {
   std::map<long, std::vector<double>> atoms;    // f, torque, x, v

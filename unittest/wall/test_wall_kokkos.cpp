@@ -1,4 +1,4 @@
-// fix wall/mesh/kk (Kokkos Serial) against plain fix wall/mesh (acceptance
+// fix wall/mesh/kk (Kokkos) against plain fix wall/mesh (acceptance
 // 6): dodecahedra in a closed box mesh, translating or rotating (45 rpm),
 // with friction and damping, 500 steps: per-atom forces and torques to 1e-12
 // of the largest, positions and velocities to 1e-12, the mesh's global
@@ -18,7 +18,8 @@ using namespace wall_test;
 
 namespace {
 
-const std::vector<std::string> KK = {"-k", "on", "-sf", "kk", "-pk", "kokkos", "newton", "off"};
+const std::vector<std::string> KK =
+    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
 
 struct Snapshot {
   std::map<long, std::vector<double>> atoms;    // f, torque, x, v, wall history

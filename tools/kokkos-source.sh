@@ -1,0 +1,49 @@
+#!/bin/bash
+# kokkos-source.sh CACHE_DIR
+#
+# Makes sure CACHE_DIR/kokkos-3.4.01-src holds Kokkos 3.4.01, i.e.
+# packages/kokkos of Debian's trilinos 13.2.0-4 source package (fetched with
+# tools/fetch-debian-source.sh into CACHE_DIR/src/trilinos, 166 MB, apt
+# verifies it), patched with tools/kokkos-cuda13.patch (CUDA 13 only; the
+# host backends are unchanged). Prints the source directory (last line of
+# stdout). Used by build-kokkos-cuda.sh (CUDA compile check) and
+# build-kokkos-host.sh (the Kokkos that LAMMPS is built against).
+# Idempotent; concurrent runs serialise on CACHE_DIR/.kokkos-src.lock.
+set -euo pipefail
+{
+if [ $# -ne 1 ]; then
+  echo "usage: $0 CACHE_DIR" >&2
+  exit 2
+fi
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+mkdir -p "$1"
+cache=$(cd "$1" && pwd)
+tri_pkg=trilinos
+tri_version=13.2.0-4
+patch_file="$here/kokkos-cuda13.patch"
+src="$cache/kokkos-3.4.01-src"
+log() { echo "kokkos-source: $*" >&2; }
+patch_sum=$(sha256sum "$patch_file" | cut -d' ' -f1)
+ready() { [ -f "$src/.polydem-patched" ] && [ "$(cat "$src/.polydem-patched")" = "$patch_sum" ]; }
+if ready; then
+  echo "$src"
+  exit 0
+fi
+exec 8> "$cache/.kokkos-src.lock"
+flock 8
+if ! ready; then
+  tarball=$("$here/fetch-debian-source.sh" "$tri_pkg" "$tri_version" "$cache/src/$tri_pkg" | head -n1)
+  log "extracting packages/kokkos from $(basename "$tarball")"
+  tmp="$cache/.kokkos-extract.$$"
+  rm -rf "$tmp" "$src"
+  mkdir -p "$tmp"
+  tar -xf "$tarball" -C "$tmp" --wildcards --no-wildcards-match-slash '*/packages/kokkos'
+  mv "$tmp"/*/packages/kokkos "$src"
+  rm -rf "$tmp"
+  log "applying $(basename "$patch_file")"
+  patch -p1 -d "$src" --forward --batch < "$patch_file" >&2
+  echo "$patch_sum" > "$src/.polydem-patched"
+fi
+echo "$src"
+exit 0
+}
