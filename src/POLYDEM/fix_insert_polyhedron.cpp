@@ -18,6 +18,7 @@
 #include "modify.h"
 #include "pair.h"
 #include "poly_shape_library.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_parse.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
@@ -409,9 +410,8 @@ int FixInsertPolyhedron::setmask()
 void FixInsertPolyhedron::init()
 {
   const std::string me = "fix insert/polyhedron";
-  const int iregion = domain->find_region(idregion.c_str());
-  if (iregion < 0) error->all(FLERR, "{}: region '{}' does not exist", me, idregion);
-  region = domain->regions[iregion];
+  region = polydem_compat::find_region(domain, idregion);
+  if (!region) error->all(FLERR, "{}: region '{}' does not exist", me, idregion);
   if (!region->bboxflag)
     error->all(FLERR, "{}: region '{}' has no bounding box (an exterior or unbounded region)", me,
                idregion);

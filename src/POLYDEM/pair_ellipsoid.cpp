@@ -21,6 +21,7 @@
 #include "update.h"
 
 #include "polydem_damping.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_ellipsoid_force.h"
 #include "polydem_shape_template.h"
 
@@ -205,13 +206,10 @@ void PairEllipsoid::init_style()
                avec->shape_id(gf));
   }
 
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->size = 1;
-
   // friction: per-pair tangential history (kept once created, e.g. from a restart)
   use_history = friction_used() || fix_history != nullptr;
+  polydem_compat::request_size_list(neighbor, this, instance_me, use_history);
   if (use_history) {
-    neighbor->requests[irequest]->history = 1;
     if (fix_history == nullptr) {
       auto cmd = fmt::format("NEIGH_HISTORY_ELL{} all NEIGH_HISTORY {}", history_id, SIZE_HISTORY);
       fix_history = (FixNeighHistory *) modify->replace_fix(

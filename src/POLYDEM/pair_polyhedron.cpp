@@ -22,6 +22,7 @@
 
 #include "compute.h"
 #include "polydem_contact_law.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_damping.h"
 #include "polydem_contact_record.h"
 #include "polydem_overlap.h"
@@ -218,9 +219,7 @@ void PairPolyhedron::init_style()
   if (nell) error->all(FLERR, "pair_style polyhedron: {} atoms have an ellipsoid shape; "
                        "use pair_style ellipsoid (mixed contacts are not supported)", nell);
 
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->size = 1;
-  neighbor->requests[irequest]->history = 1;
+  polydem_compat::request_size_list(neighbor, this, instance_me, true);
 
   dt = update->dt;
 

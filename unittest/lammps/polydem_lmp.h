@@ -22,6 +22,17 @@ namespace polydem_test {
 
 inline std::string potentials() { return POLYDEM_POTENTIALS_DIR; }
 
+// whether this LAMMPS has the KOKKOS package (the /kk styles): not in builds
+// against LAMMPS 4 Feb 2025 or later here, whose KOKKOS needs Kokkos 4
+inline bool has_kokkos() { return lammps_config_has_package("KOKKOS") != 0; }
+
+// the command-line extras of a plain run and, with KOKKOS, of a /kk run
+inline std::vector<std::vector<std::string>> plain_and_kk()
+{
+  if (!has_kokkos()) return {{}};
+  return {{}, {"-k", "on", "-sf", "kk"}};
+}
+
 // a double as LAMMPS input text, exactly (17 significant digits)
 inline std::string num(double x)
 {

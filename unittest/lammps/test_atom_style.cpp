@@ -247,7 +247,7 @@ TEST(AtomStyle, DumpVTKSingleFileHoldsTheLatestSnapshot)
   const std::string dir = tmpfile("vtkdir");
   mkdir(dir.c_str(), 0755);
   for (const std::vector<std::string> &extra :
-       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}})
+       polydem_test::plain_and_kk())
     for (const std::string &name : {tmpfile("single.vtk"), tmpfile("single"), dir + "/snap.vtk"}) {
       std::remove(name.c_str());
       {
@@ -429,7 +429,7 @@ TEST(AtomStyle, NonFiniteVelocitiesRefused)
   for (const std::string vel :
        {"1 0.1 -0.2 0.3 1e-7 0 -2e0475784", "1 1e999 0 0 0 0 0", "1 0.1 -0.2 0.3 1e-7 0 -2e-7"})
     for (const std::vector<std::string> &extra :
-         {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+         polydem_test::plain_and_kk()) {
       {
         std::ofstream o(f);
         o << "test\n\n1 atoms\n1 atom types\n0 10 xlo xhi\n0 10 ylo yhi\n0 10 zlo zhi\n\n"
@@ -460,7 +460,7 @@ TEST(AtomStyle, TwoDimensionsRefused)
     EXPECT_NE(e.find("atom_style polyhedron: 3-d only, got 'dimension 2'"), std::string::npos) << e;
   }
   for (const std::vector<std::string> &extra :
-       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+       polydem_test::plain_and_kk()) {
     Lmp l(extra);
     l.cmds({"units si", "atom_style polyhedron", "dimension 2",
             "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box"});
@@ -516,7 +516,7 @@ TEST(AtomStyle, MassMustBeNormal)
 TEST(AtomStyle, ComputePropertyPolyhedron)
 {
   for (const std::vector<std::string> &extra :
-       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}}) {
+       polydem_test::plain_and_kk()) {
     Lmp l(extra);
     gas(l, 10);
     l.cmds({"compute q all property/polyhedron quatw quati quatj quatk shape scale density",
@@ -546,7 +546,7 @@ TEST(AtomStyle, ComputePropertyPolyhedron)
 TEST(AtomStyle, CoreInsertionFixesRefused)
 {
   for (const std::vector<std::string> &extra :
-       {std::vector<std::string>{}, std::vector<std::string>{"-k", "on", "-sf", "kk"}})
+       polydem_test::plain_and_kk())
     for (const std::string &fix : {std::string("pour 10 1 4711 region ins diam one 0.005"),
                                    std::string("deposit 10 1 100 4711 region ins")}) {
       if (!extra.empty() && fix.rfind("pour", 0) == 0) continue;    // LAMMPS: no pour with kk

@@ -144,6 +144,7 @@ TEST(ContactComputes, FaceToFaceCubesPlain)
 
 TEST(ContactComputes, FaceToFaceCubesKokkos)
 {
+  if (!polydem_test::has_kokkos()) GTEST_SKIP() << "LAMMPS without the KOKKOS package";
   face_to_face(KK);
 }
 
@@ -264,6 +265,7 @@ TEST(ContactComputes, DensePackingNewtonOnAndOff)
 // /kk stores the same contacts with the same values (1e-12) as plain
 TEST(ContactComputes, KokkosEqualsPlain)
 {
+  if (!polydem_test::has_kokkos()) GTEST_SKIP() << "LAMMPS without the KOKKOS package";
   const Dense p = run_dense({}, "off", 20), k = run_dense(KK, "off", 20);
   ASSERT_EQ(p.rows.size(), k.rows.size());
   double worst = 0.0, ftmax = 0.0;
