@@ -25,6 +25,14 @@
 // hooks (values as std::vector<std::string>).
 #define POLYDEM_LAMMPS_NEW_API (POLYDEM_LAMMPS_VERSION >= 20220324)
 
+// Pair::transfer_history also gets the two atom types (after 29 Sep 2021):
+//   void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
+#if POLYDEM_LAMMPS_NEW_API
+#define POLYDEM_TRANSFER_HISTORY_TYPES , int, int
+#else
+#define POLYDEM_TRANSFER_HISTORY_TYPES
+#endif
+
 namespace LAMMPS_NS {
 class Pair;
 class Region;

@@ -76,9 +76,9 @@ class Lmp {
     try {
       lmp->input->one(line);
     } catch (LAMMPS_NS::LAMMPSAbortException &e) {
-      return e.message;
+      return e.what();
     } catch (LAMMPS_NS::LAMMPSException &e) {
-      return e.message;
+      return e.what();
     }
     return "";
   }
