@@ -33,6 +33,19 @@
 #define POLYDEM_TRANSFER_HISTORY_TYPES
 #endif
 
+// AtomVec::data_atom: the values of an Atoms line, and (since 24 Mar 2022)
+// the type label; declare with POLYDEM_DATA_ATOM_PARAMS(coord, image, values,
+// label), forward with POLYDEM_DATA_ATOM_ARGS(...)
+#if POLYDEM_LAMMPS_NEW_API
+#define POLYDEM_DATA_ATOM_PARAMS(coord, image, values, label) \
+  double *coord, imageint image, const std::vector<std::string> &values, std::string &label
+#define POLYDEM_DATA_ATOM_ARGS(coord, image, values, label) coord, image, values, label
+#else
+#define POLYDEM_DATA_ATOM_PARAMS(coord, image, values, label) \
+  double *coord, imageint image, char **values
+#define POLYDEM_DATA_ATOM_ARGS(coord, image, values, label) coord, image, values
+#endif
+
 namespace LAMMPS_NS {
 class Pair;
 class Region;
@@ -59,6 +72,18 @@ inline void set_fields(std::vector<std::string> &field, const char *names)
   field = utils::split_words(names);
 }
 
+// the field names of an AtomVec::fields_* list, space-separated
+inline std::string fields_text(const char *field)
+{
+  return field ? field : "";
+}
+inline std::string fields_text(const std::vector<std::string> &field)
+{
+  std::string text;
+  for (const auto &f : field) text += (text.empty() ? "" : " ") + f;
+  return text;
+}
+
 // a pair style's half neighbor list with the size flag (finite-size
 // particles), optionally with per-pair history (fix NEIGH_HISTORY);
 // returns the request
@@ -74,6 +99,24 @@ inline NeighRequest *request_size_list(Neighbor *neighbor, Pair *pair, int insta
   neighbor->requests[irequest]->size = 1;
   if (history) neighbor->requests[irequest]->history = 1;
   return neighbor->requests[irequest];
+#endif
+}
+
+// the /kk pair styles: the request the plain init_style just made, turned
+// into a half list of Kokkos (host or device)
+inline void request_kokkos_half_list(Neighbor *neighbor, Pair *pair, bool host, bool device)
+{
+#if POLYDEM_LAMMPS_NEW_API
+  NeighRequest *req = neighbor->find_request(pair);
+  req->set_kokkos_host(host ? 1 : 0);
+  req->set_kokkos_device(device ? 1 : 0);    // half: the default since 24 Mar 2022
+#else
+  (void) pair;
+  const int irequest = neighbor->nrequest - 1;
+  neighbor->requests[irequest]->kokkos_host = host;
+  neighbor->requests[irequest]->kokkos_device = device;
+  neighbor->requests[irequest]->full = 0;
+  neighbor->requests[irequest]->half = 1;
 #endif
 }
 
