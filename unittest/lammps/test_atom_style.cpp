@@ -579,7 +579,8 @@ TEST(AtomStyle, CoreInsertionFixesRefused)
 // LAMMPS 4 Feb 2025 and later have Atom::quat (POLYDEM's quat is then
 // LAMMPS's own, cmake/PolydemLammps.cmake): set quat, displace_atoms rotate
 // and fix move rotate turn a polyhedron's orientation there. LAMMPS 29 Sep
-// 2021 knew no per-atom quaternion: set refuses, displace_atoms and fix move
+// 2021 knew no per-atom quaternion: set refuses (quat is no attribute of
+// the style there), displace_atoms and fix move
 // turn positions only.
 TEST(AtomStyle, LammpsQuaternionCommands)
 {
@@ -604,7 +605,7 @@ TEST(AtomStyle, LammpsQuaternionCommands)
       expect_quat(l, turned, 1e-15, "set quat");
     } else {
       const std::string e = l.error_of("set atom 1 quat 0 0 1 90");
-      EXPECT_NE(e.find("Cannot set quaternion for atom that has none"), std::string::npos) << e;
+      EXPECT_NE(e.find("Cannot set this attribute for this atom style"), std::string::npos) << e;
     }
   }
   {
