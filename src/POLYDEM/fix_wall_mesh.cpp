@@ -735,8 +735,8 @@ void FixWallMesh::compute_forces(bool update)
         nl.skin = near_skin * sv.radius * pose.s;
         pn = &nl;
       }
-      wf = polydem::wall_particle(sv, pose, mp, g, law(i), m, dt, cosmax, twosided, vi, wi,
-                                  hist[i], update, *ws, P, pn);
+      wf = polydem::wall_particle(sv, pose, mp, g, [&] { return law(i); }, m, dt, cosmax,
+                                  twosided, vi, wi, hist[i], update, *ws, P, pn);
       sum.add(pose.x, wf, mp, P,
               polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, m, depth_warn,
                                      overlap_warn));

@@ -115,8 +115,10 @@ template <class DeviceType> struct WallMeshKernel {
     }
     auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
     ws.record = pertri;
-    const auto law = polydem::wall_law(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, damp(t),
-                                       mat(t, 4), core, twist);
+    const auto law = [&] {
+      return polydem::wall_law(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, damp(t), mat(t, 4),
+                               core, twist);
+    };
     polydem::WallNear<double> nl;
     polydem::WallNear<double> *pn = nullptr;
     if (near_cap > 0) {

@@ -277,8 +277,9 @@ POLYDEM_FN T contact_rate(const ContactGeometry<T> &g, const ContactKinematics<T
 // (3: s only; 4: + k_old; 5: + phi), updated in place (the caller keeps it
 // or not, e.g. at setup).
 template <typename T>
-POLYDEM_FN ContactForce<T> contact_step(const ContactGeometry<T> &g, const ContactLaw<T> &law,
-                                        const ContactKinematics<T> &kin, T *hist, int nhist)
+POLYDEM_FORCE_FN ContactForce<T> contact_step(const ContactGeometry<T> &g,
+                                              const ContactLaw<T> &law,
+                                              const ContactKinematics<T> &kin, T *hist, int nhist)
 {
   ContactForce<T> out;
   const NormalValue<T> nv = normal_value(law.normal, g.volume, g.area);
@@ -334,16 +335,17 @@ POLYDEM_FN ContactForce<T> contact_step(const ContactGeometry<T> &g, const Conta
   const T ftm = norm(Ft);
   const T fnc = tl.cap_abs ? fabs(out.fn) : (out.fn > T(0) ? out.fn : T(0));
   const T fmax = tl.mu * fnc;
+  out.ft = ftm;
   if (ftm > fmax) {
     // slip: cap at mu F_n and reset the spring to the capped force
     Ft = (ftm > T(0) ? fmax / ftm : T(0)) * Ft;
     if (kt > T(0)) s = (T(-1) / kt) * (Ft + gt * vt);
+    out.ft = norm(Ft);
   }
   hist[0] = s.x;
   hist[1] = s.y;
   hist[2] = s.z;
   if (tl.incremental) hist[HIST_K] = kt;
-  out.ft = norm(Ft);
   out.F_A += Ft;
   out.tau_A += cross(rA, Ft);
   out.tau_B -= cross(rB, Ft);

@@ -13,9 +13,18 @@
 #if defined(POLYDEM_USE_KOKKOS) || defined(KOKKOS_VERSION)
 #include <Kokkos_Macros.hpp>
 #define POLYDEM_FN KOKKOS_INLINE_FUNCTION
+#define POLYDEM_FORCE_FN KOKKOS_FORCEINLINE_FUNCTION
 #else
 #define POLYDEM_FN inline
+#if defined(__GNUC__)
+#define POLYDEM_FORCE_FN inline __attribute__((always_inline))
+#else
+#define POLYDEM_FORCE_FN inline
 #endif
+#endif
+// POLYDEM_FORCE_FN: small per-contact functions on the hot path (the contact
+// step), inlined into each caller so that the parts a caller does not use
+// (e.g. the wall's torque on B) are dropped by the compiler.
 
 #include <cfloat>
 

@@ -231,13 +231,29 @@ POLYDEM_FN WallSides<T> wall_kept_sides(const T *hist, const MeshPose<T> &mp, in
   return s;
 }
 
+// What wall_contact_forces gives for no contact: nothing, and a cleared
+// history (if update).
+template <typename T> POLYDEM_FN WallForce<T> wall_no_contact(T *hist, bool update)
+{
+  WallForce<T> out;
+  out.f = out.tau = make_vec3(T(0), T(0), T(0));
+  out.energy = T(0);
+  out.ncontact = 0;
+  out.fresh = 0;
+  for (int k = 0; k < WALL_MAX_PATCH; ++k) out.fpatch[k] = make_vec3(T(0), T(0), T(0));
+  if (update)
+    for (int i = 0; i < WALL_HIST_SIZE; ++i) hist[i] = T(0);
+  return out;
+}
+
 // Everything for one particle (lab pose x, q, s; velocity v, spin w):
 // pose into the mesh frame, patches, forces back in the lab frame.
-// both: two-sided wall (else the front of each triangle only).
-template <typename T, int MF, int ME>
+// both: two-sided wall (else the front of each triangle only). law_of():
+// the particle's ContactLaw, asked for only when it touches the wall.
+template <typename T, int MF, int ME, typename LawOf>
 POLYDEM_FN WallForce<T>
 wall_particle(const ShapeView<T> &sv, const Pose<T> &lab, const MeshPose<T> &mp,
-              const MeshGridView<T> &g, const ContactLaw<T> &law, T m, T dt, T cosmax, int both,
+              const MeshGridView<T> &g, const LawOf &law_of, T m, T dt, T cosmax, int both,
               const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update,
               WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P, WallNear<T> *near = nullptr)
 {
@@ -248,6 +264,8 @@ wall_particle(const ShapeView<T> &sv, const Pose<T> &lab, const MeshPose<T> &mp,
   const PosedShape<T> a = make_posed(sv, pm);
   const WallSides<T> sides = wall_kept_sides(hist, mp, both);
   wall_patches(a, g, cosmax, ws, P, near, &sides);
+  if (P.n == 0) return wall_no_contact<T>(hist, update);
+  const ContactLaw<T> law = law_of();
   // inverse principal moments: I = rho s^5 I_unit, rho = m / (s^3 V_unit)
   const T rho = m / (lab.s * lab.s * lab.s * sv.volume), s5 = lab.s * lab.s * lab.s * lab.s * lab.s;
   const Vec3<T> Iinv = make_vec3(T(1) / (rho * s5 * sv.inertia[0]), T(1) / (rho * s5 * sv.inertia[1]),

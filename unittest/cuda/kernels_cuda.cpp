@@ -1,16 +1,31 @@
 /* ----------------------------------------------------------------------
-   POLYDEM - CUDA compile check for the header-only kernels.
+   POLYDEM - the header-only kernels on the device against the host.
 
-   Instantiates every kernel of src/POLYDEM/polydem_*.h inside a
-   Kokkos::parallel_for on the default execution space (Kokkos::Cuda in the
-   check), for float and double, so that nvcc compiles their device code.
-   Compiled with -c only by tools/cuda-compile-check.sh (ctest
-   cuda_compile_check); never linked or run (no GPU here).
+   Runs GJK, the overlap polyhedron (V, centroid, S, M), the polyhedron-
+   triangle section (Sutherland-Hodgman), the contact step and the free
+   rotor for many random pairs of real shape templates inside a
+   Kokkos::parallel_for on the default execution space (Kokkos::Cuda on a
+   GPU, OpenMP/Serial on the CPU), then the same calls on the host, and
+   compares them value by value, for float and double.
 
-   Kernel headers still being written are included when they exist
-   (__has_include). Whoever adds or changes a kernel adds its call to the
-   matching exercise_* function below: a kernel that is never called from a
-   device lambda is not checked.
+   Workspaces live in device memory (one per pair, in a View), not on each
+   thread's stack: an OverlapWorkspace is ~49 KB, a ClipWorkspace ~31 KB,
+   which a CUDA thread's stack does not hold.
+
+   Two uses:
+   - compiled with -c only by tools/cuda-compile-check.sh (ctest
+     cuda_compile_check): nvcc must compile every kernel's device code;
+   - linked (with -DPOLYDEM_KERNELS_MAIN, libpolydem_shapes and Kokkos) as
+     polydem_kernels_device SHAPE_FILE...: exit 0 if device and host agree
+     (ctest kernel_device_vs_host on Kokkos Serial here; tools/gpu/run.sh on
+     a GPU).
+
+   Tolerances (relative to the larger of |host| and 1e-3 of the largest
+   |host| of that quantity): the device may contract a*b+c into FMAs and
+   order sums differently; 1e-9 (double) and 2e-3 (float). Near-degenerate
+   cases can take the other branch (touching vs overlapping, slip vs
+   stick): up to 1 % of the pairs may disagree (reported), more fails.
+   The same compiler on the same CPU gives zero differences.
 ------------------------------------------------------------------------- */
 
 #ifndef POLYDEM_USE_KOKKOS
@@ -19,36 +34,31 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "polydem_clip.h"
+#include "polydem_contact_law.h"
 #include "polydem_defs.h"
+#include "polydem_gjk.h"
 #include "polydem_math.h"
+#include "polydem_overlap.h"
+#include "polydem_rigid.h"
 #include "polydem_shape_view.h"
 
-#if __has_include("polydem_rigid.h")
-#include "polydem_rigid.h"
-#define POLYDEM_CHECK_RIGID 1
-#endif
-#if __has_include("polydem_gjk.h")
-#include "polydem_gjk.h"
-#define POLYDEM_CHECK_GJK 1
-#endif
-#if __has_include("polydem_overlap.h")
-#include "polydem_overlap.h"
-#define POLYDEM_CHECK_OVERLAP 1
-#endif
-#if __has_include("polydem_clip.h")
-#include "polydem_clip.h"
-#define POLYDEM_CHECK_CLIP 1
-#endif
-#if __has_include("polydem_contact_law.h")
-#include "polydem_contact_law.h"
-#define POLYDEM_CHECK_CONTACT_MODEL 1
+#ifdef POLYDEM_KERNELS_MAIN
+#include "polydem_shape_template.h"    // host: shape files -> templates (CGAL)
 #endif
 
 #if defined(POLYDEM_REQUIRE_CUDA) && !defined(KOKKOS_ENABLE_CUDA)
 #error "POLYDEM CUDA compile check: this Kokkos has no CUDA backend"
 #endif
 
-namespace polydem_cuda_check {
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <random>
+#include <vector>
+
+namespace polydem_device_check {
 
 using Space = Kokkos::DefaultExecutionSpace;
 using Mem = Space::memory_space;
@@ -59,259 +69,419 @@ static_assert(std::is_same<Space, Kokkos::Cuda>::value,
 
 using namespace polydem;
 
-// A unit cube as a ShapeView in device memory (the layout the /kk styles use).
-template <typename T> struct DeviceCube {
-  Kokkos::View<T *, Mem> verts{"verts", 3 * 8};
-  Kokkos::View<T *, Mem> planes{"planes", 4 * 6};
-  Kokkos::View<int *, Mem> face_start{"face_start", 6 + 1};
-  Kokkos::View<int *, Mem> face_verts{"face_verts", 4 * 6};
-  Kokkos::View<int *, Mem> edges{"edges", 2 * 12};
+// the values compared per pair
+enum Slot : int {
+  R_GJK_DIST,
+  R_V,
+  R_CX, R_CY, R_CZ,
+  R_SX, R_SY, R_SZ,
+  R_MAX, R_MAY, R_MAZ,
+  R_MBX, R_MBY, R_MBZ,
+  R_CLIP_A, R_CLIP_V,
+  R_CLIP_SX, R_CLIP_SY, R_CLIP_SZ,
+  R_CLIP_MX, R_CLIP_MY, R_CLIP_MZ,
+  R_FX, R_FY, R_FZ,
+  R_TX, R_TY, R_TZ,
+  R_E,
+  R_Q0, R_Q1, R_Q2, R_Q3,
+  NSLOT
+};
+enum StatusSlot : int { S_GJK, S_OVERLAP, S_CLIP, NSTATUS };
+#ifdef POLYDEM_KERNELS_MAIN
+static const char *const slot_name[NSLOT] = {
+    "gjk distance", "V", "centroid.x", "centroid.y", "centroid.z", "S.x", "S.y", "S.z",
+    "M_A.x", "M_A.y", "M_A.z", "M_B.x", "M_B.y", "M_B.z", "clip area", "clip volume",
+    "clip S.x", "clip S.y", "clip S.z", "clip M.x", "clip M.y", "clip M.z", "F.x", "F.y",
+    "F.z", "tau.x", "tau.y", "tau.z", "energy", "q.w", "q.x", "q.y", "q.z"};
+#endif
 
-  KOKKOS_INLINE_FUNCTION ShapeView<T> view() const
+// one pair's input: two posed templates, a triangle, the velocities
+template <typename T> struct PairCase {
+  int a, b;    // template indices
+  Pose<T> pa, pb;
+  Triangle<T> tri;
+  Vec3<T> vb, wa;
+};
+
+// Everything a pair computes; the same function on the device and the host.
+template <typename T, int MF, int ME>
+KOKKOS_INLINE_FUNCTION void run_pair(const ShapeView<T> &va, const ShapeView<T> &vb,
+                                     const PairCase<T> &c, OverlapWorkspace<T, MF> &ows,
+                                     ClipWorkspace<T, MF, ME> &cws, T *r, int *st)
+{
+  const PosedShape<T> a = make_posed(va, c.pa), b = make_posed(vb, c.pb);
+  const GjkResult<T> g = gjk_intersect(a, b);
+  st[S_GJK] = g.status;
+  r[R_GJK_DIST] = g.status == STATUS_SEPARATED ? g.distance : T(0);
+  const OverlapResult<T> o = polyhedron_overlap(a, b, ows);
+  st[S_OVERLAP] = o.status;
+  r[R_V] = o.volume;
+  r[R_CX] = o.centroid.x;
+  r[R_CY] = o.centroid.y;
+  r[R_CZ] = o.centroid.z;
+  r[R_SX] = o.S_A.x;
+  r[R_SY] = o.S_A.y;
+  r[R_SZ] = o.S_A.z;
+  r[R_MAX] = o.M_A.x;
+  r[R_MAY] = o.M_A.y;
+  r[R_MAZ] = o.M_A.z;
+  r[R_MBX] = o.M_B.x;
+  r[R_MBY] = o.M_B.y;
+  r[R_MBZ] = o.M_B.z;
+  const ClipResult<T> k = polyhedron_triangle(a, c.tri, cws);
+  st[S_CLIP] = k.status;
+  r[R_CLIP_A] = k.area;
+  r[R_CLIP_V] = k.volume;
+  r[R_CLIP_SX] = k.S.x;
+  r[R_CLIP_SY] = k.S.y;
+  r[R_CLIP_SZ] = k.S.z;
+  r[R_CLIP_MX] = k.M.x;
+  r[R_CLIP_MY] = k.M.y;
+  r[R_CLIP_MZ] = k.M.z;
+  // contact step of the overlap (Feng's law with its core, twisting friction),
+  // three steps on one history so that the spring and the cap act
+  Vec3<T> F = make_vec3(T(0), T(0), T(0)), tau = F;
+  T energy = T(0);
+  if (o.status == STATUS_OK) {
+    const ContactGeometry<T> geo = contact_geometry<T>(o);
+    DampingLaw<T> d;    // damping_law(e) is host-only: zeta(0.5, 1/3), zeta(0.5, 1)
+    d.z[0] = T(0.2157);
+    d.z[1] = T(0.2154);
+    d.local = 1;
+    const T V = T(0.5);
+    const ContactLaw<T> law =
+        feng_law(T(1e7), T(0.3), V, T(1e7), T(0.3), V, d, T(0.5), T(1e-3), 1);
+    const ContactKinematics<T> kin = make_kinematics(c.pa.x, c.pb.x, make_vec3(T(0), T(0), T(0)),
+                                                     c.vb, c.wa, make_vec3(T(0), T(0), T(0)),
+                                                     T(2), T(1e-5));
+    T h[CONTACT_HIST] = {T(0), T(0), T(0), T(0), T(0)};
+    for (int s = 0; s < 3; ++s) {
+      const ContactForce<T> cf = contact_step(geo, law, kin, h, CONTACT_HIST);
+      F = cf.F_A;
+      tau = cf.tau_A;
+      energy = cf.energy;
+    }
+  }
+  r[R_FX] = F.x;
+  r[R_FY] = F.y;
+  r[R_FZ] = F.z;
+  r[R_TX] = tau.x;
+  r[R_TY] = tau.y;
+  r[R_TZ] = tau.z;
+  r[R_E] = energy;
+  // free rotor (polydem_rigid.h): 20 steps of A's orientation
+  const T inertia[3] = {va.inertia[0], va.inertia[1], va.inertia[2]};
+  T L[3] = {c.wa.x * inertia[0], c.wa.y * inertia[1], c.wa.z * inertia[2]};
+  T q[4] = {c.pa.q.w, c.pa.q.x, c.pa.q.y, c.pa.q.z};
+  for (int s = 0; s < 20; ++s) free_rotor_step(T(1e-3), inertia, L, q);
+  r[R_Q0] = q[0];
+  r[R_Q1] = q[1];
+  r[R_Q2] = q[2];
+  r[R_Q3] = q[3];
+}
+
+// The arrays of all templates (type T) in one memory space, and views into them.
+template <typename T, typename M> struct Templates {
+  Kokkos::View<T *, M> verts, planes;
+  Kokkos::View<int *, M> face_start, face_verts, edges, dual;
+  Kokkos::View<ShapeView<T> *, M> views;
+};
+
+constexpr int MF = MAX_TEMPLATE_FACES, ME = 384;
+
+#ifdef POLYDEM_KERNELS_MAIN
+
+// host templates -> flat arrays in host memory, then a device copy whose
+// views point into device memory
+template <typename T> struct DeviceTemplates {
+  using HostM = Kokkos::HostSpace;
+  Templates<T, HostM> h;
+  Templates<T, Mem> d;
+  explicit DeviceTemplates(const std::vector<ShapeView<double>> &src)
   {
-    ShapeView<T> s;
-    s.nverts = 8;
-    s.nfaces = 6;
-    s.nedges = 12;
-    s.verts = verts.data();
-    s.planes = planes.data();
-    s.face_start = face_start.data();
-    s.face_verts = face_verts.data();
-    s.edges = edges.data();
-    s.radius = T(0.8660254037844386);
-    s.volume = T(1);
-    s.inertia[0] = s.inertia[1] = s.inertia[2] = T(1) / T(6);
-    return s;
+    const int n = (int) src.size();
+    size_t nv = 0, np = 0, nfs = 0, nfv = 0, ne = 0, nd = 0;
+    for (const auto &s : src) {
+      nv += 3 * s.nverts;
+      np += 4 * s.nfaces;
+      nfs += s.nfaces + 1;
+      nfv += s.face_start[s.nfaces];
+      ne += 2 * s.nedges;
+      nd += dual_seed_ints(s);
+    }
+    h.verts = Kokkos::View<T *, HostM>("verts", nv);
+    h.planes = Kokkos::View<T *, HostM>("planes", np);
+    h.face_start = Kokkos::View<int *, HostM>("face_start", nfs);
+    h.face_verts = Kokkos::View<int *, HostM>("face_verts", nfv);
+    h.edges = Kokkos::View<int *, HostM>("edges", ne);
+    h.dual = Kokkos::View<int *, HostM>("dual", std::max<size_t>(nd, 1));
+    h.views = Kokkos::View<ShapeView<T> *, HostM>("views", n);
+    d.verts = Kokkos::View<T *, Mem>("verts", nv);
+    d.planes = Kokkos::View<T *, Mem>("planes", np);
+    d.face_start = Kokkos::View<int *, Mem>("face_start", nfs);
+    d.face_verts = Kokkos::View<int *, Mem>("face_verts", nfv);
+    d.edges = Kokkos::View<int *, Mem>("edges", ne);
+    d.dual = Kokkos::View<int *, Mem>("dual", std::max<size_t>(nd, 1));
+    d.views = Kokkos::View<ShapeView<T> *, Mem>("views", n);
+    auto dviews = Kokkos::create_mirror_view(d.views);
+    size_t ov = 0, op = 0, ofs = 0, ofv = 0, oe = 0, od = 0;
+    for (int i = 0; i < n; ++i) {
+      const ShapeView<double> &s = src[i];
+      ShapeView<T> hv, dv;
+      hv.nverts = dv.nverts = s.nverts;
+      hv.nfaces = dv.nfaces = s.nfaces;
+      hv.nedges = dv.nedges = s.nedges;
+      hv.radius = dv.radius = T(s.radius);
+      hv.volume = dv.volume = T(s.volume);
+      for (int k = 0; k < 3; ++k) hv.inertia[k] = dv.inertia[k] = T(s.inertia[k]);
+      for (int k = 0; k < 3 * s.nverts; ++k) h.verts(ov + k) = T(s.verts[k]);
+      for (int k = 0; k < 4 * s.nfaces; ++k) h.planes(op + k) = T(s.planes[k]);
+      for (int k = 0; k <= s.nfaces; ++k) h.face_start(ofs + k) = s.face_start[k];
+      for (int k = 0; k < s.face_start[s.nfaces]; ++k) h.face_verts(ofv + k) = s.face_verts[k];
+      for (int k = 0; k < 2 * s.nedges; ++k) h.edges(oe + k) = s.edges[k];
+      const int nds = dual_seed_ints(s);
+      for (int k = 0; k < nds; ++k) h.dual(od + k) = s.dual[k];
+      hv.verts = h.verts.data() + ov;
+      dv.verts = d.verts.data() + ov;
+      hv.planes = h.planes.data() + op;
+      dv.planes = d.planes.data() + op;
+      hv.face_start = h.face_start.data() + ofs;
+      dv.face_start = d.face_start.data() + ofs;
+      hv.face_verts = h.face_verts.data() + ofv;
+      dv.face_verts = d.face_verts.data() + ofv;
+      hv.edges = h.edges.data() + oe;
+      dv.edges = d.edges.data() + oe;
+      hv.dual = nds ? h.dual.data() + od : nullptr;
+      dv.dual = nds ? d.dual.data() + od : nullptr;
+      h.views(i) = hv;
+      dviews(i) = dv;
+      ov += 3 * s.nverts;
+      op += 4 * s.nfaces;
+      ofs += s.nfaces + 1;
+      ofv += s.face_start[s.nfaces];
+      oe += 2 * s.nedges;
+      od += nds;
+    }
+    Kokkos::deep_copy(d.verts, h.verts);
+    Kokkos::deep_copy(d.planes, h.planes);
+    Kokkos::deep_copy(d.face_start, h.face_start);
+    Kokkos::deep_copy(d.face_verts, h.face_verts);
+    Kokkos::deep_copy(d.edges, h.edges);
+    Kokkos::deep_copy(d.dual, h.dual);
+    Kokkos::deep_copy(d.views, dviews);
   }
 };
 
-template <typename T> KOKKOS_INLINE_FUNCTION Pose<T> pose_of(int i)
+template <typename T> Quat<T> random_quat(std::mt19937_64 &rng)
 {
-  Pose<T> p;
-  p.x = make_vec3(T(i), T(0.5) * T(i), T(-1));
-  p.q = qnormalize(make_quat(T(1), T(0.1) * T(i), T(0.2), T(-0.3)));
-  p.s = T(1) + T(0.01) * T(i);
-  return p;
+  std::normal_distribution<double> g;
+  const Quat<double> q = qnormalize(make_quat(g(rng), g(rng), g(rng), g(rng)));
+  return make_quat(T(q.w), T(q.x), T(q.y), T(q.z));
 }
 
-// polydem_math.h, polydem_shape_view.h
-template <typename T> void exercise_math(int n)
+// random pairs at 0.3-1.0 of the sum of their bounding radii apart (most
+// overlap), a triangle through B's centre facing A
+template <typename T>
+std::vector<PairCase<T>> make_cases(const std::vector<ShapeView<double>> &src, int n,
+                                    unsigned seed)
 {
-  DeviceCube<T> cube;
-  Kokkos::View<T *[3], Mem> out("out", n);
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::normal_distribution<double> g;
+  std::vector<PairCase<T>> cs(n);
+  const int ns = (int) src.size();
+  for (int i = 0; i < n; ++i) {
+    PairCase<T> &c = cs[i];
+    c.a = i % ns;
+    c.b = (i / ns) % ns;
+    const double sa = 0.5 + u(rng), sb = 0.5 + u(rng);
+    Vec3<double> dir = make_vec3(g(rng), g(rng), g(rng));
+    dir = (1.0 / norm(dir)) * dir;
+    const double dist = (0.3 + 0.7 * u(rng)) * (sa * src[c.a].radius + sb * src[c.b].radius);
+    const Vec3<double> xa = make_vec3(u(rng), u(rng), u(rng)), xb = xa + dist * dir;
+    c.pa.x = make_vec3(T(xa.x), T(xa.y), T(xa.z));
+    c.pb.x = make_vec3(T(xb.x), T(xb.y), T(xb.z));
+    c.pa.q = random_quat<T>(rng);
+    c.pb.q = random_quat<T>(rng);
+    c.pa.s = T(sa);
+    c.pb.s = T(sb);
+    Vec3<double> e1 = cross(dir, make_vec3(0.3, 0.5, 0.7));
+    e1 = (1.0 / norm(e1)) * e1;
+    const Vec3<double> e2 = cross(dir, e1);
+    const double r = 2.0 * sa * src[c.a].radius;
+    const Vec3<double> p0 = xb - 0.5 * dist * dir - r * e1, p1 = xb - 0.5 * dist * dir + r * (e1 - e2),
+                       p2 = xb - 0.5 * dist * dir + r * (e1 + e2);
+    c.tri.v[0] = make_vec3(T(p0.x), T(p0.y), T(p0.z));
+    c.tri.v[1] = make_vec3(T(p1.x), T(p1.y), T(p1.z));
+    c.tri.v[2] = make_vec3(T(p2.x), T(p2.y), T(p2.z));
+    c.vb = make_vec3(T(0.3 * g(rng)), T(0.3 * g(rng)), T(0.3 * g(rng)));
+    c.wa = make_vec3(T(5 * g(rng)), T(5 * g(rng)), T(5 * g(rng)));
+  }
+  return cs;
+}
+
+// device run, host run, comparison; returns the number of failures
+// perturb: relative change of A's scale on the device only (a planted
+// defect: the comparison must then fail)
+template <typename T>
+int check(const char *tname, const std::vector<ShapeView<double>> &src, int n, double tol,
+          double perturb)
+{
+  DeviceTemplates<T> tp(src);
+  const auto cases = make_cases<T>(src, n, 12345);
+  Kokkos::View<PairCase<T> *, Mem> dcases("cases", n);
+  {
+    auto h = Kokkos::create_mirror_view(dcases);
+    for (int i = 0; i < n; ++i) {
+      h(i) = cases[i];
+      h(i).pa.s = T(double(cases[i].pa.s) * (1.0 + perturb));
+    }
+    Kokkos::deep_copy(dcases, h);
+  }
+  // the workspaces: one per pair in device memory
+  Kokkos::View<OverlapWorkspace<T, MF> *, Mem> ows("overlap workspaces", n);
+  Kokkos::View<ClipWorkspace<T, MF, ME> *, Mem> cws("clip workspaces", n);
+  Kokkos::View<T **, Mem> res("results", n, (int) NSLOT);
+  Kokkos::View<int **, Mem> sts("status", n, (int) NSTATUS);
+  const auto views = tp.d.views;
   Kokkos::parallel_for(
-      "polydem_check_math", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
-        const ShapeView<T> s = cube.view();
-        const Pose<T> p = pose_of<T>(i);
-        Vec3<T> a = make_vec3(s.verts[0], s.verts[1], s.verts[2]);
-        Vec3<T> b = make_vec3(s.planes[0], s.planes[1], s.planes[2]);
-        a += b;
-        a -= T(0.5) * b;
-        a = a * T(2) - (-b);
-        const Vec3<T> c = cross(a, b);
-        const T d = dot(a, c) + norm(c) + norm2(b) + fabs(s.radius) + sqrt(s.volume);
-        const Quat<T> q = qmul(p.q, qconj(p.q));
-        const Mat3<T> r = quat_to_mat(q);
-        Vec3<T> v = matvec(r, a) + matTvec(r, b);
-        v += qrotate(p.q, v) - qrotate_inv(p.q, c);
-        v = p.x + p.s * v;
-        v[0] += d + T(s.face_start[1] + s.face_verts[0] + s.edges[0]);
-        out(i, 0) = v[0];
-        out(i, 1) = v.y;
-        out(i, 2) = v.z;
+      "polydem_kernels_device", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
+        const PairCase<T> c = dcases(i);
+        T r[NSLOT];
+        int st[NSTATUS];
+        run_pair(views(c.a), views(c.b), c, ows(i), cws(i), r, st);
+        for (int k = 0; k < NSLOT; ++k) res(i, k) = r[k];
+        for (int k = 0; k < NSTATUS; ++k) sts(i, k) = st[k];
       });
+  Kokkos::fence();
+  auto hres = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), res);
+  auto hsts = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sts);
+
+  auto ows_h = std::make_unique<OverlapWorkspace<T, MF>>();
+  auto cws_h = std::make_unique<ClipWorkspace<T, MF, ME>>();
+  std::vector<T> ref((size_t) n * NSLOT);
+  std::vector<int> rst((size_t) n * NSTATUS);
+  for (int i = 0; i < n; ++i)
+    run_pair(tp.h.views(cases[i].a), tp.h.views(cases[i].b), cases[i], *ows_h, *cws_h,
+             &ref[(size_t) i * NSLOT], &rst[(size_t) i * NSTATUS]);
+
+  double scale[NSLOT] = {0.0};
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < NSLOT; ++k)
+      scale[k] = std::max(scale[k], 1e-3 * std::fabs((double) ref[(size_t) i * NSLOT + k]));
+  int nover = 0, nclip = 0, nbad = 0;
+  double worst = 0.0;
+  int worst_slot = 0;
+  for (int i = 0; i < n; ++i) {
+    nover += rst[(size_t) i * NSTATUS + S_OVERLAP] == STATUS_OK;
+    nclip += rst[(size_t) i * NSTATUS + S_CLIP] == STATUS_OK;
+    bool bad = false;
+    for (int k = 0; k < NSTATUS; ++k) bad |= hsts(i, k) != rst[(size_t) i * NSTATUS + k];
+    double pair_worst = 0.0;
+    int pair_slot = 0;
+    for (int k = 0; k < NSLOT; ++k) {
+      const double h = ref[(size_t) i * NSLOT + k], d = hres(i, k);
+      const double den = std::max(std::max(std::fabs(h), std::fabs(d)), scale[k]);
+      const double e = den > 0.0 ? std::fabs(d - h) / den : 0.0;
+      if (!(e <= tol)) bad = true;    // NaN too
+      if (!(e <= pair_worst)) {
+        pair_worst = e;
+        pair_slot = k;
+      }
+    }
+    if (bad) {
+      if (nbad < 5)
+        std::printf("  %s pair %d: status device %d/%d/%d host %d/%d/%d, worst %s rel %.3g\n",
+                    tname, i, hsts(i, 0), hsts(i, 1), hsts(i, 2), rst[(size_t) i * NSTATUS],
+                    rst[(size_t) i * NSTATUS + 1], rst[(size_t) i * NSTATUS + 2],
+                    slot_name[pair_slot], pair_worst);
+      nbad++;
+    } else if (pair_worst > worst) {
+      worst = pair_worst;
+      worst_slot = pair_slot;
+    }
+  }
+  const int allowed = n / 100;
+  const bool enough = nover >= n / 4 && nclip >= n / 10;
+  const bool pass = nbad <= allowed && enough;
+  std::printf("kernels %s on %s: %d pairs (%d overlap, %d cut the triangle), %d disagree "
+              "(allowed %d), largest difference of the others %.3g relative (%s; tolerance "
+              "%.0e): %s\n",
+              tname, Space::name(), n, nover, nclip, nbad, allowed, worst, slot_name[worst_slot],
+              tol, pass ? "PASS" : (enough ? "FAIL" : "FAIL (too few overlapping pairs)"));
+  return pass ? 0 : 1;
 }
 
-#ifdef POLYDEM_CHECK_RIGID
-// polydem_rigid.h
-template <typename T> void exercise_rigid(int n)
+}    // namespace polydem_device_check
+
+int main(int argc, char **argv)
 {
-  Kokkos::View<T *[8], Mem> out("out", n);
-  Kokkos::parallel_for(
-      "polydem_check_rigid", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
-        const T inertia[3] = {T(1), T(2), T(3)};
-        T L[3] = {T(0.1) * T(i), T(1), T(0.01)};
-        T q[4] = {T(1), T(0), T(0), T(0)};
-        T w[3];
-        free_rotor_step(T(1e-3), inertia, L, q);
-        free_rotor_substep(1, T(1e-3), inertia, L, q);
-        omega_from_angmom(inertia, L, q, w);
-        angmom_from_omega(inertia, w, q, L);
-        const T e = rotational_energy(inertia, L, q);
-        for (int k = 0; k < 3; ++k) out(i, k) = L[k];
-        for (int k = 0; k < 4; ++k) out(i, 3 + k) = q[k];
-        out(i, 7) = e;
-      });
+  using namespace polydem_device_check;
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s SHAPE_FILE... [-n PAIRS] [--perturb REL]\n", argv[0]);
+    return 2;
+  }
+  int n = 2048;
+  double perturb = 0.0;
+  std::vector<std::string> files;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-n" && i + 1 < argc)
+      n = std::atoi(argv[++i]);
+    else if (a == "--perturb" && i + 1 < argc)
+      perturb = std::atof(argv[++i]);
+    else if (a.rfind("--kokkos", 0) != 0)
+      files.push_back(a);
+  }
+  int fails = 0;
+  Kokkos::initialize(argc, argv);
+  {
+    std::vector<polydem::PolyShapeTemplate> shapes;
+    std::vector<polydem::ShapeView<double>> views;
+    try {
+      for (const auto &f : files) shapes.push_back(polydem::PolyShapeTemplate::from_file(f));
+    } catch (const std::exception &e) {
+      std::fprintf(stderr, "polydem_kernels_device: %s\n", e.what());
+      fails = 1;
+    }
+    for (const auto &s : shapes) views.push_back(s.view());
+    if (!fails) {
+      fails += check<double>("double", views, n, 1e-9, perturb);
+      fails += check<float>("float", views, n, 2e-3, perturb);
+    }
+  }
+  Kokkos::finalize();
+  return fails ? 1 : 0;
 }
-#endif
-
-#ifdef POLYDEM_CHECK_GJK
-// polydem_gjk.h: bounding spheres, support function, GJK
-template <typename T> void exercise_gjk(int n)
-{
-  DeviceCube<T> cube;
-  Kokkos::View<T *[4], Mem> out("out", n);
-  Kokkos::View<int *, Mem> status("status", n);
-  Kokkos::parallel_for(
-      "polydem_check_gjk", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
-        const ShapeView<T> s = cube.view();
-        const PosedShape<T> a = make_posed(s, pose_of<T>(i));
-        const PosedShape<T> b = make_posed(s, pose_of<T>(i + 1));
-        const Vec3<T> p = support_point(a, make_vec3(T(1), T(0), T(0)));
-        const GjkResult<T> g = gjk_intersect(a, b);
-        const GjkResult<T> g2 = gjk_intersect(a, b, T(10) * Eps<T>::value);
-        out(i, 0) = p.x + posed_radius(a);
-        out(i, 1) = pair_length_scale(a, b);
-        out(i, 2) = g.distance + g2.distance;
-        out(i, 3) = T(g.iterations);
-        status(i) = bounding_spheres_overlap(a, b) ? g.status : -1;
-      });
-}
-#endif
-
-#ifdef POLYDEM_CHECK_OVERLAP
-// polydem_overlap.h (with polydem_dual_hull.h, polydem_lp.h): overlap
-// polyhedron, V, centroid, S, M, in a per-thread fixed workspace
-template <typename T> void exercise_overlap(int n)
-{
-  DeviceCube<T> cube;
-  Kokkos::View<T *[8], Mem> out("out", n);
-  Kokkos::View<int *, Mem> status("status", n);
-  Kokkos::parallel_for(
-      "polydem_check_overlap", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
-        const ShapeView<T> s = cube.view();
-        const PosedShape<T> a = make_posed(s, pose_of<T>(i));
-        const PosedShape<T> b = make_posed(s, pose_of<T>(i + 1));
-        OverlapWorkspace<T> ws;
-        const OverlapResult<T> r = polyhedron_overlap(a, b, ws);
-        out(i, 0) = r.volume;
-        out(i, 1) = r.centroid.x;
-        out(i, 2) = r.S_A.y;
-        out(i, 3) = r.M_A.z + r.M_B.z;
-        out(i, 4) = r.area;
-        out(i, 5) = r.normal.x;
-        out(i, 6) = r.depth;
-        out(i, 7) = T(r.nverts);
-        status(i) = r.status;
-      });
-}
-#endif
-
-#ifdef POLYDEM_CHECK_CLIP
-// polydem_clip.h: polyhedron-triangle section (Sutherland-Hodgman) and prism volume
-template <typename T> void exercise_clip(int n)
-{
-  DeviceCube<T> cube;
-  Kokkos::View<T *[8], Mem> out("out", n);
-  Kokkos::View<int *, Mem> status("status", n);
-  Kokkos::parallel_for(
-      "polydem_check_clip", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
-        const ShapeView<T> s = cube.view();
-        const PosedShape<T> a = make_posed(s, pose_of<T>(i));
-        Triangle<T> tri;
-        tri.v[0] = make_vec3(T(-2), T(-2), T(i));
-        tri.v[1] = make_vec3(T(2), T(-2), T(i));
-        tri.v[2] = make_vec3(T(0), T(2), T(i));
-        ClipWorkspace<T> ws;
-        const ClipResult<T> r = polyhedron_triangle(a, tri, ws);
-        out(i, 0) = r.area;
-        out(i, 1) = r.acentroid.x;
-        out(i, 2) = r.volume;
-        out(i, 3) = r.vcentroid.y;
-        out(i, 4) = r.S.z;
-        out(i, 5) = r.M.x;
-        out(i, 6) = r.normal.z;
-        out(i, 7) = T(0);
-        status(i) = r.status;
-      });
-}
-#endif
-
-#ifdef POLYDEM_CHECK_CONTACT_MODEL
-// polydem_contact_law.h: contact force from the overlap geometry
-template <typename T> void exercise_contact_model(int n)
-{
-  Kokkos::View<T *[3], Mem> shear("shear", n);
-  Kokkos::View<T *[4], Mem> out("out", n);
-  Kokkos::parallel_for(
-      "polydem_check_contact_model", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
-        const Vec3<T> z = make_vec3(T(0), T(0), T(0));
-        ContactGeometry<T> g;
-        g.volume = T(1e-3) * T(i + 1);
-        g.area = T(0.1);
-        g.normal = make_vec3(T(1), T(0), T(0));
-        g.centroid = make_vec3(T(0.5), T(0), T(0));
-        g.S_A = make_vec3(T(-0.1), T(0), T(0));
-        g.M_A = z;
-        g.M_B = z;
-        DampingLaw<T> d;    // damping_law(e) is host-only
-        d.z[0] = T(0.1);
-        d.z[1] = T(0.2);
-        d.local = 1;
-        ContactLaw<T> law = feng_law(T(1e6), T(0.25), T(1e-3), T(1e6), T(0.25), T(1e-3), d,
-                                     T(0.3), T(1e-4), 1);
-        ContactKinematics<T> kin;
-        kin.xA = z;
-        kin.xB = make_vec3(T(1), T(0), T(0));
-        kin.vA = z;
-        kin.vB = make_vec3(T(-0.1), T(0.01), T(0));
-        kin.wA = z;
-        kin.wB = make_vec3(T(0), T(0), T(0.5));
-        kin.meff = T(0.5);
-        kin.dt = T(1e-6);
-        T sh[CONTACT_HIST] = {shear(i, 0), shear(i, 1), shear(i, 2), T(0), T(0)};
-        const ContactForce<T> f = contact_step(g, law, kin, sh, CONTACT_HIST);
-        for (int k = 0; k < 3; ++k) shear(i, k) = sh[k];
-        out(i, 0) = f.F_A.x + f.tau_A.y + f.tau_B.z;
-        out(i, 1) = f.energy;
-        out(i, 2) = f.fn;
-        out(i, 3) = f.ft;
-      });
-}
-#endif
-
-// A new kernel header: include it above (guarded with __has_include while it
-// is being written), add an exercise_* function that calls it in a lambda,
-// and instantiate it below. A kernel never called from a lambda is only
-// parsed, not compiled for the device.
-
-// Explicit instantiation: nvcc generates device code for every lambda above.
-#define POLYDEM_INSTANTIATE(T)                                                                     \
-  template void exercise_math<T>(int);                                                             \
-  POLYDEM_INSTANTIATE_RIGID(T)                                                                     \
-  POLYDEM_INSTANTIATE_GJK(T)                                                                       \
-  POLYDEM_INSTANTIATE_OVERLAP(T)                                                                   \
-  POLYDEM_INSTANTIATE_CLIP(T)                                                                      \
-  POLYDEM_INSTANTIATE_CONTACT_MODEL(T)
-
-#ifdef POLYDEM_CHECK_RIGID
-#define POLYDEM_INSTANTIATE_RIGID(T) template void exercise_rigid<T>(int);
 #else
-#define POLYDEM_INSTANTIATE_RIGID(T)
-#endif
+// compile check only: instantiate the device lambda's function for both types
+template void run_pair<float, MF, ME>(const ShapeView<float> &, const ShapeView<float> &,
+                                      const PairCase<float> &, OverlapWorkspace<float, MF> &,
+                                      ClipWorkspace<float, MF, ME> &, float *, int *);
+template void run_pair<double, MF, ME>(const ShapeView<double> &, const ShapeView<double> &,
+                                       const PairCase<double> &, OverlapWorkspace<double, MF> &,
+                                       ClipWorkspace<double, MF, ME> &, double *, int *);
 
-#ifdef POLYDEM_CHECK_GJK
-#define POLYDEM_INSTANTIATE_GJK(T) template void exercise_gjk<T>(int);
-#else
-#define POLYDEM_INSTANTIATE_GJK(T)
+// a parallel_for over device-resident workspaces, as in main()
+template <typename T> void exercise(int n)
+{
+  Templates<T, Mem> tp;
+  tp.views = Kokkos::View<ShapeView<T> *, Mem>("views", 1);
+  Kokkos::View<PairCase<T> *, Mem> dcases("cases", n);
+  Kokkos::View<OverlapWorkspace<T, MF> *, Mem> ows("ows", n);
+  Kokkos::View<ClipWorkspace<T, MF, ME> *, Mem> cws("cws", n);
+  Kokkos::View<T **, Mem> res("results", n, (int) NSLOT);
+  const auto views = tp.views;
+  Kokkos::parallel_for(
+      "polydem_kernels_device", Kokkos::RangePolicy<Space>(0, n), KOKKOS_LAMBDA(const int i) {
+        T r[NSLOT];
+        int st[NSTATUS];
+        const PairCase<T> c = dcases(i);
+        run_pair(views(c.a), views(c.b), c, ows(i), cws(i), r, st);
+        for (int k = 0; k < NSLOT; ++k) res(i, k) = r[k];
+      });
+}
+template void exercise<float>(int);
+template void exercise<double>(int);
+}    // namespace polydem_device_check
 #endif
-#ifdef POLYDEM_CHECK_OVERLAP
-#define POLYDEM_INSTANTIATE_OVERLAP(T) template void exercise_overlap<T>(int);
-#else
-#define POLYDEM_INSTANTIATE_OVERLAP(T)
-#endif
-#ifdef POLYDEM_CHECK_CLIP
-#define POLYDEM_INSTANTIATE_CLIP(T) template void exercise_clip<T>(int);
-#else
-#define POLYDEM_INSTANTIATE_CLIP(T)
-#endif
-#ifdef POLYDEM_CHECK_CONTACT_MODEL
-#define POLYDEM_INSTANTIATE_CONTACT_MODEL(T) template void exercise_contact_model<T>(int);
-#else
-#define POLYDEM_INSTANTIATE_CONTACT_MODEL(T)
-#endif
-
-POLYDEM_INSTANTIATE(float)
-POLYDEM_INSTANTIATE(double)
-
-}    // namespace polydem_cuda_check

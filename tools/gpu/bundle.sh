@@ -1,0 +1,119 @@
+#!/bin/bash
+# bundle.sh [OUT.tar.gz]   (default: polydem-gpu-kit.tar.gz in the current folder)
+#
+# Writes the GPU run kit (issue 19): one archive with everything a GPU node
+# needs to build and validate POLYDEM there (CUDA nvcc, CMake, a C++ compiler,
+# python3; no network, no MPI, no CGAL/GMP/MPFR/Boost/GoogleTest):
+#
+#   polydem-gpu-kit/
+#     run.sh      the kit's one command (tools/gpu/run.sh)
+#     polydem/    this repository at HEAD (git archive) + the meshes the checks use
+#     lammps/     the LAMMPS source POLYDEM builds against (29 Sep 2021, Debian's
+#                 source package): top-level src/ files, KOKKOS, ASPHERE,
+#                 GRANULAR, STUBS (MPI stubs), fmt, cmake/
+#     kokkos/     Kokkos 3.4.01 (Debian's trilinos source) with our CUDA 13 patch
+#     deps/       CGAL, Boost (the headers our shape code includes), GMP and MPFR
+#                 (headers and x86-64 shared libraries, glibc >= 2.14)
+#     MANIFEST    versions and sources
+#
+# Run where the packages are reachable (this machine): it uses the caches of
+# the normal build (LAMMPS source, Kokkos source) and fetches what is missing.
+set -euo pipefail
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+repo=$(cd "$here/../.." && pwd)
+out=$(realpath -m "${1:-polydem-gpu-kit.tar.gz}")
+cache=${POLYDEM_CACHE_DIR:-$HOME/.cache/polydem}
+log() { echo "bundle: $*" >&2; }
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+kit="$work/polydem-gpu-kit"
+mkdir -p "$kit"
+
+# --- POLYDEM -------------------------------------------------------------------
+log "POLYDEM $(git -C "$repo" rev-parse --short HEAD)"
+mkdir -p "$kit/polydem"
+git -C "$repo" archive HEAD | tar -x -C "$kit/polydem"
+cp "$here/run.sh" "$kit/run.sh"
+# the meshes of the benchmarks, made here (the node may lack numpy)
+mkdir -p "$kit/polydem/tools/gpu/data"
+(cd "$repo/bench/wall_mesh" &&
+  { [ -f floor10k.stl ] || python3 make_floor.py floor10k.stl 71; } &&
+  cp floor10k.stl "$kit/polydem/tools/gpu/data/")
+(cd "$repo/bench/wall_mesh" && python3 make_silo.py "$kit/polydem/tools/gpu/data/silo10k.stl" 80 40 22 > /dev/null)
+
+# --- LAMMPS ----------------------------------------------------------------------
+lmp_ver=20220106.git7586adbb6a+ds1-2
+lmp_cache="$cache/lammps-$lmp_ver"
+if [ ! -f "$lmp_cache/.extracted" ]; then
+  log "fetching the LAMMPS source (Debian lammps $lmp_ver)"
+  tarball=$(bash "$repo/tools/fetch-debian-source.sh" lammps "$lmp_ver" "$lmp_cache/download" | head -n1)
+  mkdir -p "$lmp_cache/src"
+  tar -xf "$tarball" -C "$lmp_cache/src"
+  touch "$lmp_cache/.extracted"
+fi
+lsrc=$(find "$lmp_cache/src" -mindepth 1 -maxdepth 1 -type d | head -n1)
+log "LAMMPS from $lsrc"
+mkdir -p "$kit/lammps/src"
+cp -r "$lsrc/cmake" "$kit/lammps/"
+cp "$lsrc/LICENSE" "$lsrc/README" "$kit/lammps/"
+find "$lsrc/src" -maxdepth 1 -type f -exec cp {} "$kit/lammps/src/" \;
+for p in KOKKOS ASPHERE GRANULAR STUBS fmt; do cp -r "$lsrc/src/$p" "$kit/lammps/src/"; done
+
+# --- Kokkos ------------------------------------------------------------------------
+ksrc="$cache/kokkos-3.4.01-src"
+if [ ! -f "$ksrc/.polydem-patched" ]; then
+  log "fetching and patching Kokkos 3.4.01 (tools/build-kokkos-cuda.sh does it)"
+  # the CUDA build needs nvcc; only its first step (source + patch) is wanted
+  # here, so reproduce that step
+  tarball=$(bash "$repo/tools/fetch-debian-source.sh" trilinos 13.2.0-4 "$cache/src/trilinos" | head -n1)
+  tmp=$(mktemp -d)
+  tar -xf "$tarball" -C "$tmp" --wildcards --no-wildcards-match-slash '*/packages/kokkos'
+  rm -rf "$ksrc"
+  mv "$tmp"/*/packages/kokkos "$ksrc"
+  rm -rf "$tmp"
+  patch -p1 -d "$ksrc" --forward --batch < "$repo/tools/kokkos-cuda13.patch" >&2
+  sha256sum "$repo/tools/kokkos-cuda13.patch" | cut -d' ' -f1 > "$ksrc/.polydem-patched"
+fi
+mkdir -p "$kit/kokkos"
+(cd "$ksrc" && tar -c --exclude=./doc --exclude=./benchmarks \
+  --exclude='./*/unit_test' --exclude='./*/unit_tests' --exclude='./*/perf_test' . ) |
+  tar -x -C "$kit/kokkos"
+
+# --- CGAL, Boost, GMP, MPFR ---------------------------------------------------------
+# exactly the headers the shape code includes (the compiler's dependency
+# list), plus Boost's configuration headers (they differ by compiler)
+log "CGAL/Boost/GMP/MPFR headers and libraries"
+mkdir -p "$kit/deps/include" "$kit/deps/lib"
+g++ -std=c++17 -M -I"$repo/src/POLYDEM" "$repo/src/POLYDEM/polydem_shape_template.cpp" |
+  tr ' \\' '\n\n' | grep -E '^/usr/include/(CGAL|boost)/' | sort -u > "$work/headers"
+(cd /usr/include && sed 's|^/usr/include/||' "$work/headers" | tar -c -T - boost/config boost/predef \
+  boost/config.hpp boost/version.hpp mpfr.h) | tar -x -C "$kit/deps/include"
+cp /usr/include/x86_64-linux-gnu/gmp.h "$kit/deps/include/"
+for l in libgmp.so.10 libmpfr.so.6; do
+  real=$(readlink -f "/usr/lib/x86_64-linux-gnu/$l")
+  cp "$real" "$kit/deps/lib/"
+  ln -sf "$(basename "$real")" "$kit/deps/lib/$l"
+  ln -sf "$l" "$kit/deps/lib/${l%%.so.*}.so"
+done
+
+{
+  echo "POLYDEM GPU run kit, made $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(uname -m)"
+  echo "polydem  $(git -C "$repo" rev-parse HEAD)$(git -C "$repo" diff --quiet HEAD || echo ' (+ uncommitted changes not in the kit)')"
+  echo "lammps   Debian source package lammps $lmp_ver (29 Sep 2021, Update 2)"
+  echo "kokkos   3.4.01 from Debian's trilinos 13.2.0-4 source + tools/kokkos-cuda13.patch"
+  echo "cgal     $(dpkg-query -W -f='${Version}' libcgal-dev 2> /dev/null) (headers used by polydem_shape_template.cpp)"
+  echo "boost    $(dpkg-query -W -f='${Version}' libboost-dev 2> /dev/null) (headers used by CGAL)"
+  echo "gmp      $(dpkg-query -W -f='${Version}' libgmp10 2> /dev/null) (libgmp.so.10)"
+  echo "mpfr     $(dpkg-query -W -f='${Version}' libmpfr6 2> /dev/null) (libmpfr.so.6)"
+} > "$kit/MANIFEST"
+
+log "writing $out"
+tar -C "$work" -czf "$out" polydem-gpu-kit
+size=$(stat -c %s "$out")
+log "$(basename "$out"): $((size / 1024 / 1024)) MiB ($size bytes)"
+if [ "$size" -gt $((60 * 1024 * 1024)) ]; then
+  log "larger than 60 MiB"
+  exit 1
+fi
+echo "$out"
