@@ -5,7 +5,7 @@
 # LAMMPS newer than Debian 12's Kokkos 3.4.01 allows (LAMMPS=2025: 4 Feb 2025,
 # the default) and Kokkos 4.5.1's headers, host (Serial) backend: object
 # files only, never linked or run. Kokkos 4.5.1 comes from sid's
-# libtrilinos-kokkos-dev binary package, unpacked (not installed) into
+# libtrilinos-kokkos-dev 16.1.0-5+b2 binary package, unpacked (not installed) into
 # POLYDEM_CACHE_DIR by tools/fetch-debian-deb.sh: its libraries need a newer
 # glibc than Debian 12's, its headers serve. The build tree BUILD_DIR is
 # LAMMPS + KOKKOS + POLYDEM configured by the top-level CMakeLists.txt; only
@@ -30,7 +30,7 @@ log() { echo "kokkos-compile-check: $*" >&2; }
 t0=$(date +%s)
 
 root=$(sh "$here/fetch-debian-deb.sh" sid "$cache/kokkos-4.5.1-deb" \
-  libtrilinos-kokkos-dev libtrilinos-kokkos-16.1 | tail -n1)
+  libtrilinos-kokkos-dev=16.1.0-5+b2 libtrilinos-kokkos-16.1=16.1.0-5+b2 | tail -n1)
 kdir=$(dirname "$(find "$root" -name KokkosConfig.cmake | head -n1)")
 if [ ! -f "$kdir/KokkosConfig.cmake" ]; then
   log "no KokkosConfig.cmake in $root"
