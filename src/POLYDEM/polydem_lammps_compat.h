@@ -25,6 +25,10 @@
 // hooks (values as std::vector<std::string>).
 #define POLYDEM_LAMMPS_NEW_API (POLYDEM_LAMMPS_VERSION >= 20220324)
 
+// Region::extent_* of a moving (dynamic) region follow its motion (after
+// 4 Feb 2025; 4 Jul 2026 has it): Region::bbox_update, called by prematch
+#define POLYDEM_LAMMPS_REGION_EXTENT_MOVES (POLYDEM_LAMMPS_VERSION > 20250204)
+
 // Pair::transfer_history also gets the two atom types (after 29 Sep 2021):
 //   void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
 #if POLYDEM_LAMMPS_NEW_API

@@ -508,13 +508,14 @@ TEST(AtomStyle, MassMustBeNormal)
     Lmp l;
     l.cmds({"atom_style polyhedron", "polyhedron_shape c " + potentials() + "/cube.shape"});
     const std::string e = l.error_of("read_data " + f);
-    if (lammps_version(l.lmp) >= 20220324 && std::string(cols).find("e-320") != std::string::npos)
-      // later LAMMPS's own reader refuses the subnormal first, naming it
-      EXPECT_NE(e.find("Floating point number 1e-320 in input script or data file is out of range"),
-                std::string::npos) << cols << ": " << e;
-    else
-      EXPECT_NE(e.find("in Atoms section of data file: the mass"), std::string::npos)
-          << cols << ": " << e;
+    // LAMMPS 4 Feb 2025's own reader refuses the subnormal first, naming it
+    // (29 Sep 2021 and 4 Jul 2026 read it, and POLYDEM's check names the mass)
+    const bool lammps_range = lammps_version(l.lmp) >= 20220324 &&
+        e.find("Floating point number 1e-320 in input script or data file is out of range") !=
+            std::string::npos;
+    EXPECT_TRUE(lammps_range ||
+                e.find("in Atoms section of data file: the mass") != std::string::npos)
+        << cols << ": " << e;
   }
   std::remove(f.c_str());
 }
