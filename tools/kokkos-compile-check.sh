@@ -38,11 +38,12 @@ if [ ! -f "$kdir/KokkosConfig.cmake" ]; then
 fi
 log "Kokkos: $kdir"
 
+mkdir -p "$build"
 # shellcheck disable=SC2086
 cmake -S "$src" -B "$build" -DPOLYDEM_LAMMPS="$lammps" -DPOLYDEM_KOKKOS=ON -DKokkos_DIR="$kdir" \
   -DPOLYDEM_ENABLE_TESTS=OFF -DPOLYDEM_BUILD_BENCH=OFF -DPOLYDEM_CUDA_CHECK=OFF \
-  ${POLYDEM_KK_CHECK_CMAKE_ARGS:-} > "$build.configure.log" 2>&1 || {
-  cat "$build.configure.log" >&2
+  ${POLYDEM_KK_CHECK_CMAKE_ARGS:-} > "$build/polydem-kk-configure.log" 2>&1 || {
+  cat "$build/polydem-kk-configure.log" >&2
   log "configuring $build failed"
   exit 1
 }
@@ -71,7 +72,7 @@ for f in "${core[@]}"; do rm -f "$coredir/$f.o"; done
 # one make for all objects (parallel, keep going): per-object targets of the
 # Makefile generator
 t1=$(date +%s)
-make -C "$build/lammps" -k -j"$jobs" "${targets[@]}" > "$build.compile.log" 2>&1 || true
+make -C "$build/lammps" -k -j"$jobs" "${targets[@]}" > "$build/polydem-kk-compile.log" 2>&1 || true
 failed=()
 for f in "${files[@]}"; do
   if [ -f "$objdir/$f.o" ]; then
@@ -90,8 +91,8 @@ for f in "${core[@]}"; do
   fi
 done
 if [ ${#failed[@]} -gt 0 ]; then
-  grep -E 'error' "$build.compile.log" | head -n 60 | sed 's/^/    /' >&2
-  log "compiler output: $build.compile.log"
+  grep -E 'error' "$build/polydem-kk-compile.log" | head -n 60 | sed 's/^/    /' >&2
+  log "compiler output: $build/polydem-kk-compile.log"
 fi
 log "compiled in $(($(date +%s) - t1)) s"
 if [ ${#failed[@]} -gt 0 ]; then
