@@ -11,8 +11,23 @@
 #                      compiles as C++17
 # and add that tree's cmake/ folder as a subdirectory.
 
-set(POLYDEM_LAMMPS_DEB_VERSION "20220106.git7586adbb6a+ds1-2" CACHE STRING
-    "Version of Debian's lammps source package used when LAMMPS_SOURCE_DIR is not given")
+# Which Debian lammps source package to fetch when LAMMPS_SOURCE_DIR is not
+# given: POLYDEM_LAMMPS picks a LAMMPS version and the Debian suite that has it.
+set(POLYDEM_LAMMPS "2021" CACHE STRING
+    "LAMMPS fetched from Debian when LAMMPS_SOURCE_DIR is empty: 2021 (bookworm, 29 Sep 2021), 2025 (trixie, 4 Feb 2025), 2026 (sid, 4 Jul 2026)")
+set_property(CACHE POLYDEM_LAMMPS PROPERTY STRINGS 2021 2025 2026)
+if(POLYDEM_LAMMPS STREQUAL "2021")
+  set(POLYDEM_LAMMPS_DEB_VERSION "20220106.git7586adbb6a+ds1-2")
+  set(_lmp_suite bookworm)
+elseif(POLYDEM_LAMMPS STREQUAL "2025")
+  set(POLYDEM_LAMMPS_DEB_VERSION "20250204+dfsg.1-2")
+  set(_lmp_suite trixie)
+elseif(POLYDEM_LAMMPS STREQUAL "2026")
+  set(POLYDEM_LAMMPS_DEB_VERSION "20260704+dfsg-2")
+  set(_lmp_suite sid)
+else()
+  message(FATAL_ERROR "POLYDEM_LAMMPS must be 2021, 2025 or 2026 (got '${POLYDEM_LAMMPS}')")
+endif()
 set(LAMMPS_SOURCE_DIR "" CACHE PATH "A LAMMPS source tree (with src/ and cmake/); empty: fetch Debian's")
 
 # ---------------------------------------------------------------------------
@@ -21,9 +36,10 @@ if(NOT LAMMPS_SOURCE_DIR)
   set(_lmp_cache ${POLYDEM_CACHE_DIR}/lammps-${POLYDEM_LAMMPS_DEB_VERSION})
   set(_lmp_stamp ${_lmp_cache}/.extracted)
   if(NOT EXISTS ${_lmp_stamp})
-    message(STATUS "POLYDEM: fetching Debian's lammps ${POLYDEM_LAMMPS_DEB_VERSION} source with apt")
+    message(STATUS "POLYDEM: fetching Debian's lammps ${POLYDEM_LAMMPS_DEB_VERSION} source (${_lmp_suite}) with apt")
     execute_process(
-      COMMAND bash ${CMAKE_SOURCE_DIR}/tools/fetch-debian-source.sh lammps
+      COMMAND ${CMAKE_COMMAND} -E env POLYDEM_DEBIAN_SUITE=${_lmp_suite}
+              bash ${CMAKE_SOURCE_DIR}/tools/fetch-debian-source.sh lammps
               ${POLYDEM_LAMMPS_DEB_VERSION} ${_lmp_cache}/download
       RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
     if(NOT _rc EQUAL 0)
@@ -31,6 +47,7 @@ if(NOT LAMMPS_SOURCE_DIR)
                           "Run tools/install-deps.sh first, or pass -DLAMMPS_SOURCE_DIR=...")
     endif()
     file(GLOB _tarball ${_lmp_cache}/download/lammps_*.orig.tar.*)
+    list(FILTER _tarball EXCLUDE REGEX "\\.asc$")
     if(NOT _tarball)
       message(FATAL_ERROR "POLYDEM: no lammps orig tarball in ${_lmp_cache}/download")
     endif()
@@ -39,9 +56,14 @@ if(NOT LAMMPS_SOURCE_DIR)
     file(ARCHIVE_EXTRACT INPUT ${_tarball} DESTINATION ${_lmp_cache}/src)
     file(TOUCH ${_lmp_stamp})
   endif()
-  file(GLOB _lmp_top LIST_DIRECTORIES true ${_lmp_cache}/src/*)
-  list(GET _lmp_top 0 _lmp_top)
-  set(_lammps_pristine ${_lmp_top})
+  if(EXISTS ${_lmp_cache}/src/src/atom.cpp)
+    # sid's 4 Jul 2026 tarball has no top-level folder
+    set(_lammps_pristine ${_lmp_cache}/src)
+  else()
+    file(GLOB _lmp_top LIST_DIRECTORIES true ${_lmp_cache}/src/*)
+    list(GET _lmp_top 0 _lmp_top)
+    set(_lammps_pristine ${_lmp_top})
+  endif()
 else()
   set(_lammps_pristine ${LAMMPS_SOURCE_DIR})
 endif()
@@ -49,6 +71,26 @@ if(NOT EXISTS ${_lammps_pristine}/src/atom.cpp OR NOT EXISTS ${_lammps_pristine}
   message(FATAL_ERROR "POLYDEM: ${_lammps_pristine} is not a LAMMPS source tree (no src/atom.cpp, cmake/CMakeLists.txt)")
 endif()
 message(STATUS "POLYDEM: LAMMPS source: ${_lammps_pristine}")
+
+# the LAMMPS version, from src/version.h ("4 Feb 2025"), as YYYYMMDD for
+# src/POLYDEM/polydem_lammps_compat.h
+file(STRINGS ${_lammps_pristine}/src/version.h _lmp_vline REGEX "define LAMMPS_VERSION ")
+string(REGEX MATCH "\"([0-9]+) ([A-Za-z]+) ([0-9]+)\"" _m "${_lmp_vline}")
+if(NOT _m)
+  message(FATAL_ERROR "POLYDEM: cannot read the LAMMPS version from ${_lammps_pristine}/src/version.h")
+endif()
+set(_lmp_months Jan Feb Mar Apr May Jun Jul Aug Sep Oct Nov Dec)
+list(FIND _lmp_months "${CMAKE_MATCH_2}" _mon)
+if(_mon EQUAL -1)
+  message(FATAL_ERROR "POLYDEM: unknown month in LAMMPS version '${_lmp_vline}'")
+endif()
+math(EXPR _mon "${_mon} + 1")
+math(EXPR POLYDEM_LAMMPS_VERSION "${CMAKE_MATCH_3} * 10000 + ${_mon} * 100 + ${CMAKE_MATCH_1}")
+set(POLYDEM_LAMMPS_VERSION_TEXT "${CMAKE_MATCH_1} ${CMAKE_MATCH_2} ${CMAKE_MATCH_3}")
+message(STATUS "POLYDEM: LAMMPS version ${POLYDEM_LAMMPS_VERSION_TEXT} (${POLYDEM_LAMMPS_VERSION})")
+if(POLYDEM_LAMMPS_VERSION LESS 20210929)
+  message(WARNING "POLYDEM: LAMMPS ${POLYDEM_LAMMPS_VERSION_TEXT} is older than the oldest tested (29 Sep 2021)")
+endif()
 
 # ---------------------------------------------------------------------------
 # 2. the staged tree
@@ -66,7 +108,7 @@ function(polydem_insert_after var from what file)
   string(FIND "${${var}}" "${from}" _pos)
   if(_pos EQUAL -1)
     message(FATAL_ERROR "POLYDEM: cannot patch ${file}: anchor '${from}' not found. "
-                        "This LAMMPS version is not supported (tested: ${POLYDEM_LAMMPS_DEB_VERSION}).")
+                        "LAMMPS ${POLYDEM_LAMMPS_VERSION_TEXT} is not supported (tested: 29 Sep 2021, 4 Feb 2025, 4 Jul 2026).")
   endif()
   string(REPLACE "${from}" "${from}${what}" _new "${${var}}")
   set(${var} "${_new}" PARENT_SCOPE)
@@ -112,25 +154,43 @@ foreach(f ${_ours})
   endif()
 endforeach()
 
-# atom.h / atom.cpp: add the per-atom fields quat[4], pshape, pscale to LAMMPS's
-# Atom class so that the generic AtomVec machinery grows, copies, communicates,
-# restarts and reads/writes them (this LAMMPS predates Atom::quat).
+# atom.h / atom.cpp: add the per-atom fields pshape, pscale (and quat[4] where
+# LAMMPS lacks it) to LAMMPS's Atom class so that the generic AtomVec machinery
+# grows, copies, communicates, restarts and reads/writes them. LAMMPS 29 Sep
+# 2021 predates Atom::quat; later versions have it (with quat_flag) already.
 file(READ ${_lammps_pristine}/src/atom.h _ah)
-polydem_insert_after(_ah "double **omega, **angmom, **torque;"
-  "\n  double **quat;     // POLYDEM: orientation (w,x,y,z)\n  int *pshape;       // POLYDEM: shape-template index\n  double *pscale;    // POLYDEM: scale factor\n" atom.h)
-polydem_insert_after(_ah "int rmass_flag, radius_flag, omega_flag, torque_flag, angmom_flag;"
-  "\n  int quat_flag, pshape_flag;    // POLYDEM\n" atom.h)
 file(READ ${_lammps_pristine}/src/atom.cpp _ac)
-polydem_insert_after(_ac "omega = angmom = torque = nullptr;"
-  "\n  quat = nullptr;\n  pshape = nullptr;\n  pscale = nullptr;\n" atom.cpp)
-polydem_insert_after(_ac "add_peratom(\"angmom\",&angmom,DOUBLE,3);"
-  "\n  add_peratom(\"quat\",&quat,DOUBLE,4);\n  add_peratom(\"pshape\",&pshape,INT,0);\n  add_peratom(\"pscale\",&pscale,DOUBLE,0);\n" atom.cpp)
-polydem_insert_after(_ac "rmass_flag = radius_flag = omega_flag = torque_flag = angmom_flag = 0;"
-  "\n  quat_flag = pshape_flag = 0;\n" atom.cpp)
-polydem_insert_after(_ac "if (strcmp(name,\"angmom\") == 0) return (void *) angmom;"
-  "\n  if (strcmp(name,\"quat\") == 0) return (void *) quat;\n  if (strcmp(name,\"pshape\") == 0) return (void *) pshape;\n  if (strcmp(name,\"pscale\") == 0) return (void *) pscale;\n" atom.cpp)
-polydem_insert_after(_ac "if (strcmp(name,\"angmom\") == 0) return LAMMPS_DOUBLE_2D;"
-  "\n  if (strcmp(name,\"quat\") == 0) return LAMMPS_DOUBLE_2D;\n  if (strcmp(name,\"pshape\") == 0) return LAMMPS_INT;\n  if (strcmp(name,\"pscale\") == 0) return LAMMPS_DOUBLE;\n" atom.cpp)
+string(FIND "${_ah}" "double **quat;" _has_quat)
+if(_has_quat EQUAL -1)
+  polydem_insert_after(_ah "double **omega, **angmom, **torque;"
+    "\n  double **quat;     // POLYDEM: orientation (w,x,y,z)\n  int *pshape;       // POLYDEM: shape-template index\n  double *pscale;    // POLYDEM: scale factor\n" atom.h)
+  polydem_insert_after(_ah "int rmass_flag, radius_flag, omega_flag, torque_flag, angmom_flag;"
+    "\n  int quat_flag, pshape_flag;    // POLYDEM\n" atom.h)
+  polydem_insert_after(_ac "omega = angmom = torque = nullptr;"
+    "\n  quat = nullptr;\n  pshape = nullptr;\n  pscale = nullptr;\n" atom.cpp)
+  polydem_insert_after(_ac "add_peratom(\"angmom\",&angmom,DOUBLE,3);"
+    "\n  add_peratom(\"quat\",&quat,DOUBLE,4);\n  add_peratom(\"pshape\",&pshape,INT,0);\n  add_peratom(\"pscale\",&pscale,DOUBLE,0);\n" atom.cpp)
+  polydem_insert_after(_ac "rmass_flag = radius_flag = omega_flag = torque_flag = angmom_flag = 0;"
+    "\n  quat_flag = pshape_flag = 0;\n" atom.cpp)
+  polydem_insert_after(_ac "if (strcmp(name,\"angmom\") == 0) return (void *) angmom;"
+    "\n  if (strcmp(name,\"quat\") == 0) return (void *) quat;\n  if (strcmp(name,\"pshape\") == 0) return (void *) pshape;\n  if (strcmp(name,\"pscale\") == 0) return (void *) pscale;\n" atom.cpp)
+  polydem_insert_after(_ac "if (strcmp(name,\"angmom\") == 0) return LAMMPS_DOUBLE_2D;"
+    "\n  if (strcmp(name,\"quat\") == 0) return LAMMPS_DOUBLE_2D;\n  if (strcmp(name,\"pshape\") == 0) return LAMMPS_INT;\n  if (strcmp(name,\"pscale\") == 0) return LAMMPS_DOUBLE;\n" atom.cpp)
+else()
+  # quat, quat_flag and their add_peratom/extract entries are LAMMPS's own
+  polydem_insert_after(_ah "double **quat;"
+    "\n  int *pshape;       // POLYDEM: shape-template index\n  double *pscale;    // POLYDEM: scale factor\n  int pshape_flag;   // POLYDEM\n" atom.h)
+  polydem_insert_after(_ac "omega = angmom = torque = nullptr;"
+    "\n  pshape = nullptr;\n  pscale = nullptr;\n" atom.cpp)
+  polydem_insert_after(_ac "add_peratom(\"quat\",&quat,DOUBLE,4);"
+    "\n  add_peratom(\"pshape\",&pshape,INT,0);\n  add_peratom(\"pscale\",&pscale,DOUBLE,0);\n" atom.cpp)
+  polydem_insert_after(_ac "rmass_flag = radius_flag = omega_flag = torque_flag = angmom_flag = 0;"
+    "\n  pshape_flag = 0;\n" atom.cpp)
+  polydem_insert_after(_ac "if (strcmp(name,\"quat\") == 0) return (void *) quat;"
+    "\n  if (strcmp(name,\"pshape\") == 0) return (void *) pshape;\n  if (strcmp(name,\"pscale\") == 0) return (void *) pscale;\n" atom.cpp)
+  polydem_insert_after(_ac "if (strcmp(name,\"quat\") == 0) return LAMMPS_DOUBLE_2D;"
+    "\n  if (strcmp(name,\"pshape\") == 0) return LAMMPS_INT;\n  if (strcmp(name,\"pscale\") == 0) return LAMMPS_DOUBLE;\n" atom.cpp)
+endif()
 foreach(f atom.h atom.cpp)
   if(f STREQUAL "atom.h")
     set(_content "${_ah}")
@@ -141,6 +201,16 @@ foreach(f atom.h atom.cpp)
   file(COPY_FILE ${POLYDEM_STAGE}/src/${f}.tmp ${POLYDEM_STAGE}/src/${f} ONLY_IF_DIFFERENT)
   file(REMOVE ${POLYDEM_STAGE}/src/${f}.tmp)
 endforeach()
+
+# the LAMMPS version for src/POLYDEM/polydem_lammps_compat.h, in a header of
+# the staged src/ (a compile definition would change, and so recompile, every
+# LAMMPS file)
+file(WRITE ${POLYDEM_STAGE}/src/polydem_lammps_version.h.tmp
+  "// generated by cmake/PolydemLammps.cmake from src/version.h\n"
+  "#define POLYDEM_LAMMPS_VERSION ${POLYDEM_LAMMPS_VERSION}    // ${POLYDEM_LAMMPS_VERSION_TEXT}\n")
+file(COPY_FILE ${POLYDEM_STAGE}/src/polydem_lammps_version.h.tmp
+     ${POLYDEM_STAGE}/src/polydem_lammps_version.h ONLY_IF_DIFFERENT)
+file(REMOVE ${POLYDEM_STAGE}/src/polydem_lammps_version.h.tmp)
 
 # cmake/: copy, then add POLYDEM to the package list and raise C++11 to C++17
 if(NOT EXISTS ${POLYDEM_STAGE}/cmake/.copied)
@@ -165,7 +235,15 @@ file(REMOVE ${POLYDEM_STAGE}/cmake/CMakeLists.txt.tmp)
 #           Its KokkosConfig.cmake points its include directory at
 #           /usr/lib/include (it forgets the multiarch level); a corrected copy
 #           is used (DESIGN.md section 5).
-option(POLYDEM_KOKKOS "Build the KOKKOS package and the /kk styles" ON)
+# Kokkos 3.4.01 suits LAMMPS 29 Sep 2021 only: later LAMMPS needs Kokkos 4, so
+# there the default is no KOKKOS package unless Kokkos_DIR is given.
+if(POLYDEM_LAMMPS_VERSION LESS 20220000 OR
+   (Kokkos_DIR AND NOT Kokkos_DIR STREQUAL "${_POLYDEM_KOKKOS_AUTO_DIR}"))
+  set(_kk_default ON)
+else()
+  set(_kk_default OFF)
+endif()
+option(POLYDEM_KOKKOS "Build the KOKKOS package and the /kk styles" ${_kk_default})
 set(POLYDEM_KOKKOS_BACKEND openmp CACHE STRING "Kokkos for the KOKKOS package: openmp, tsan or debian")
 set_property(CACHE POLYDEM_KOKKOS_BACKEND PROPERTY STRINGS openmp tsan debian)
 # Kokkos_DIR chosen here on an earlier configure is chosen again (the backend may have changed)

@@ -1,7 +1,7 @@
 #!/bin/sh
 # fetch-debian-source.sh PKG VERSION DESTDIR
 #
-# Downloads the tarballs of Debian (bookworm) source package PKG=VERSION into
+# Downloads the tarballs of Debian source package PKG=VERSION into
 # DESTDIR with apt-get, using a private apt configuration (deb-src sources
 # file and package lists under DESTDIR/.apt): the system's apt configuration
 # is never touched, no root needed. apt verifies the checksums against the
@@ -11,8 +11,14 @@
 # Prints the absolute path of each orig tarball (one per line) on stdout;
 # everything else goes to stderr.
 #
-# Environment: POLYDEM_DEBIAN_MIRROR (default http://deb.debian.org/debian),
-#              POLYDEM_DEBIAN_SUITE  (default bookworm).
+# Environment: POLYDEM_DEBIAN_SUITE  (default bookworm; trixie, sid, ...),
+#              POLYDEM_DEBIAN_MIRROR (default: the archive URI of the system's
+#              own apt sources, i.e. the URI of its main Debian suite).
+#
+# Only the orig tarball(s) are needed: where the archive no longer serves the
+# .dsc or the debian.tar.* (trixie's and sid's lammps answer 404 for them)
+# but the orig tarballs arrive, each checked by apt against the signed
+# Sources index, that is accepted with a warning.
 set -eu
 
 if [ $# -ne 3 ]; then
@@ -23,8 +29,20 @@ pkg=$1
 version=$2
 destdir=$3
 
-mirror=${POLYDEM_DEBIAN_MIRROR:-http://deb.debian.org/debian}
 suite=${POLYDEM_DEBIAN_SUITE:-bookworm}
+
+# system_archive_uri: the archive URI of the system's own apt sources
+. "$(dirname "$0")/debian-archive-uri.sh"
+
+mirror=${POLYDEM_DEBIAN_MIRROR:-}
+if [ -z "$mirror" ]; then
+  mirror=$(system_archive_uri)
+  if [ -z "$mirror" ]; then
+    echo "fetch-debian-source: no Debian archive in the system's apt sources; set POLYDEM_DEBIAN_MIRROR" >&2
+    exit 1
+  fi
+fi
+mirror=${mirror%/}
 keyring=/usr/share/keyrings/debian-archive-keyring.gpg
 
 # upstream version: drop the epoch and the Debian revision
@@ -84,7 +102,7 @@ if [ "$(id -u)" = 0 ]; then
   set -- "$@" -o APT::Sandbox::User=root
 fi
 
-echo "fetch-debian-source: apt-get update (private deb-src $suite list)" >&2
+echo "fetch-debian-source: apt-get update (private deb-src list: $mirror $suite)" >&2
 apt-get "$@" -q update >&2
 
 echo "fetch-debian-source: apt-get source --download-only ${pkg}=${version}" >&2
@@ -99,12 +117,16 @@ if [ -z "$(list_origs)" ]; then
 fi
 if [ $rc -ne 0 ]; then
   # e.g. trixie's lammps: the .dsc answers 404 but the tarballs (each
-  # checked against the signed Sources index) arrive. Accept that, and only that.
-  if grep -E '^E: Failed to fetch [a-z]+://' "$aptlog" | grep -qv '\.dsc '; then
-    echo "fetch-debian-source: apt-get failed ($rc) on more than the .dsc" >&2
+  # checked against the signed Sources index) arrive; sid's: the .dsc and the
+  # debian.tar.xz answer 404, the orig arrives. Accept failures of those two
+  # kinds of file, and only those: every orig tarball the Sources index lists
+  # must be here.
+  if grep -E '^E: Failed to fetch [a-z]+://' "$aptlog" |
+    grep -vE '\.dsc |\.debian\.tar\.[a-z0-9]+ |\.diff\.gz ' | grep -q .; then
+    echo "fetch-debian-source: apt-get failed ($rc) on more than the .dsc / debian.tar" >&2
     exit 1
   fi
-  echo "fetch-debian-source: warning: only the .dsc failed (apt-get exited with $rc); using the orig tarball(s) apt verified" >&2
+  echo "fetch-debian-source: warning: only the .dsc or debian.tar failed (apt-get exited with $rc); using the orig tarball(s) apt verified" >&2
 fi
 touch "$stamp"
 list_origs

@@ -38,7 +38,7 @@ void AtomVecPolyhedron::data_atom_post(int ilocal)
   shapes.data_atom_post(ilocal);
 }
 
-void AtomVecPolyhedron::data_vel(int ilocal, char **values)
+void AtomVecPolyhedron::data_vel(int ilocal, polydem_compat::data_values values)
 {
   AtomVec::data_vel(ilocal, values);
   shapes.check_data_vel(ilocal);
@@ -54,7 +54,7 @@ void AtomVecPolyhedron::pack_data_post(int ilocal)
   shapes.pack_data_post(ilocal);
 }
 
-int AtomVecPolyhedron::property_atom(char *name)
+int AtomVecPolyhedron::property_atom(polydem_compat::property_name name)
 {
   return PolyShapeLibrary::property_atom(name);
 }

@@ -19,6 +19,7 @@ AtomStyle(polyhedron,AtomVecPolyhedron);
 
 #include "atom_vec.h"
 #include "poly_shape_library.h"
+#include "polydem_lammps_compat.h"
 
 namespace LAMMPS_NS {
 
@@ -30,10 +31,10 @@ class AtomVecPolyhedron : public AtomVec {
 
   void create_atom_post(int) override;
   void data_atom_post(int) override;
-  void data_vel(int, char **) override;
+  void data_vel(int, polydem_compat::data_values) override;
   void pack_data_pre(int) override;
   void pack_data_post(int) override;
-  int property_atom(char *) override;
+  int property_atom(polydem_compat::property_name) override;
   void pack_property_atom(int, double *, int, int) override;
 
   PolyShapeLibrary *shape_library() { return &shapes; }

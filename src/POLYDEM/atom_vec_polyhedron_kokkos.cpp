@@ -88,13 +88,13 @@ template <class DeviceType, int VEL> struct PolyPackComm {
   typename AT::t_int_1d_randomread mask;
   t_quat<DeviceType> quat;
   typename AT::t_xfloat_2d_um buf;
-  typename AT::t_int_2d_const list;
+  polydem_sendlist_view<DeviceType> list;
   int iswap, pbc_flag, deform_groupbit;
   Shift s;
   X_FLOAT dvx, dvy, dvz;
 
   PolyPackComm(AtomKokkos *atomKK, const tdual_quat_array &k_quat,
-               const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_2d &k_list, int iswap_,
+               const DAT::tdual_xfloat_2d &k_buf, const polydem_tdual_sendlist &k_list, int iswap_,
                int pbc_flag_, Shift s_, int deform_groupbit_, const X_FLOAT *dv) :
       x(atomKK->k_x.view<DeviceType>()),
       quat(k_quat.view<DeviceType>()), list(k_list.view<DeviceType>()), iswap(iswap_),
@@ -117,7 +117,7 @@ template <class DeviceType, int VEL> struct PolyPackComm {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
   {
-    const int j = list(iswap, i);
+    const int j = POLYDEM_KK_SEND(list, iswap, i);
     if (pbc_flag) {
       buf(i, 0) = x(j, 0) + s.dx;
       buf(i, 1) = x(j, 1) + s.dy;
@@ -188,12 +188,12 @@ template <class DeviceType> struct PolyCommSelf {
   typedef ArrayTypes<DeviceType> AT;
   typename AT::t_x_array x;
   t_quat<DeviceType> quat;
-  typename AT::t_int_2d_const list;
+  polydem_sendlist_view<DeviceType> list;
   int iswap, nfirst, pbc_flag;
   Shift s;
 
   PolyCommSelf(AtomKokkos *atomKK, const tdual_quat_array &k_quat,
-               const DAT::tdual_int_2d &k_list, int iswap_, int nfirst_, int pbc_flag_,
+               const polydem_tdual_sendlist &k_list, int iswap_, int nfirst_, int pbc_flag_,
                Shift s_) :
       x(atomKK->k_x.view<DeviceType>()),
       quat(k_quat.view<DeviceType>()), list(k_list.view<DeviceType>()), iswap(iswap_),
@@ -203,7 +203,7 @@ template <class DeviceType> struct PolyCommSelf {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
   {
-    const int j = list(iswap, i);
+    const int j = POLYDEM_KK_SEND(list, iswap, i);
     const int g = i + nfirst;
     if (pbc_flag) {
       x(g, 0) = x(j, 0) + s.dx;
@@ -279,7 +279,7 @@ template <class DeviceType, int VEL> struct PolyPackBorder {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
   typename AT::t_xfloat_2d_um buf;
-  typename AT::t_int_2d_const list;
+  polydem_sendlist_view<DeviceType> list;
   int iswap, pbc_flag, deform_groupbit;
   typename AT::t_x_array_randomread x;
   typename AT::t_tagint_1d tag;
@@ -291,7 +291,7 @@ template <class DeviceType, int VEL> struct PolyPackBorder {
   X_FLOAT dvx, dvy, dvz;
 
   PolyPackBorder(AtomKokkos *atomKK, AtomVecPolyhedronKokkos *avec,
-                 const DAT::tdual_xfloat_2d &k_buf, const DAT::tdual_int_2d &k_list, int iswap_,
+                 const DAT::tdual_xfloat_2d &k_buf, const polydem_tdual_sendlist &k_list, int iswap_,
                  int pbc_flag_, Shift s_, int deform_groupbit_, const X_FLOAT *dv, int stride) :
       list(k_list.view<DeviceType>()),
       iswap(iswap_), pbc_flag(pbc_flag_), deform_groupbit(deform_groupbit_),
@@ -315,7 +315,7 @@ template <class DeviceType, int VEL> struct PolyPackBorder {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int &i) const
   {
-    const int j = list(iswap, i);
+    const int j = POLYDEM_KK_SEND(list, iswap, i);
     if (pbc_flag) {
       buf(i, 0) = x(j, 0) + s.dx;
       buf(i, 1) = x(j, 1) + s.dy;
@@ -532,7 +532,7 @@ template <class DeviceType> struct PolyUnpackExchange {
 ====================================================================== */
 
 AtomVecPolyhedronKokkos::AtomVecPolyhedronKokkos(LAMMPS *lmp) :
-    AtomVecKokkos(lmp), shapes(lmp, this)
+    POLYDEM_KK_ATOMVEC_BASE(lmp) AtomVecKokkos(lmp), shapes(lmp, this)
 {
   // e.g. a restart file written with -sf kk read without -k on
   if (!lmp->kokkos)
@@ -542,19 +542,23 @@ AtomVecPolyhedronKokkos::AtomVecPolyhedronKokkos(LAMMPS *lmp) :
 
   // the device kernels above move exactly these fields (the host paths
   // follow the lists whatever they are): a change must reach the kernels
-  const char *expected[][2] = {{fields_comm, "quat"},
-                               {fields_comm_vel, "quat omega angmom"},
-                               {fields_border, "radius rmass quat pshape pscale"},
-                               {fields_border_vel, "radius rmass quat pshape pscale omega angmom"},
-                               {fields_exchange, "radius rmass omega angmom quat pshape pscale"}};
+  using polydem_compat::fields_text;
+  const std::pair<std::string, const char *> expected[] = {
+      {fields_text(fields_comm), "quat"},
+      {fields_text(fields_comm_vel), "quat omega angmom"},
+      {fields_text(fields_border), "radius rmass quat pshape pscale"},
+      {fields_text(fields_border_vel), "radius rmass quat pshape pscale omega angmom"},
+      {fields_text(fields_exchange), "radius rmass omega angmom quat pshape pscale"}};
   for (auto &e : expected)
-    if (!e[0] || strcmp(e[0], e[1]) != 0)
+    if (e.first != e.second)
       error->all(FLERR,
                  "atom_style polyhedron/kk: atom_style polyhedron now communicates '{}' "
                  "instead of '{}'; update the Kokkos kernels",
-                 e[0] ? e[0] : "", e[1]);
+                 e.first, e.second);
 
+#if !POLYDEM_LAMMPS_NEW_API
   commKK = (CommKokkos *) comm;
+#endif
   k_count = DAT::tdual_int_1d("polyhedron:count", 1);
 
   // device paths exist for ghost velocities too
@@ -787,10 +791,10 @@ void AtomVecPolyhedronKokkos::create_atom(int itype, double *coord)
   modified_host_all();
 }
 
-void AtomVecPolyhedronKokkos::data_atom(double *coord, imageint imagetmp, char **values)
+void AtomVecPolyhedronKokkos::data_atom(POLYDEM_DATA_ATOM_PARAMS(coord, imagetmp, values, label))
 {
   sync_host_all();
-  AtomVec::data_atom(coord, imagetmp, values);
+  AtomVec::data_atom(POLYDEM_DATA_ATOM_ARGS(coord, imagetmp, values, label));
   modified_host_all();
 }
 
@@ -805,7 +809,7 @@ void AtomVecPolyhedronKokkos::write_data(FILE *fp, int n, double **buf)
   AtomVec::write_data(fp, n, buf);
 }
 
-void AtomVecPolyhedronKokkos::data_vel(int ilocal, char **values)
+void AtomVecPolyhedronKokkos::data_vel(int ilocal, polydem_compat::data_values values)
 {
   sync_host_all();
   AtomVec::data_vel(ilocal, values);
@@ -855,7 +859,7 @@ void AtomVecPolyhedronKokkos::pack_data_post(int ilocal)
   shapes.pack_data_post(ilocal);
 }
 
-int AtomVecPolyhedronKokkos::property_atom(char *name)
+int AtomVecPolyhedronKokkos::property_atom(polydem_compat::property_name name)
 {
   return PolyShapeLibrary::property_atom(name);
 }
@@ -870,13 +874,14 @@ void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nva
    device paths
 ====================================================================== */
 
-int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const DAT::tdual_int_2d &list,
-                                              const int &iswap, const DAT::tdual_xfloat_2d &buf,
+int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const polydem_tdual_sendlist &list,
+                                              POLYDEM_KK_ISWAP_REF const DAT::tdual_xfloat_2d &buf,
                                               const int &pbc_flag, const int pbc[])
 {
+  POLYDEM_KK_NO_ISWAP
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
-  if (commKK->forward_comm_on_host) {
+  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
     atomKK->sync(Host, COMM_MASK);
     PolyPackComm<LMPHostType, 0> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, 0, dv);
     Kokkos::parallel_for(n, f);
@@ -891,7 +896,7 @@ int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const DAT::tdual_int
 void AtomVecPolyhedronKokkos::unpack_comm_kokkos(const int &n, const int &first,
                                                  const DAT::tdual_xfloat_2d &buf)
 {
-  if (commKK->forward_comm_on_host) {
+  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
     atomKK->sync(Host, COMM_MASK);
     PolyUnpackComm<LMPHostType, 0> f(atomKK, k_quat, buf, first);
     Kokkos::parallel_for(n, f);
@@ -904,10 +909,11 @@ void AtomVecPolyhedronKokkos::unpack_comm_kokkos(const int &n, const int &first,
   }
 }
 
-int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const DAT::tdual_int_2d &list,
-                                                  const int &iswap, const DAT::tdual_xfloat_2d &buf,
+int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const polydem_tdual_sendlist &list,
+                                                  POLYDEM_KK_ISWAP_REF const DAT::tdual_xfloat_2d &buf,
                                                   const int &pbc_flag, const int pbc[])
 {
+  POLYDEM_KK_NO_ISWAP
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   X_FLOAT dv[3] = {0.0, 0.0, 0.0};
   if (pbc_flag && deform_vremap) {
@@ -916,7 +922,7 @@ int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const DAT::tdual
     dv[2] = pbc[2] * h_rate[2];
   }
   const int groupbit = deform_vremap ? deform_groupbit : 0;
-  if (commKK->forward_comm_on_host) {
+  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
     atomKK->sync(Host, COMM_VEL_MASK);
     PolyPackComm<LMPHostType, 1> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, groupbit, dv);
     Kokkos::parallel_for(n, f);
@@ -932,7 +938,7 @@ int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const DAT::tdual
 void AtomVecPolyhedronKokkos::unpack_comm_vel_kokkos(const int &n, const int &first,
                                                      const DAT::tdual_xfloat_2d &buf)
 {
-  if (commKK->forward_comm_on_host) {
+  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
     atomKK->sync(Host, COMM_VEL_MASK);
     PolyUnpackComm<LMPHostType, 1> f(atomKK, k_quat, buf, first);
     Kokkos::parallel_for(n, f);
@@ -945,12 +951,13 @@ void AtomVecPolyhedronKokkos::unpack_comm_vel_kokkos(const int &n, const int &fi
   }
 }
 
-int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const DAT::tdual_int_2d &list,
-                                            const int &iswap, const int nfirst, const int &pbc_flag,
+int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const polydem_tdual_sendlist &list,
+                                            POLYDEM_KK_ISWAP_REF const int nfirst, const int &pbc_flag,
                                             const int pbc[])
 {
+  POLYDEM_KK_NO_ISWAP
   const Shift s = comm_shift(domain, pbc_flag, pbc);
-  if (commKK->forward_comm_on_host) {
+  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
     atomKK->sync(Host, COMM_MASK);
     PolyCommSelf<LMPHostType> f(atomKK, k_quat, list, iswap, nfirst, pbc_flag, s);
     Kokkos::parallel_for(n, f);
@@ -971,7 +978,7 @@ int AtomVecPolyhedronKokkos::pack_comm_self_fused(const int &n, const DAT::tdual
                                                   const DAT::tdual_int_2d &pbc,
                                                   const DAT::tdual_int_1d &g2l)
 {
-  if (commKK->forward_comm_on_host) {
+  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
     atomKK->sync(Host, COMM_MASK);
     PolyCommSelfFused<LMPHostType> f(atomKK, k_quat, list, pbc, pbc_flag, firstrecv,
                                      sendnum_scan, g2l, domain);
@@ -989,10 +996,11 @@ int AtomVecPolyhedronKokkos::pack_comm_self_fused(const int &n, const DAT::tdual
 
 /* ---------------------------------------------------------------------- */
 
-int AtomVecPolyhedronKokkos::pack_border_kokkos(int n, DAT::tdual_int_2d k_sendlist,
-                                                DAT::tdual_xfloat_2d buf, int iswap, int pbc_flag,
+int AtomVecPolyhedronKokkos::pack_border_kokkos(int n, polydem_tdual_sendlist k_sendlist,
+                                                DAT::tdual_xfloat_2d buf, POLYDEM_KK_ISWAP_INT int pbc_flag,
                                                 int *pbc, ExecutionSpace space)
 {
+  POLYDEM_KK_NO_ISWAP
   const Shift s = border_shift(domain, pbc_flag, pbc);
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
   // all fields, as LAMMPS's styles do: outside the run loop (auto_sync) this
@@ -1027,10 +1035,11 @@ void AtomVecPolyhedronKokkos::unpack_border_kokkos(const int &n, const int &firs
 }
 
 // CommKokkos sizes a ghost-velocity border record as size_border + size_velocity
-int AtomVecPolyhedronKokkos::pack_border_vel_kokkos(int n, DAT::tdual_int_2d k_sendlist,
-                                                    DAT::tdual_xfloat_2d buf, int iswap,
+int AtomVecPolyhedronKokkos::pack_border_vel_kokkos(int n, polydem_tdual_sendlist k_sendlist,
+                                                    DAT::tdual_xfloat_2d buf, POLYDEM_KK_ISWAP_INT
                                                     int pbc_flag, int *pbc, ExecutionSpace space)
 {
+  POLYDEM_KK_NO_ISWAP
   const Shift s = border_shift(domain, pbc_flag, pbc);
   X_FLOAT dv[3] = {0.0, 0.0, 0.0};
   if (pbc_flag && deform_vremap) {
@@ -1075,8 +1084,7 @@ void AtomVecPolyhedronKokkos::unpack_border_vel_kokkos(const int &n, const int &
 int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend, DAT::tdual_xfloat_2d &k_buf,
                                                   DAT::tdual_int_1d k_sendlist,
                                                   DAT::tdual_int_1d k_copylist,
-                                                  ExecutionSpace space, int /*dim*/, X_FLOAT /*lo*/,
-                                                  X_FLOAT /*hi*/)
+                                                  ExecutionSpace space POLYDEM_KK_EXCHANGE_BOUNDS)
 {
   const int width = k_buf.view<LMPHostType>().extent(1);
   if (nsend > (int) (k_buf.view<LMPHostType>().extent(0) * width) / EXCHANGE_SIZE) {
@@ -1097,7 +1105,7 @@ int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend, DAT::tdual_x
 
 int AtomVecPolyhedronKokkos::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf, int nrecv,
                                                     int nlocal, int dim, X_FLOAT lo, X_FLOAT hi,
-                                                    ExecutionSpace space)
+                                                    ExecutionSpace space POLYDEM_KK_EXCHANGE_INDICES)
 {
   // room for every incoming atom (CommKokkos does not grow before unpacking)
   const int nincoming = nrecv / EXCHANGE_SIZE;
@@ -1143,6 +1151,30 @@ template <class F> void AtomVecPolyhedronKokkos::for_each_dual(unsigned int mask
   if (mask & POLYDEM_PSHAPE_MASK) f(k_pshape);
   if (mask & POLYDEM_PSCALE_MASK) f(k_pscale);
 }
+
+#if POLYDEM_LAMMPS_NEW_API
+// atom sorting on the device (LAMMPS after 29 Sep 2021): every per-atom field
+// of the style, in the order of the sorter's permutation
+void AtomVecPolyhedronKokkos::sort_kokkos(Kokkos::BinSort<KeyViewType, BinOp> &Sorter)
+{
+  // ALL_MASK includes the POLYDEM fields' bits (polydem_kokkos_masks.h)
+  atomKK->sync(Device, ALL_MASK & ~F_MASK & ~TORQUE_MASK);
+  Sorter.sort(LMPDeviceType(), atomKK->k_tag.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_type.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_mask.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_image.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_x.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_v.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_radius.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_rmass.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_omega.d_view);
+  Sorter.sort(LMPDeviceType(), atomKK->k_angmom.d_view);
+  Sorter.sort(LMPDeviceType(), k_quat.d_view);
+  Sorter.sort(LMPDeviceType(), k_pshape.d_view);
+  Sorter.sort(LMPDeviceType(), k_pscale.d_view);
+  atomKK->modified(Device, ALL_MASK & ~F_MASK & ~TORQUE_MASK);
+}
+#endif
 
 void AtomVecPolyhedronKokkos::sync(ExecutionSpace space, unsigned int mask)
 {

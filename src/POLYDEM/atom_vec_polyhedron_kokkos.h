@@ -28,6 +28,7 @@ AtomStyle(polyhedron/kk/host,AtomVecPolyhedronKokkos);
 #include "atom_vec_kokkos.h"
 #include "kokkos_type.h"
 #include "poly_shape_library.h"
+#include "polydem_kokkos_compat.h"
 #include "polydem_kokkos_masks.h"
 
 #include <type_traits>
@@ -85,10 +86,10 @@ class AtomVecPolyhedronKokkos : public AtomVecKokkos {
   int pack_restart(int, double *) override;
   int unpack_restart(double *) override;
   void create_atom(int, double *) override;
-  void data_atom(double *, imageint, char **) override;
+  void data_atom(POLYDEM_DATA_ATOM_PARAMS(, , , )) override;
   void pack_data(double **) override;
   void write_data(FILE *, int, double **) override;
-  void data_vel(int, char **) override;
+  void data_vel(int, polydem_compat::data_values) override;
   void pack_vel(double **) override;
   void write_vel(FILE *, int, double **) override;
   double memory_usage() override;
@@ -98,42 +99,46 @@ class AtomVecPolyhedronKokkos : public AtomVecKokkos {
   void data_atom_post(int) override;
   void pack_data_pre(int) override;
   void pack_data_post(int) override;
-  int property_atom(char *) override;
+  int property_atom(polydem_compat::property_name) override;
   void pack_property_atom(int, double *, int, int) override;
 
   // device paths
-  int pack_comm_kokkos(const int &n, const DAT::tdual_int_2d &list, const int &iswap,
+  int pack_comm_kokkos(const int &n, const polydem_tdual_sendlist &list, POLYDEM_KK_ISWAP_REF
                        const DAT::tdual_xfloat_2d &buf, const int &pbc_flag,
                        const int pbc[]) override;
   void unpack_comm_kokkos(const int &n, const int &nfirst,
                           const DAT::tdual_xfloat_2d &buf) override;
-  int pack_comm_vel_kokkos(const int &n, const DAT::tdual_int_2d &list, const int &iswap,
+  int pack_comm_vel_kokkos(const int &n, const polydem_tdual_sendlist &list, POLYDEM_KK_ISWAP_REF
                            const DAT::tdual_xfloat_2d &buf, const int &pbc_flag,
                            const int pbc[]) override;
   void unpack_comm_vel_kokkos(const int &n, const int &nfirst,
                               const DAT::tdual_xfloat_2d &buf) override;
-  int pack_comm_self(const int &n, const DAT::tdual_int_2d &list, const int &iswap,
+  int pack_comm_self(const int &n, const polydem_tdual_sendlist &list, POLYDEM_KK_ISWAP_REF
                      const int nfirst, const int &pbc_flag, const int pbc[]) override;
   int pack_comm_self_fused(const int &n, const DAT::tdual_int_2d &list,
                            const DAT::tdual_int_1d &sendnum_scan,
                            const DAT::tdual_int_1d &firstrecv,
                            const DAT::tdual_int_1d &pbc_flag, const DAT::tdual_int_2d &pbc,
                            const DAT::tdual_int_1d &g2l) override;
-  int pack_border_kokkos(int n, DAT::tdual_int_2d k_sendlist, DAT::tdual_xfloat_2d buf,
-                         int iswap, int pbc_flag, int *pbc, ExecutionSpace space) override;
+  int pack_border_kokkos(int n, polydem_tdual_sendlist k_sendlist, DAT::tdual_xfloat_2d buf,
+                         POLYDEM_KK_ISWAP_INT int pbc_flag, int *pbc, ExecutionSpace space) override;
   void unpack_border_kokkos(const int &n, const int &nfirst, const DAT::tdual_xfloat_2d &buf,
                             ExecutionSpace space) override;
-  int pack_border_vel_kokkos(int n, DAT::tdual_int_2d k_sendlist, DAT::tdual_xfloat_2d buf,
-                             int iswap, int pbc_flag, int *pbc,
+  int pack_border_vel_kokkos(int n, polydem_tdual_sendlist k_sendlist, DAT::tdual_xfloat_2d buf,
+                             POLYDEM_KK_ISWAP_INT int pbc_flag, int *pbc,
                              ExecutionSpace space) override;
   void unpack_border_vel_kokkos(const int &n, const int &nfirst,
                                 const DAT::tdual_xfloat_2d &buf, ExecutionSpace space) override;
   int pack_exchange_kokkos(const int &nsend, DAT::tdual_xfloat_2d &buf,
                            DAT::tdual_int_1d k_sendlist, DAT::tdual_int_1d k_copylist,
-                           ExecutionSpace space, int dim, X_FLOAT lo, X_FLOAT hi) override;
+                           ExecutionSpace space POLYDEM_KK_EXCHANGE_BOUNDS) override;
   int unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf, int nrecv, int nlocal, int dim,
-                             X_FLOAT lo, X_FLOAT hi, ExecutionSpace space) override;
+                             X_FLOAT lo, X_FLOAT hi,
+                             ExecutionSpace space POLYDEM_KK_EXCHANGE_INDICES) override;
 
+#if POLYDEM_LAMMPS_NEW_API
+  void sort_kokkos(Kokkos::BinSort<KeyViewType, BinOp> &Sorter) override;
+#endif
   void sync(ExecutionSpace space, unsigned int mask) override;
   void modified(ExecutionSpace space, unsigned int mask) override;
   void sync_overlapping_device(ExecutionSpace space, unsigned int mask) override;

@@ -18,6 +18,7 @@
 #include "modify.h"
 #include "pair.h"
 #include "poly_shape_library.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_parse.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
@@ -409,9 +410,8 @@ int FixInsertPolyhedron::setmask()
 void FixInsertPolyhedron::init()
 {
   const std::string me = "fix insert/polyhedron";
-  const int iregion = domain->find_region(idregion.c_str());
-  if (iregion < 0) error->all(FLERR, "{}: region '{}' does not exist", me, idregion);
-  region = domain->regions[iregion];
+  region = polydem_compat::find_region(domain, idregion);
+  if (!region) error->all(FLERR, "{}: region '{}' does not exist", me, idregion);
   if (!region->bboxflag)
     error->all(FLERR, "{}: region '{}' has no bounding box (an exterior or unbounded region)", me,
                idregion);
@@ -451,7 +451,15 @@ void FixInsertPolyhedron::region_bbox(double *lo, double *hi)
 {
   const double elo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
   const double ehi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
-  if (!region->dynamic) {
+  // LAMMPS after 4 Feb 2025 moves the extent of a moving block, cone,
+  // cylinder, ellipsoid, prism or sphere itself (their bbox_update, run by
+  // prematch, which every caller runs first); other styles' stays put
+  bool extent_moves = false;
+#if POLYDEM_LAMMPS_REGION_EXTENT_MOVES
+  for (const char *st : {"block", "cone", "cylinder", "ellipsoid", "prism", "sphere"})
+    extent_moves = extent_moves || strcmp(region->style, st) == 0;
+#endif
+  if (!region->dynamic || extent_moves) {
     for (int k = 0; k < 3; k++) {
       lo[k] = elo[k];
       hi[k] = ehi[k];

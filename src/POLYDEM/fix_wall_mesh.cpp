@@ -16,6 +16,7 @@
 #include "poly_shape_library.h"
 #include "update.h"
 
+#include "polydem_parse.h"
 #include "polydem_contact_law.h"
 #include "polydem_damping.h"
 #include "polydem_shape_template.h"
@@ -66,7 +67,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
   };
   // numbers must be finite (1e400 parses as inf)
   auto num = [&](int k) {
-    const double v = utils::numeric(FLERR, arg[k], false, lmp);
+    const double v = polydem_parse::numeric(FLERR, arg[k], lmp);
     if (!std::isfinite(v))
       error->all(FLERR, "fix wall/mesh: '{}' (argument {}) is not a finite number", arg[k], k + 1);
     return v;

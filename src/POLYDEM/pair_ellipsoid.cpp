@@ -20,7 +20,9 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "polydem_parse.h"
 #include "polydem_damping.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_ellipsoid_force.h"
 #include "polydem_shape_template.h"
 
@@ -125,15 +127,15 @@ void PairEllipsoid::settings(int narg, char **arg)
       else error->all(FLERR, "pair_style ellipsoid: damping needs 'reduced' or 'contact', got '{}'", v);
     } else if (strcmp(arg[iarg], "overlap/warn") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "pair_style ellipsoid: overlap/warn needs a value");
-      overlap_warn = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      overlap_warn = polydem_parse::numeric(FLERR, arg[iarg + 1], lmp);
       if (!(overlap_warn > 0.0) || !(overlap_warn <= 1.0))
         error->all(FLERR, "pair_style ellipsoid: overlap/warn must be in (0, 1], got '{}'",
                    arg[iarg + 1]);
     } else if (strcmp(arg[iarg], "tangential") == 0) {
       if (iarg + 2 >= narg)
         error->all(FLERR, "pair_style ellipsoid: tangential needs 2 values: kt/kn gammat/gamman");
-      kt_ratio = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
-      gt_ratio = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      kt_ratio = polydem_parse::numeric(FLERR, arg[iarg + 1], lmp);
+      gt_ratio = polydem_parse::numeric(FLERR, arg[iarg + 2], lmp);
       if (!(kt_ratio > 0.0) || !std::isfinite(kt_ratio))
         error->all(FLERR, "pair_style ellipsoid: tangential kt/kn must be > 0, got '{}'",
                    arg[iarg + 1]);
@@ -159,13 +161,13 @@ void PairEllipsoid::coeff(int narg, char **arg)
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
-  const double k = utils::numeric(FLERR, arg[2], false, lmp);
-  const double e = utils::numeric(FLERR, arg[3], false, lmp);
+  const double k = polydem_parse::numeric(FLERR, arg[2], lmp);
+  const double e = polydem_parse::numeric(FLERR, arg[3], lmp);
   if (!(k > 0.0) || !std::isfinite(k))
     error->all(FLERR, "pair_coeff ellipsoid: stiffness kn must be > 0, got '{}'", arg[2]);
   if (!(e > 0.0 && e <= 1.0))
     error->all(FLERR, "pair_coeff ellipsoid: restitution e must be in (0, 1], got '{}'", arg[3]);
-  const double mu = narg == 5 ? utils::numeric(FLERR, arg[4], false, lmp) : 0.0;
+  const double mu = narg == 5 ? polydem_parse::numeric(FLERR, arg[4], lmp) : 0.0;
   if (!(mu >= 0.0) || !std::isfinite(mu))
     error->all(FLERR, "pair_coeff ellipsoid: friction mu must be >= 0, got '{}'", arg[4]);
   int count = 0;
@@ -205,13 +207,10 @@ void PairEllipsoid::init_style()
                avec->shape_id(gf));
   }
 
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->size = 1;
-
   // friction: per-pair tangential history (kept once created, e.g. from a restart)
   use_history = friction_used() || fix_history != nullptr;
+  polydem_compat::request_size_list(neighbor, this, instance_me, use_history);
   if (use_history) {
-    neighbor->requests[irequest]->history = 1;
     if (fix_history == nullptr) {
       auto cmd = fmt::format("NEIGH_HISTORY_ELL{} all NEIGH_HISTORY {}", history_id, SIZE_HISTORY);
       fix_history = (FixNeighHistory *) modify->replace_fix(
@@ -470,7 +469,7 @@ void PairEllipsoid::read_restart_settings(FILE *fp)
 }
 
 // the history is that of the lower-tag atom of the pair (polydem_contact_law.h)
-void PairEllipsoid::transfer_history(double *source, double *target)
+void PairEllipsoid::transfer_history(double *source, double *target POLYDEM_TRANSFER_HISTORY_TYPES)
 {
   for (int k = 0; k < SIZE_HISTORY; k++) target[k] = source[k];
 }

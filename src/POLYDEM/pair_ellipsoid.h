@@ -17,6 +17,7 @@ PairStyle(ellipsoid,PairEllipsoid);
 #define LMP_PAIR_ELLIPSOID_H
 
 #include "pair.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_contact_law.h"
 
 #include <vector>
@@ -63,7 +64,7 @@ class PairEllipsoid : public Pair {
   double reported[NCOUNT];
 
   void allocate();
-  void transfer_history(double *, double *) override;
+  void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
   int friction_used() const;
   void report_counters();
   void check_timestep();

@@ -15,6 +15,7 @@
 #include "modify.h"
 #include "neigh_list_kokkos.h"
 #include "neigh_request.h"
+#include "polydem_lammps_compat.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -193,12 +194,11 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
     fix_history->pair = this;
   }
   PairEllipsoid::init_style();
-  int irequest = neighbor->nrequest - 1;
-  neighbor->requests[irequest]->kokkos_host = std::is_same<DeviceType, LMPHostType>::value &&
-      !std::is_same<DeviceType, LMPDeviceType>::value;
-  neighbor->requests[irequest]->kokkos_device = std::is_same<DeviceType, LMPDeviceType>::value;
-  neighbor->requests[irequest]->full = 0;
-  neighbor->requests[irequest]->half = 1;
+  polydem_compat::request_kokkos_half_list(
+      neighbor, this,
+      std::is_same<DeviceType, LMPHostType>::value &&
+          !std::is_same<DeviceType, LMPDeviceType>::value,
+      std::is_same<DeviceType, LMPDeviceType>::value);
   params_dirty = 1;
 }
 

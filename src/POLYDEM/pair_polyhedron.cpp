@@ -21,7 +21,9 @@
 #include "update.h"
 
 #include "compute.h"
+#include "polydem_parse.h"
 #include "polydem_contact_law.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_damping.h"
 #include "polydem_contact_record.h"
 #include "polydem_overlap.h"
@@ -129,7 +131,7 @@ void PairPolyhedron::settings(int narg, char **arg)
     }
     if (strcmp(arg[iarg], "core") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "pair_style polyhedron: core needs a value");
-      core = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      core = polydem_parse::numeric(FLERR, arg[iarg + 1], lmp);
       if (!(core >= 0.0 && core < 1.0))
         error->all(FLERR, "pair_style polyhedron: core must be in [0, 1), got '{}'",
                    arg[iarg + 1]);
@@ -137,7 +139,7 @@ void PairPolyhedron::settings(int narg, char **arg)
     }
     if (strcmp(arg[iarg], "overlap/warn") == 0) {
       if (iarg + 1 >= narg) error->all(FLERR, "pair_style polyhedron: overlap/warn needs a value");
-      overlap_warn = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      overlap_warn = polydem_parse::numeric(FLERR, arg[iarg + 1], lmp);
       if (!(overlap_warn > 0.0) || !(overlap_warn <= 1.0))
         error->all(FLERR, "pair_style polyhedron: overlap/warn must be in (0, 1], got '{}'",
                    arg[iarg + 1]);
@@ -165,8 +167,8 @@ void PairPolyhedron::coeff(int narg, char **arg)
   double E = 0.0, nu = 0.0;
   int k = 2;
   if (narg == 6) {
-    E = utils::numeric(FLERR, arg[2], false, lmp);
-    nu = utils::numeric(FLERR, arg[3], false, lmp);
+    E = polydem_parse::numeric(FLERR, arg[2], lmp);
+    nu = polydem_parse::numeric(FLERR, arg[3], lmp);
     if (!(E > 0.0) || !std::isfinite(E))
       error->all(FLERR, "pair_coeff polyhedron: Young's modulus E must be > 0, got '{}'", arg[2]);
     if (!(nu > -1.0 && nu < 0.5))
@@ -174,8 +176,8 @@ void PairPolyhedron::coeff(int narg, char **arg)
                  arg[3]);
     k = 4;
   }
-  const double e = utils::numeric(FLERR, arg[k], false, lmp);
-  const double mu = utils::numeric(FLERR, arg[k + 1], false, lmp);
+  const double e = polydem_parse::numeric(FLERR, arg[k], lmp);
+  const double mu = polydem_parse::numeric(FLERR, arg[k + 1], lmp);
   if (!(e > 0.0 && e <= 1.0))
     error->all(FLERR, "pair_coeff polyhedron: restitution e must be in (0, 1], got '{}'", arg[k]);
   if (!(mu >= 0.0) || !std::isfinite(mu))
@@ -218,9 +220,7 @@ void PairPolyhedron::init_style()
   if (nell) error->all(FLERR, "pair_style polyhedron: {} atoms have an ellipsoid shape; "
                        "use pair_style ellipsoid (mixed contacts are not supported)", nell);
 
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->size = 1;
-  neighbor->requests[irequest]->history = 1;
+  polydem_compat::request_size_list(neighbor, this, instance_me, true);
 
   dt = update->dt;
 
@@ -522,7 +522,7 @@ void PairPolyhedron::read_restart_settings(FILE *fp)
    (polydem_contact_law.h): the partner's copy is the same numbers
 ------------------------------------------------------------------------- */
 
-void PairPolyhedron::transfer_history(double *source, double *target)
+void PairPolyhedron::transfer_history(double *source, double *target POLYDEM_TRANSFER_HISTORY_TYPES)
 {
   for (int k = 0; k < SIZE_HISTORY; k++) target[k] = source[k];
 }

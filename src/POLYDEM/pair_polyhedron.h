@@ -16,6 +16,7 @@ PairStyle(polyhedron,PairPolyhedron);
 #define LMP_PAIR_POLYHEDRON_H
 
 #include "pair.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_contact_law.h"
 
 #include <memory>
@@ -79,7 +80,7 @@ class PairPolyhedron : public Pair {
   double local_counts[NCOUNT];
   double reported[NCOUNT];
 
-  void transfer_history(double *, double *) override;
+  void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
   std::vector<double> contact_data;    // CR_NFIELD doubles per stored contact
   bigint contact_step;                 // step of contact_data, -1: none
 

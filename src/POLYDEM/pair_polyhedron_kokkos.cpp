@@ -16,6 +16,7 @@
 #include "modify.h"
 #include "neigh_list_kokkos.h"
 #include "neigh_request.h"
+#include "polydem_lammps_compat.h"
 #include "neighbor.h"
 #include "update.h"
 
@@ -310,12 +311,11 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::init_style()
 
   // a half list whatever 'package kokkos neigh' says: each pair once, with
   // one history slot; forces go to both atoms with atomics
-  int irequest = neighbor->nrequest - 1;
-  neighbor->requests[irequest]->kokkos_host = std::is_same<DeviceType, LMPHostType>::value &&
-      !std::is_same<DeviceType, LMPDeviceType>::value;
-  neighbor->requests[irequest]->kokkos_device = std::is_same<DeviceType, LMPDeviceType>::value;
-  neighbor->requests[irequest]->full = 0;
-  neighbor->requests[irequest]->half = 1;
+  polydem_compat::request_kokkos_half_list(
+      neighbor, this,
+      std::is_same<DeviceType, LMPHostType>::value &&
+          !std::is_same<DeviceType, LMPDeviceType>::value,
+      std::is_same<DeviceType, LMPDeviceType>::value);
 
   shape_version = -1;
   params_dirty = 1;

@@ -11,6 +11,7 @@
 #include "error.h"
 #include "fix.h"
 #include "modify.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_shape_record.h"
 #include "polydem_shape_template.h"
 
@@ -68,19 +69,19 @@ void PolyShapeLibrary::setup_style()
 
   // ghosts get template index, scale, quaternion (+ radius and mass for the
   // neighbor cutoff and the effective mass), never vertices (seed §2.6)
-  owner->fields_grow = (char *) "radius rmass omega angmom torque quat pshape pscale";
-  owner->fields_copy = (char *) "radius rmass omega angmom quat pshape pscale";
-  owner->fields_comm = (char *) "quat";
-  owner->fields_comm_vel = (char *) "quat omega angmom";
-  owner->fields_reverse = (char *) "torque";
-  owner->fields_border = (char *) "radius rmass quat pshape pscale";
-  owner->fields_border_vel = (char *) "radius rmass quat pshape pscale omega angmom";
-  owner->fields_exchange = (char *) "radius rmass omega angmom quat pshape pscale";
-  owner->fields_restart = (char *) "radius rmass omega angmom quat pshape pscale";
-  owner->fields_create = (char *) "radius rmass omega angmom quat pshape pscale";
+  polydem_compat::set_fields(owner->fields_grow, "radius rmass omega angmom torque quat pshape pscale");
+  polydem_compat::set_fields(owner->fields_copy, "radius rmass omega angmom quat pshape pscale");
+  polydem_compat::set_fields(owner->fields_comm, "quat");
+  polydem_compat::set_fields(owner->fields_comm_vel, "quat omega angmom");
+  polydem_compat::set_fields(owner->fields_reverse, "torque");
+  polydem_compat::set_fields(owner->fields_border, "radius rmass quat pshape pscale");
+  polydem_compat::set_fields(owner->fields_border_vel, "radius rmass quat pshape pscale omega angmom");
+  polydem_compat::set_fields(owner->fields_exchange, "radius rmass omega angmom quat pshape pscale");
+  polydem_compat::set_fields(owner->fields_restart, "radius rmass omega angmom quat pshape pscale");
+  polydem_compat::set_fields(owner->fields_create, "radius rmass omega angmom quat pshape pscale");
   // data file: atom-ID atom-type shape scale density x y z qw qx qy qz
-  owner->fields_data_atom = (char *) "id type pshape pscale rmass x quat";
-  owner->fields_data_vel = (char *) "id v angmom";
+  polydem_compat::set_fields(owner->fields_data_atom, "id type pshape pscale rmass x quat");
+  polydem_compat::set_fields(owner->fields_data_vel, "id v angmom");
 }
 
 /* ----------------------------------------------------------------------
@@ -313,15 +314,15 @@ void PolyShapeLibrary::pack_data_post(int ilocal)
    compute property/atom names: shape scale density quatw quati quatj quatk
 ------------------------------------------------------------------------- */
 
-int PolyShapeLibrary::property_atom(const char *name)
+int PolyShapeLibrary::property_atom(const std::string &name)
 {
-  if (strcmp(name, "shape") == 0) return 0;
-  if (strcmp(name, "scale") == 0) return 1;
-  if (strcmp(name, "density") == 0) return 2;
-  if (strcmp(name, "quatw") == 0) return 3;
-  if (strcmp(name, "quati") == 0) return 4;
-  if (strcmp(name, "quatj") == 0) return 5;
-  if (strcmp(name, "quatk") == 0) return 6;
+  if (name == "shape") return 0;
+  if (name == "scale") return 1;
+  if (name == "density") return 2;
+  if (name == "quatw") return 3;
+  if (name == "quati") return 4;
+  if (name == "quatj") return 5;
+  if (name == "quatk") return 6;
   return -1;
 }
 

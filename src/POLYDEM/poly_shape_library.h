@@ -69,7 +69,7 @@ class PolyShapeLibrary : protected Pointers {
   void check_data_vel(int);    // after AtomVec::data_vel
   void pack_data_pre(int);
   void pack_data_post(int);
-  static int property_atom(const char *);
+  static int property_atom(const std::string &);
   void pack_property_atom(int, double *, int, int);
 
  private:

@@ -29,10 +29,18 @@ template <class DeviceType> struct HistoryMaxFunctor {
   {
     if (npartner(i) > m) m = npartner(i);
   }
+#if defined(KOKKOS_VERSION) && KOKKOS_VERSION >= 40000
+  KOKKOS_INLINE_FUNCTION void join(int &dst, const int &src) const
+  {
+    if (src > dst) dst = src;
+  }
+#else
+  // Kokkos 3 joins through volatile references (Kokkos 4 rejects this form)
   KOKKOS_INLINE_FUNCTION void join(volatile int &dst, const volatile int &src) const
   {
     if (src > dst) dst = src;
   }
+#endif
   KOKKOS_INLINE_FUNCTION void init(int &m) const { m = 0; }
 };
 

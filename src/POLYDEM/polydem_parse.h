@@ -18,11 +18,29 @@
 
 namespace polydem_parse {
 
+// utils::numeric as LAMMPS 29 Sep 2021 has it, on every LAMMPS version: a
+// word of the characters 0-9 + - . e E reads as atof (strtod) does, the
+// range included (1e400 is inf, 1e-320 a subnormal: the callers test and
+// name them); any other word is LAMMPS's error. Later LAMMPS stops on the
+// range itself, with its own text ("out of range"), before a command can
+// say which of its values is wrong.
+inline double numeric(const char *file, int line, const char *word, LAMMPS_NS::LAMMPS *lmp)
+{
+  if (word && *word) {
+    bool plain = true;
+    for (const char *c = word; *c && plain; c++)
+      plain = (*c >= '0' && *c <= '9') || *c == '+' || *c == '-' || *c == '.' || *c == 'e' ||
+          *c == 'E';
+    if (plain) return std::strtod(word, nullptr);
+  }
+  return LAMMPS_NS::utils::numeric(file, line, word ? word : "", false, lmp);
+}
+
 // a finite number written in full; cmd names the command in the message
 inline double number(const char *file, int line, const char *word, LAMMPS_NS::LAMMPS *lmp,
                      const std::string &cmd)
 {
-  const double v = LAMMPS_NS::utils::numeric(file, line, word, false, lmp);
+  const double v = numeric(file, line, word, lmp);
   char *end = nullptr;
   const double w = std::strtod(word, &end);    // (an underflow to a subnormal is a number)
   if (end == word || *end != '\0' || !std::isfinite(w) || w != v)

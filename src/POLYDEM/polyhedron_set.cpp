@@ -13,6 +13,7 @@
 #include "group.h"
 #include "math_const.h"
 #include "poly_shape_library.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_parse.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
@@ -70,9 +71,8 @@ void PolyhedronSet::command(int narg, char **arg)
     const int bit = group->bitmask[igroup];
     for (int i = 0; i < nlocal; i++) select[i] = (atom->mask[i] & bit) ? 1 : 0;
   } else if (style == "region") {
-    const int iregion = domain->find_region(arg[1]);
-    if (iregion < 0) error->all(FLERR, "polyhedron_set: region '{}' does not exist", arg[1]);
-    Region *region = domain->regions[iregion];
+    Region *region = polydem_compat::find_region(domain, arg[1]);
+    if (!region) error->all(FLERR, "polyhedron_set: region '{}' does not exist", arg[1]);
     region->prematch();
     double **x = atom->x;
     for (int i = 0; i < nlocal; i++) select[i] = region->match(x[i][0], x[i][1], x[i][2]);

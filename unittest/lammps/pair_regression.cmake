@@ -4,11 +4,12 @@
 polydem_lammps_test(test_pair_regression test_pair_regression.cpp)
 target_compile_definitions(test_pair_regression PRIVATE
   POLYDEM_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
+# the /kk cases skip themselves where LAMMPS has no KOKKOS package
+add_test(NAME lammps.pair_regression COMMAND test_pair_regression)
+add_test(NAME lammps.pair_regression_2_ranks
+  COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2
+          $<TARGET_FILE:test_pair_regression>)
+set_tests_properties(lammps.pair_regression_2_ranks PROPERTIES ENVIRONMENT "${_polydem_mpi_env}")
 if(POLYDEM_KOKKOS)
-  add_test(NAME lammps.pair_regression COMMAND test_pair_regression)
   polydem_kk_threads_test(lammps.pair_regression 5 test_pair_regression)
-  add_test(NAME lammps.pair_regression_2_ranks
-    COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2
-            $<TARGET_FILE:test_pair_regression>)
-  set_tests_properties(lammps.pair_regression_2_ranks PROPERTIES ENVIRONMENT "${_polydem_mpi_env}")
 endif()

@@ -23,6 +23,11 @@ namespace polydem_test {
 
 inline std::string potentials() { return POLYDEM_POTENTIALS_DIR; }
 
+// whether this LAMMPS has the KOKKOS package (the /kk styles): not in builds
+// against LAMMPS 4 Feb 2025 or later here, whose KOKKOS needs Kokkos 4
+inline bool has_kokkos() { return lammps_config_has_package("KOKKOS") != 0; }
+
+// the command-line extras of a plain run and, with KOKKOS, of a /kk run
 // a double as LAMMPS input text, exactly (17 significant digits)
 inline std::string num(double x)
 {
@@ -51,6 +56,13 @@ inline std::vector<std::string> kk(const std::vector<std::string> &rest)
   }
   a.insert(a.end(), rest.begin(), rest.end());
   return a;
+}
+
+// no suffix, and /kk (with POLYDEM_KK_THREADS threads) where LAMMPS has KOKKOS
+inline std::vector<std::vector<std::string>> plain_and_kk()
+{
+  if (!has_kokkos()) return {{}};
+  return {{}, kk({"-sf", "kk"})};
 }
 
 // the thread count the /kk runs ask for (1 unless POLYDEM_KK_THREADS is set)
@@ -86,9 +98,9 @@ class Lmp {
     try {
       lmp->input->one(line);
     } catch (LAMMPS_NS::LAMMPSAbortException &e) {
-      return e.message;
+      return e.what();
     } catch (LAMMPS_NS::LAMMPSException &e) {
-      return e.message;
+      return e.what();
     }
     return "";
   }

@@ -219,6 +219,7 @@ TEST(PairRegression, MatchesReference)
 
 TEST(PairRegression, KokkosMatchesReference)
 {
+  if (!polydem_test::has_kokkos()) GTEST_SKIP() << "LAMMPS without the KOKKOS package";
   const auto ref = read_reference(DIR + "/pair_regression.ref");
   ASSERT_EQ(ref.size(), 2u);
   const auto kk = regression_run(KK, "off");

@@ -1,0 +1,37 @@
+# shellcheck shell=sh
+# Sourced by tools/fetch-debian-source.sh and tools/fetch-debian-deb.sh:
+# system_archive_uri prints the Debian archive URI of the system's own apt
+# sources, so that no package host is named in POLYDEM's code.
+#
+# the archive URI the system's apt already uses for its main suite (the
+# suite named VERSION_CODENAME in /etc/os-release; else the first deb suite
+# without a -updates/-security tail): apt's own reading of its sources, then
+# the sources files themselves
+system_archive_uri() {
+  codename=
+  if [ -r /etc/os-release ]; then
+    codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+  fi
+  targets=$(apt-get indextargets --format '$(TARGET_OF) $(REPO_URI) $(RELEASE)' 2> /dev/null |
+    awk '$1 == "deb" { print $2, $3 }' | sort -u) || targets=
+  if [ -z "$targets" ]; then
+    # deb822 stanzas: Types / URIs / Suites, one stanza per blank-line block
+    targets=$(cat /etc/apt/sources.list.d/*.sources 2> /dev/null | awk '
+      function flush() { if (types ~ /(^| )deb( |$)/) for (i = 1; i <= nu; i++) for (j = 1; j <= ns; j++) print u[i], s[j]; types = ""; nu = ns = 0 }
+      /^[ \t]*$/ { flush(); next }
+      /^[ \t]*#/ { next }
+      tolower($1) == "types:" { types = ""; for (i = 2; i <= NF; i++) types = types " " $i; types = types " " }
+      tolower($1) == "uris:" { for (i = 2; i <= NF; i++) u[++nu] = $i }
+      tolower($1) == "suites:" { for (i = 2; i <= NF; i++) s[++ns] = $i }
+      END { flush() }')
+    # one-line format: deb [options] URI SUITE COMPONENT...
+    targets="$targets
+$(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list 2> /dev/null | awk '
+      $1 == "deb" { i = 2; if ($i ~ /^\[/) { while ($i !~ /\]$/) i++; i++ } print $i, $(i + 1) }')"
+  fi
+  echo "$targets" | awk -v c="$codename" '
+    NF == 2 && c != "" && $2 == c && !hit { hit = $1 }
+    NF == 2 && $2 !~ /-/ && !first { first = $1 }
+    END { if (hit) print hit; else if (first) print first }'
+}
+
