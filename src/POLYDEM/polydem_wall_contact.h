@@ -108,6 +108,18 @@ POLYDEM_FN WallContacts<T> wall_patch_contacts(const WallPatches<T> &P, const Me
   return C;
 }
 
+// no force, no contact
+template <typename T> POLYDEM_FN WallForce<T> wall_force_zero()
+{
+  WallForce<T> out;
+  out.f = out.tau = make_vec3(T(0), T(0), T(0));
+  out.energy = T(0);
+  out.ncontact = 0;
+  out.fresh = 0;
+  for (int k = 0; k < WALL_MAX_PATCH; ++k) out.fpatch[k] = make_vec3(T(0), T(0), T(0));
+  return out;
+}
+
 // Forces of all contacts on the particle (lab frame) and the update of its
 // tangential history hist[WALL_HIST_SIZE] for this mesh: each contact takes
 // the old slot whose normal is closest within the patch angle (else a fresh
@@ -123,12 +135,7 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
                                             const Vec3<T> &v, const Vec3<T> &w, T dt, T *hist,
                                             bool update)
 {
-  WallForce<T> out;
-  out.f = out.tau = make_vec3(T(0), T(0), T(0));
-  out.energy = T(0);
-  out.ncontact = 0;
-  out.fresh = 0;
-  for (int k = 0; k < WALL_MAX_PATCH; ++k) out.fpatch[k] = make_vec3(T(0), T(0), T(0));
+  WallForce<T> out = wall_force_zero<T>();
   T newh[WALL_HIST_SIZE];
   for (int i = 0; i < WALL_HIST_SIZE; ++i) newh[i] = T(0);
   bool used[WALL_MAX_PATCH] = {false, false, false, false};
@@ -235,12 +242,7 @@ POLYDEM_FN WallSides<T> wall_kept_sides(const T *hist, const MeshPose<T> &mp, in
 // history (if update).
 template <typename T> POLYDEM_FN WallForce<T> wall_no_contact(T *hist, bool update)
 {
-  WallForce<T> out;
-  out.f = out.tau = make_vec3(T(0), T(0), T(0));
-  out.energy = T(0);
-  out.ncontact = 0;
-  out.fresh = 0;
-  for (int k = 0; k < WALL_MAX_PATCH; ++k) out.fpatch[k] = make_vec3(T(0), T(0), T(0));
+  WallForce<T> out = wall_force_zero<T>();
   if (update)
     for (int i = 0; i < WALL_HIST_SIZE; ++i) hist[i] = T(0);
   return out;
