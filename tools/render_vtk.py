@@ -105,6 +105,44 @@ def draw(ax, vtk, meshes=(), elev=22, azim=-58, limits=None):
     return len(polys)
 
 
+def draw_front(ax, pts, polys, cell, keep=None, cmap="viridis", zrange=None):
+    """Orthographic front view (along +y, x to the right, z up) on a 2-D axis:
+    the faces of each particle that face the viewer, particles drawn far to
+    near; shaded by the face normal, coloured by the particle's height.
+    keep(centroid) -> bool selects particles (e.g. a slice |y| < w).
+    Returns the number of particles drawn."""
+    from matplotlib.collections import PolyCollection
+    by = {}
+    for k, pid in enumerate(cell["id"]):
+        by.setdefault(int(pid), []).append(k)
+    light = np.array([0.35, -0.75, 0.55])
+    light /= np.linalg.norm(light)
+    parts = []
+    for pid, ks in by.items():
+        c = np.mean([pts[polys[k]].mean(axis=0) for k in ks], axis=0)
+        if keep is None or keep(c):
+            parts.append((c, ks))
+    parts.sort(key=lambda t: -t[0][1])
+    zs = np.array([c[2] for c, _ in parts]) if parts else np.zeros(1)
+    zlo, zhi = zrange if zrange else (zs.min(), max(zs.max(), zs.min() + 1e-9))
+    cm = plt.get_cmap(cmap)
+    verts, colors = [], []
+    for c, ks in parts:
+        base = np.array(cm(0.15 + 0.75 * (c[2] - zlo) / (zhi - zlo))[:3])
+        for k in ks:
+            v = pts[polys[k]]
+            n = np.cross(v[1] - v[0], v[2] - v[0])
+            nn = np.linalg.norm(n)
+            if nn == 0 or n[1] / nn > -1e-9:      # faces the viewer (-y) only
+                continue
+            shade = 0.35 + 0.65 * abs(np.dot(n / nn, light))
+            verts.append(v[:, [0, 2]])
+            colors.append(np.clip(base * shade, 0, 1))
+    ax.add_collection(PolyCollection(verts, facecolors=colors, edgecolors=(0, 0, 0, 0.3), linewidths=0.15))
+    ax.set_aspect("equal")
+    return len(parts)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("vtk")
