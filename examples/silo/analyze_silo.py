@@ -17,10 +17,11 @@ Definitions (README):
              tau_w(z) the mean upward force per area the grains put on it.
   Janssen    p_w(h) = K rho_b g lam (1 - exp(-h / lam)), h = H_s - z the depth,
              rho_b = phi_b rho, lam = D / (4 mu_w K), D = 2 x 1.075 m (the
-             corrugation's mean radius); K and lam fitted on the cylinder's bands
-             with their centre below H_s - 0.25 m; mu_w = D / (4 K lam) the
-             effective wall friction the fit implies, against the mobilised
-             ratio tau_w / p_w measured on the same bands.
+             corrugation's mean radius), on the cylinder's bands with their
+             centre below H_s - 0.25 m: K fitted with mu_w = the mobilised
+             ratio tau_w / p_w measured on the same bands (K, lam); also K and
+             lam both free (K_free, lam_free: degenerate when the fill is
+             shorter than lam) and the hydrostatic K (p_w = K rho_b g h).
 Writes DIR/summary.txt (key=value), DIR/phi_rz.npz, DIR/pressure.txt."""
 import argparse
 import math
@@ -148,9 +149,15 @@ def main():
                                   p0=(0.4, 1.5), bounds=([0.01, 0.05], [5.0, 50.0]))
         sK, sl = np.sqrt(np.diag(cov))
         pred = janssen(rows[fit, 1], K, lam, rho_b)
-        res.update(K=K, K_sd=sK, lam=lam, lam_sd=sl, mu_w_fit=D / (4 * K * lam),
-                   mu_w_mobilised=float(np.sum(rows[fit, 3]) / np.sum(rows[fit, 2])),
-                   fit_rms_rel=float(np.sqrt(np.mean((pred / rows[fit, 2] - 1) ** 2))))
+        mu_m = float(np.sum(rows[fit, 3]) / np.sum(rows[fit, 2]))
+        res.update(K_free=K, K_free_sd=sK, lam_free=lam, lam_free_sd=sl, mu_w_free=D / (4 * K * lam),
+                   mu_w_mobilised=mu_m, rms_free=float(np.sqrt(np.mean((pred / rows[fit, 2] - 1) ** 2))))
+        # Janssen with the wall friction the grains mobilise (tau_w / p_w measured): K alone
+        f1 = lambda hh, K: janssen(hh, K, D / (4 * mu_m * K), rho_b)  # noqa: E731
+        (K1,), c1 = curve_fit(f1, rows[fit, 1], rows[fit, 2], p0=(0.5,), bounds=([0.01], [5.0]))
+        res.update(K=K1, K_sd=float(np.sqrt(c1[0, 0])), lam=D / (4 * mu_m * K1), mu_w_fit=mu_m,
+                   fit_rms_rel=float(np.sqrt(np.mean((f1(rows[fit, 1], K1) / rows[fit, 2] - 1) ** 2))),
+                   K_hydrostatic=float(np.sum(rows[fit, 2] * rows[fit, 1]) / np.sum(rho_b * 9.81 * rows[fit, 1] ** 2)))
     with open(os.path.join(a.out, "summary.txt"), "w") as f:
         f.write(" ".join("%s=%.6g" % kv for kv in res.items()) + "\n")
     print(" ".join("%s=%.6g" % kv for kv in res.items()))

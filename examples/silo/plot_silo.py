@@ -71,7 +71,7 @@ def main():
     b1.plot(rows[cyl, 1], rows[cyl, 2] / 1e3, "o", ms=4, label="cylinder, one pitch per band")
     b1.plot(rows[~cyl, 1], rows[~cyl, 2] / 1e3, "s", ms=3, mfc="none", label="hopper cone, 0.1 m bands")
     b1.plot(hh, janssen(hh, res["K"], res["lam"], res["rho_b"]) / 1e3, "k-",
-            label="Janssen fit: K = %.2f, lambda = %.2f m (mu_w = %.2f)" % (res["K"], res["lam"], res["mu_w_fit"]))
+            label="Janssen, mu_w = tau/p = %.2f: K = %.2f +- %.2f, lambda = %.2f m" % (res["mu_w_fit"], res["K"], res["K_sd"], res["lam"]))
     b1.plot(hh, res["K"] * res["rho_b"] * 9.81 * hh / 1e3, "k:", lw=0.8, label="K rho_b g h (no wall friction)")
     b1.axvline(Hs - ms.HCONE, color="0.6", ls="--", lw=0.8)
     b1.text(Hs - ms.HCONE, 0.2, " cone/cylinder", fontsize=7, color="0.4")
@@ -79,7 +79,7 @@ def main():
     b1.set_ylabel("normal wall pressure p_w (kPa)")
     b1.legend(fontsize=7)
     b2.plot(rows[cyl, 1], rows[cyl, 3] / np.maximum(rows[cyl, 2], 1e-9), "o", ms=4)
-    b2.axhline(res["mu_w_fit"], color="k", ls="-", lw=0.8, label="mu_w from the fit %.2f" % res["mu_w_fit"])
+    b2.axhline(res["mu_w_fit"], color="k", ls="-", lw=0.8, label="mobilised mean %.2f (used in the fit)" % res["mu_w_fit"])
     b2.axhline(0.8, color="k", ls=":", lw=0.8, label="wall friction coefficient 0.8")
     b2.set_ylim(0, 1.2)
     b2.set_xlabel("depth h (m)")
