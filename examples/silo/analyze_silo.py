@@ -24,7 +24,6 @@ Definitions (README):
              shorter than lam) and the hydrostatic K (p_w = K rho_b g h).
 Writes DIR/summary.txt (key=value), DIR/phi_rz.npz, DIR/pressure.txt."""
 import argparse
-import math
 import os
 import sys
 
@@ -68,14 +67,13 @@ def main():
     allp = np.vstack([P for P, _ in H])
     res["n"] = len(H)
     res["zmin_vertex"] = allp[:, 2].min()
-    rv = np.hypot(allp[:, 0], allp[:, 1])
+    # radial distance of each vertex beyond the wall (> 0: into it), then per grain
     wall_r = np.array([ms.radius(z) for z in np.clip(allp[:, 2], 0.0, ms.HTOT)])
-    res["max_vertex_outside_wall"] = float(np.max(rv - wall_r))      # > 0: into the wall
-    out = 0
-    for P, _ in H:
-        rw = np.array([ms.radius(z) for z in np.clip(P[:, 2], 0.0, ms.HTOT)])
-        out += bool(np.any(np.hypot(P[:, 0], P[:, 1]) > rw + 0.02) or P[:, 2].min() < -0.02)
-    res["grains_2cm_outside"] = out
+    beyond = np.hypot(allp[:, 0], allp[:, 1]) - wall_r
+    res["max_vertex_outside_wall"] = float(beyond.max())
+    ends = np.cumsum([len(P) for P, _ in H])[:-1]
+    res["grains_2cm_outside"] = int(sum(bool(b.max() > 0.02 or z.min() < -0.02)
+                                        for b, z in zip(np.split(beyond, ends), np.split(allp[:, 2], ends))))
 
     h = a.h
     ztop = allp[:, 2].max() + h
@@ -123,20 +121,15 @@ def main():
     incyl = cz > ms.HCONE
     k0 = ((cz - ms.HCONE) / ms.PITCH).astype(int)
     nb = int((Hs - ms.HCONE) / ms.PITCH) + 1
-    rows = []
-    for k in range(nb):
-        m = incyl & (k0 == k)
+
+    def band(m, zc):                    # area-weighted p_w and tau_w of the triangles m
         A = area[m].sum()
-        zc = ms.HCONE + (k + 0.5) * ms.PITCH
-        rows.append((zc, Hs - zc, (p[m] * area[m]).sum() / A, -fz[m].sum() / A))
-    cone = ~incyl
-    kc = (cz[cone] / 0.1).astype(int)
-    for k in range(int(ms.HCONE / 0.1) + 1):
-        m = kc == k
-        if m.any():
-            A = area[cone][m].sum()
-            rows.append((k * 0.1 + 0.05, Hs - (k * 0.1 + 0.05), (p[cone][m] * area[cone][m]).sum() / A,
-                         -fz[cone][m].sum() / A))
+        return (zc, Hs - zc, (p[m] * area[m]).sum() / A, -fz[m].sum() / A)
+
+    rows = [band(incyl & (k0 == k), ms.HCONE + (k + 0.5) * ms.PITCH) for k in range(nb)]
+    kc = (cz / 0.1).astype(int)
+    rows += [band(~incyl & (kc == k), k * 0.1 + 0.05) for k in range(int(ms.HCONE / 0.1) + 1)
+             if np.any(~incyl & (kc == k))]
     rows = np.array(sorted(rows))
     np.savetxt(os.path.join(a.out, "pressure.txt"), rows, fmt="%.6g",
                header="z(m) depth(m) p_w(Pa) tau_w(Pa)  (cylinder: one pitch per band; cone: 0.1 m bands)")
