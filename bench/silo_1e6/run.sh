@@ -22,5 +22,5 @@ cd "$out"
 [ -f silo.stl ] || /usr/bin/python3 "$ex/make_silo.py" silo.stl lid.stl
 "${launch[@]}" "$lmp" "${extra[@]}" -in "$ex/in.silo" -log log.silo_1e6 \
   -var pot "$ex/../../potentials" -var mesh . -var out silo_1e6 \
-  -var s 1.5 -var n 1000000 -var nb 50000 -var tb 0.35 -var dt 5.6e-5 \
-  -var tmax 9.0 -var ztop 10.6
+  -var s 1.5 -var n 1000000 -var nb 50000 -var tb 0.35 -var phip 0.25 -var dt 5.6e-5 \
+  -var tdamp 7.15 -var gdamp 0.158 -var tmax 9.0 -var tavg 0.05 -var ztop 10.6

@@ -8,7 +8,9 @@ for the summary only (short beds, friction). RUNDIR holds each bed's
 TAG.rad (r, eps(r)) and TAG.ax (z, phi(z)) and TAG.vtk. Writes summary.txt
 (mean, sample sd per shape and friction against Benyahia & O'Neill 2005),
 porosity.png (radial and axial profiles) and, with --picture, bed.png (front
-view of the bed TAG beside its radial profile)."""
+view of the bed TAG beside its radial profile). A bed's eps_b_se (key of its
+line, if there) replaces the block standard error computed from TAG.ax.
+--summary-only: summary.txt alone."""
 import argparse
 import math
 import os
@@ -64,6 +66,7 @@ def main():
     ap.add_argument("rundir")
     ap.add_argument("--picture", default=None)
     ap.add_argument("--extra", nargs="*", default=[])
+    ap.add_argument("--summary-only", action="store_true", help="write summary.txt, no figures")
     a = ap.parse_args()
     rows = read(a.results)
     groups = {}
@@ -78,12 +81,14 @@ def main():
         ht = np.array([float(k["H_top"]) for k in g])
         dd = float(g[0]["D_over_dpe"])
         c = benyahia_cyl(dd)
-        sd = e.std(ddof=1) if len(e) > 1 else block_se(a.rundir, g[0])
+        sd = e.std(ddof=1) if len(e) > 1 else float(g[0].get("eps_b_se", block_se(a.rundir, g[0])))
         lines.append("%s mu=%s n=%s | %d | %.4f +- %.4f | %.4f | %.4f | %.3f | %.3f | %.4f +- %.4f | %+.4f"
                      % (shape, mu, n, len(g), e.mean(), sd, ew.mean(), ec.mean(), ht.mean(), dd, c, 0.016 * c,
                         e.mean() - c))
     open(os.path.join(here, "summary.txt"), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
+    if a.summary_only:
+        return
 
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
     colors = {"catalyst_cylinder": "C0", "catalyst_cylinder12": "C1"}

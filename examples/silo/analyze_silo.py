@@ -22,6 +22,11 @@ Definitions (README):
              ratio tau_w / p_w measured on the same bands (K, lam); also K and
              lam both free (K_free, lam_free: degenerate when the fill is
              shorter than lam) and the hydrostatic K (p_w = K rho_b g h).
+  sigma_v(z) the section's mean vertical stress from the force balance of the
+             grains above z: their weight (grid) less the vertical force the
+             wall above z takes, over the section's area; K_direct = p_w /
+             sigma_v per band, and its ratio of sums over the fit bands deeper
+             than 0.5 m (Janssen's K measured without a fit).
 Writes DIR/summary.txt (key=value), DIR/phi_rz.npz, DIR/pressure.txt."""
 import argparse
 import os
@@ -131,8 +136,20 @@ def main():
     rows += [band(~incyl & (kc == k), k * 0.1 + 0.05) for k in range(int(ms.HCONE / 0.1) + 1)
              if np.any(~incyl & (kc == k))]
     rows = np.array(sorted(rows))
+    # mean vertical stress of the section from the force balance of the grains above z:
+    # their weight (from the grid) less what the wall above z carries
+    w_layer = a.rho * 9.81 * (solid & inside).sum(axis=(0, 1)) * h ** 3
+    sec = inside.sum(axis=(0, 1)) * h ** 2
+
+    def sigma_v(z):
+        k = min(int(z / h), len(zs) - 1)
+        return (w_layer[zs > z].sum() + fz[cz > z].sum()) / sec[k]
+    sv = np.array([sigma_v(z) for z in rows[:, 0]])
+    with np.errstate(divide="ignore", invalid="ignore"):
+        rows = np.column_stack([rows, sv, np.where(sv > 0, rows[:, 2] / sv, np.nan)])
     np.savetxt(os.path.join(a.out, "pressure.txt"), rows, fmt="%.6g",
-               header="z(m) depth(m) p_w(Pa) tau_w(Pa)  (cylinder: one pitch per band; cone: 0.1 m bands)")
+               header="z(m) depth(m) p_w(Pa) tau_w(Pa) sigma_v(Pa) K_direct=p_w/sigma_v"
+               "  (cylinder: one pitch per band; cone: 0.1 m bands)")
     fit = (rows[:, 0] > ms.HCONE) & (rows[:, 1] > 0.25)
     rho_b = phib * a.rho
     D = 2.0 * (ms.R + 0.5 * ms.DEPTH)
@@ -151,6 +168,11 @@ def main():
         res.update(K=K1, K_sd=float(np.sqrt(c1[0, 0])), lam=D / (4 * mu_m * K1), mu_w_fit=mu_m,
                    fit_rms_rel=float(np.sqrt(np.mean((f1(rows[fit, 1], K1) / rows[fit, 2] - 1) ** 2))),
                    K_hydrostatic=float(np.sum(rows[fit, 2] * rows[fit, 1]) / np.sum(rho_b * 9.81 * rows[fit, 1] ** 2)))
+        # Janssen's K measured without a fit: p_w over the force-balance sigma_v, bands deeper than 0.5 m
+        deep = fit & (rows[:, 1] > 0.5)
+        if deep.any():
+            res.update(K_direct=float(np.sum(rows[deep, 2]) / np.sum(rows[deep, 4])),
+                       K_direct_min=float(np.min(rows[deep, 5])), K_direct_max=float(np.max(rows[deep, 5])))
     with open(os.path.join(a.out, "summary.txt"), "w") as f:
         f.write(" ".join("%s=%.6g" % kv for kv in res.items()) + "\n")
     print(" ".join("%s=%.6g" % kv for kv in res.items()))

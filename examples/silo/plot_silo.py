@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Figures of a settled silo fill (after analyze_silo.py).
 
-    plot_silo.py final.vtk ANALYSIS_DIR
+    plot_silo.py final.vtk ANALYSIS_DIR [--tag TAG]
 
 Writes silo.png (front view of the grains in the slice |y| < 0.15 m beside
 the packing-fraction map phi(r, z)) and pressure.png (wall pressure against
-depth with the Janssen fit) into this folder."""
+depth with the Janssen fit; the ratios tau_w/p_w and K = p_w/sigma_v) into
+this folder; with --tag, silo_TAG.png and pressure_TAG.png."""
 import argparse
 import os
 import sys
@@ -28,6 +29,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("vtk")
     ap.add_argument("adir")
+    ap.add_argument("--tag", default="")
     a = ap.parse_args()
     res = {k: float(v) for k, v in (w.split("=") for w in open(os.path.join(a.adir, "summary.txt")).read().split())}
     Hs = res["H_s"]
@@ -35,7 +37,8 @@ def main():
     rw = np.array([ms.radius(z) for z in zw])
 
     pts, polys, cell = read_vtk(a.vtk)
-    fig = plt.figure(figsize=(12, 6.4), dpi=110)
+    suffix = "_" + a.tag if a.tag else ""
+    fig = plt.figure(figsize=(12, max(6.4, 1.05 * (Hs + 0.6) + 0.6)), dpi=110)
     ax = fig.add_axes([0.02, 0.06, 0.46, 0.88])
     n = draw_front(ax, pts, polys, cell, keep=lambda c: abs(c[1]) < 0.15, zrange=(0, Hs))
     ax.plot(rw, zw, "k-", lw=0.8)
@@ -62,7 +65,7 @@ def main():
     ax2.set_ylabel("z (m)")
     ax2.set_title("solid fraction phi(r, z), 5 cm cells (azimuthal mean); phi_b = %.3f" % res["phi_b"], fontsize=9)
     fig.colorbar(m, ax=ax2, fraction=0.05)
-    fig.savefig(os.path.join(here, "silo.png"))
+    fig.savefig(os.path.join(here, "silo%s.png" % suffix))
 
     rows = np.loadtxt(os.path.join(a.adir, "pressure.txt"))
     cyl = rows[:, 0] > ms.HCONE
@@ -78,15 +81,18 @@ def main():
     b1.set_xlabel("depth below the free surface h = H_s - z (m)")
     b1.set_ylabel("normal wall pressure p_w (kPa)")
     b1.legend(fontsize=7)
-    b2.plot(rows[cyl, 1], rows[cyl, 3] / np.maximum(rows[cyl, 2], 1e-9), "o", ms=4)
-    b2.axhline(res["mu_w_fit"], color="k", ls="-", lw=0.8, label="mobilised mean %.2f (used in the fit)" % res["mu_w_fit"])
+    b2.plot(rows[cyl, 1], rows[cyl, 3] / np.maximum(rows[cyl, 2], 1e-9), "o", ms=4, label="tau_w / p_w (mobilised wall friction)")
+    b2.axhline(res["mu_w_fit"], color="C0", ls="-", lw=0.8, label="its mean %.2f (used in the fit)" % res["mu_w_fit"])
     b2.axhline(0.8, color="k", ls=":", lw=0.8, label="wall friction coefficient 0.8")
-    b2.set_ylim(0, 1.2)
+    if rows.shape[1] > 5:
+        b2.plot(rows[cyl, 1], rows[cyl, 5], "s", ms=4, color="C3", label="K = p_w / sigma_v (force balance)")
+        b2.axhline(res["K"], color="C3", ls="--", lw=0.8, label="K of the Janssen fit %.2f" % res["K"])
+    b2.set_ylim(0, 1.5)
     b2.set_xlabel("depth h (m)")
-    b2.set_ylabel("tau_w / p_w on the cylinder")
+    b2.set_ylabel("ratio, cylinder bands")
     b2.legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(os.path.join(here, "pressure.png"))
+    fig.savefig(os.path.join(here, "pressure%s.png" % suffix))
 
 
 if __name__ == "__main__":

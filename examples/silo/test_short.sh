@@ -15,6 +15,7 @@ trap 'rm -rf "$scratch"' EXIT
 cd "$scratch"
 /usr/bin/python3 "$here/make_silo.py" silo.stl lid.stl
 "$1" -in "$here/in.silo" -screen none -log log.short -var pot "$here/../../potentials" -var mesh . \
+  -var s 4.0 -var dt 1.5e-4 -var phip 0.25 -var ztop 6.0 \
   -var n 600 -var nb 600 -var tb 0.45 -var tmax 1.0 -var tavg 0.03 -var out short
 grep -E '^(BATCH|FED|SETTLED)' log.short
 /usr/bin/python3 - "$here" <<'PY'
