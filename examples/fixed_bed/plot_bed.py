@@ -81,7 +81,7 @@ def main():
         ht = np.array([float(k["H_top"]) for k in g])
         dd = float(g[0]["D_over_dpe"])
         c = benyahia_cyl(dd)
-        sd = e.std(ddof=1) if len(e) > 1 else float(g[0].get("eps_b_se", block_se(a.rundir, g[0])))
+        sd = e.std(ddof=1) if len(e) > 1 else (float(g[0]["eps_b_se"]) if "eps_b_se" in g[0] else block_se(a.rundir, g[0]))
         lines.append("%s mu=%s n=%s | %d | %.4f +- %.4f | %.4f | %.4f | %.3f | %.3f | %.4f +- %.4f | %+.4f"
                      % (shape, mu, n, len(g), e.mean(), sd, ew.mean(), ec.mean(), ht.mean(), dd, c, 0.016 * c,
                         e.mean() - c))
