@@ -16,7 +16,7 @@
 #                 (headers and x86-64 shared libraries, glibc >= 2.14)
 #     MANIFEST    versions and sources
 #
-# Run where the packages are reachable (this machine): it uses the caches of
+# Run where the packages are reachable (the build machine): it uses the caches of
 # the normal build (LAMMPS source, Kokkos source) and fetches what is missing.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
