@@ -12,7 +12,7 @@
 #     one View slot), tsan.atomic_clean: the atomic version must be clean
 #   - threads.dualview_check_*: the DualView modify check fires on a missing sync
 # Any TSan report makes its test fail (exit code 66). Not part of tools/test.sh:
-# a cold run rebuilds all of LAMMPS with TSan (see README.md for the times).
+# a cold run rebuilds all of LAMMPS with TSan (times in bench/RESULTS.md).
 #
 # Environment: POLYDEM_TSAN_BUILD_DIR (default build-tsan), POLYDEM_JOBS (default 2),
 #              TSAN_OPTIONS (added to the defaults below).
