@@ -12,12 +12,23 @@
    The prisms of a flat triangulated wall partition the half-space behind it,
    so summed volumes and areas do not depend on the triangulation.
 
-   Gradients (flat wall): the volume behind an infinite flat wall has
-     dV/dx = S = -n_w A,   dV/dtheta = M = -(c_A - x) x n_w A,
-   with A the section area and c_A its centroid. Per triangle the kernel
-   returns these with A clipped to the triangle, so that their sum over a flat
-   triangulated wall is exact and F = -W'(V) S = W'(V) A n_w pushes the
-   particle out of the wall (the prism sides are internal and cancel).
+   Gradients. V is the volume of R, the part of P behind the plane inside the prism; a
+   rigid motion of P moves only the part of R's boundary that is P's surface:
+     dV/dx = S = int_{dP in R} n dA,  dV/dtheta = M = int_{dP in R} (r - x) x n dA
+   (Reynolds transport theorem; n the particle's outward normal). As the
+   closed surface of R has int n dA = 0 and int r x n dA = 0,
+     S = -n_w A - sum_e m_e B_e,  M = -(c_A - x) x n_w A - sum_e (c_e - x) x m_e B_e,
+   with A, c_A the section in the triangle and B_e, c_e the section of R with
+   the prism's side e (outward normal m_e). When R stays inside the prism
+   (no face polygon was cut by the triangle's edges) the B_e vanish and the
+   kernel returns the section form, S = -n_w A. Otherwise it sums the
+   particle's clipped face polygons themselves (their area vectors and
+   moments): exact at open borders and at edges between non-coplanar
+   triangles, where the sides do not cancel and the section form is not the
+   gradient of V (so W(V) would not be conserved). On a flat triangulated
+   wall the sides of neighbouring prisms cancel, so the sum over the wall is
+   -n_w A whatever the triangulation (round-off apart), and
+   F = -W'(V) S = W'(V) A n_w pushes the particle out of the wall.
    Header-only, host and device.
 ------------------------------------------------------------------------- */
 
@@ -57,8 +68,8 @@ template <typename T> struct ClipResult {
   Vec3<T> acentroid;    // its centroid (lab) [length]
   T volume;             // volume behind the plane inside the prism [length^3]
   Vec3<T> vcentroid;    // its centroid (lab) [length]
-  Vec3<T> S;            // -n_w area: dV/dx of a flat wall [length^2]
-  Vec3<T> M;            // -(acentroid - x) x n_w area: dV/dtheta [length^3]
+  Vec3<T> S;            // dV/dx [length^2] (-n_w area where no prism side is reached)
+  Vec3<T> M;            // dV/dtheta [length^3] (-(acentroid - x) x n_w area likewise)
   Vec3<T> normal;       // n_w
 };
 
@@ -93,7 +104,7 @@ namespace clip_detail {
   // carrying a value z that is linear along the polygon's edges
   template <typename T>
   POLYDEM_FN int sh_pass(const T *iu, const T *iv, const T *iz, int n, T au, T av, T bu, T bv,
-                         T *ou, T *ov, T *oz)
+                         T *ou, T *ov, T *oz, int *cut = nullptr)
   {
     const T eu = bu - au, ev = bv - av;
     int m = 0;
@@ -104,6 +115,7 @@ namespace clip_detail {
       const T cu = iu[i], cv = iv[i], cz = iz[i];
       const T sc = eu * (cv - av) - ev * (cu - au);    // cross2D(edgeDir, v - v0) >= 0: inside
       const bool inc = sc >= T(0), inp = sp >= T(0);
+      if (cut && !inc) *cut = 1;    // a vertex beyond the line: the polygon is cut
       if (inc != inp) {    // crossing: Eqs. 10-11
         const T t = sp / (sp - sc);
         ou[m] = pu + t * (cu - pu);
@@ -127,13 +139,14 @@ namespace clip_detail {
 
   // the polygon (iu, iv, iz), m vertices, clipped by the triangle (tu, tv)
   // (CCW): three passes, ping-pong with the scratch (qu, qv, qz); on return
-  // i* point at the result
+  // i* point at the result; *cut (if given) is set to 1 if a vertex lay
+  // outside the triangle
   template <typename T>
   POLYDEM_FN void clip_to_triangle(const T *tu, const T *tv, int &m, T *&iu, T *&iv, T *&iz, T *qu,
-                                   T *qv, T *qz)
+                                   T *qv, T *qz, int *cut = nullptr)
   {
     for (int e = 0; e < 3 && m > 0; ++e) {
-      m = sh_pass(iu, iv, iz, m, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], qu, qv, qz);
+      m = sh_pass(iu, iv, iz, m, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], qu, qv, qz, cut);
       T *su = iu, *sv = iv, *sz = iz;
       iu = qu;
       iv = qv;
@@ -260,7 +273,13 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
   // signed area A_f (n_f . n_w), so its signed integral carries -sign: sum
   // the signed integrals of every face and negate. Same with the moments:
   // a column of depth z over (u, v) holds int (u, v, -zeta) dzeta.
+  // The same clipped face polygons, as polygons in space (u, v, s = -z),
+  // give the exact gradient where the region is cut by the prism's sides
+  // (see the header): Sf = sum of their area vectors, Mf = sum of their
+  // moments (centroid - x) x area vector about the particle's centre (0, 0, sx).
   T V = T(0), Vabs = T(0), Mu = T(0), Mv = T(0), Mz = T(0);
+  T Sfu = T(0), Sfv = T(0), Sfs = T(0), Mfu = T(0), Mfv = T(0), Mfs = T(0);
+  int cut = 0;
   for (int f = 0; f < sv.nfaces; ++f) {
     const int f0 = sv.face_start[f], f1 = sv.face_start[f + 1];
     bool any = false;
@@ -292,18 +311,29 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
       }
     }
     T *iu = ws.pu, *iv = ws.pv, *iz = ws.pz;
-    clip_detail::clip_to_triangle(tu, tv, m, iu, iv, iz, ws.qu, ws.qv, ws.qz);
+    clip_detail::clip_to_triangle(tu, tv, m, iu, iv, iz, ws.qu, ws.qv, ws.qz, &cut);
     // fan: over a triangle, int z = A sum(z)/3, int u z = A (sum u sum z +
     // sum u z)/12, int z^2 = A (sum(z)^2 + sum z^2)/12
     for (int i = 1; i + 1 < m; ++i) {
-      const T da =
-          T(0.5) * ((iu[i] - iu[0]) * (iv[i + 1] - iv[0]) - (iv[i] - iv[0]) * (iu[i + 1] - iu[0]));
+      const T du1 = iu[i] - iu[0], dv1 = iv[i] - iv[0], dz1 = iz[i] - iz[0];
+      const T du2 = iu[i + 1] - iu[0], dv2 = iv[i + 1] - iv[0], dz2 = iz[i + 1] - iz[0];
+      const T da = T(0.5) * (du1 * dv2 - dv1 * du2);
       const T z0 = iz[0], z1 = iz[i], z2 = iz[i + 1], sz = z0 + z1 + z2;
+      const T su = iu[0] + iu[i] + iu[i + 1], svv = iv[0] + iv[i] + iv[i + 1];
       V += da * sz;
       Vabs += fabs(da * sz);
-      Mu += da * (sz * (iu[0] + iu[i] + iu[i + 1]) + iu[0] * z0 + iu[i] * z1 + iu[i + 1] * z2);
-      Mv += da * (sz * (iv[0] + iv[i] + iv[i + 1]) + iv[0] * z0 + iv[i] * z1 + iv[i + 1] * z2);
+      Mu += da * (sz * su + iu[0] * z0 + iu[i] * z1 + iu[i + 1] * z2);
+      Mv += da * (sz * svv + iv[0] * z0 + iv[i] * z1 + iv[i + 1] * z2);
       Mz += da * (sz * sz + z0 * z0 + z1 * z1 + z2 * z2);
+      // area vector (d1 x d2) / 2 with s = -z, and its moment about (0, 0, sx)
+      const T au = T(0.5) * (dz1 * dv2 - dv1 * dz2), av = T(0.5) * (du1 * dz2 - dz1 * du2);
+      const T cu = su / T(3), cvv = svv / T(3), cs = -sz / T(3) - sx;
+      Sfu += au;
+      Sfv += av;
+      Sfs += da;
+      Mfu += cvv * da - cs * av;
+      Mfv += cs * au - cu * da;
+      Mfs += cu * av - cvv * au;
     }
   }
   V = -V / T(3);
@@ -316,6 +346,13 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
     res.volume = V;
     const T w = T(-1) / (T(12) * V);
     res.vcentroid = o + (w * Mu) * e1 + (w * Mv) * e2 - (T(0.5) * w * Mz) * nw;
+    // the part behind the plane reaches beyond the triangle's prism: the
+    // prism's sides bound the region too, and dV/dx, dV/dtheta are the
+    // particle's surface inside it (Sf, Mf), not the section alone
+    if (cut) {
+      res.S = Sfu * e1 + Sfv * e2 + Sfs * nw;
+      res.M = Mfu * e1 + Mfv * e2 + Mfs * nw;
+    }
   }
   if (res.volume == T(0) && res.area == T(0)) res.status = STATUS_SEPARATED;
   return res;

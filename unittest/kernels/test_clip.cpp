@@ -231,6 +231,70 @@ TEST(KernelClip, FlatWallGradients)
   std::printf("[ flat wall gradients ] max relative error %.2e\n", emax);
 }
 
+// One triangle with open borders (the prism's sides cut the region behind
+// it): S and M are still the exact gradient of V, by central finite
+// differences in translation and rotation. The section form -n_w A is not
+// (it misses the sides' sections): this is what made walls create energy at
+// a mesh's open edges.
+TEST(KernelClip, OpenBorderGradients)
+{
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::uniform_int_distribution<int> pick(0, (int) pool().data.size() - 1);
+  double emax = 0, side_max = 0;
+  int ncut = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int s = pick(rng);
+    const ShapeData &sd = pool().data[s];
+    const double L = sd.radius;
+    const Pose<double> p = make_pose(make_vec3(0.0, 0.0, (1.2 * u(rng) - 0.8) * L),
+                                     random_quat(rng), 1.0);
+    // a triangle of the plane z = 0 (front +z) about the particle's size,
+    // placed so that its borders cross the part behind the plane
+    Vec3<double> v[3];
+    const double ph = 2 * M_PI * u(rng), size = L * (0.3 + 1.5 * u(rng));
+    const Vec3<double> c = make_vec3(L * (u(rng) - 0.5), L * (u(rng) - 0.5), 0.0);
+    for (int k = 0; k < 3; ++k) {
+      const double ang = ph + 2 * M_PI * k / 3 + 0.4 * (u(rng) - 0.5);
+      v[k] = c + make_vec3(size * std::cos(ang), size * std::sin(ang), 0.0);
+    }
+    const Triangle<double> t = make_tri(v[0], v[1], v[2]);
+    auto vol = [&](const Pose<double> &q) {
+      return polyhedron_triangle(make_posed(pool().d[s]->view, q), t, wsd).volume;
+    };
+    const ClipResult<double> r = polyhedron_triangle(make_posed(pool().d[s]->view, p), t, wsd);
+    ASSERT_TRUE(r.status == STATUS_OK || r.status == STATUS_SEPARATED);
+    if (r.volume < 1e-3 * sd.volume) continue;
+    const double h = 1e-6 * L;
+    Vec3<double> fs, fm;
+    for (int k = 0; k < 3; ++k) {
+      Vec3<double> e = make_vec3(0.0, 0.0, 0.0);
+      e[k] = 1.0;
+      Pose<double> a = p, b = p;
+      a.x += h * e;
+      b.x -= h * e;
+      fs[k] = (vol(a) - vol(b)) / (2 * h);
+      const double ha = h / L;
+      a = p;
+      b = p;
+      a.q = qmul(axis_angle(e, ha), p.q);
+      b.q = qmul(axis_angle(e, -ha), p.q);
+      fm[k] = (vol(a) - vol(b)) / (2 * ha);
+    }
+    // the sides' share of the gradient: S minus the section form
+    const double side = norm(r.S + r.area * r.normal) / (L * L);
+    if (side > 1e-3) ++ncut;
+    side_max = std::max(side_max, side);
+    const double e = std::max(norm(fs - r.S) / (L * L), norm(fm - r.M) / (L * L * L));
+    emax = std::max(emax, e);
+    EXPECT_LE(e, 1e-6) << "trial " << trial << " side share " << side;
+  }
+  std::printf("[ open border gradients ] %d cases with a side share > 1e-3 L^2 (max %.3f L^2); "
+              "max error %.2e\n",
+              ncut, side_max, emax);
+  EXPECT_GE(ncut, 100);
+}
+
 TEST(KernelClip, Workspace)
 {
   std::printf("[ workspace ] clip double %lu bytes, float %lu bytes\n",
