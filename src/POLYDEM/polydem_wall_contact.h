@@ -73,10 +73,15 @@ template <typename T> struct WallForce {
 // ellipsoid patches (polydem_wall_ellipsoid.h) both end here, and
 // wall_contact_forces is the one loop of slot matching, contact_step and
 // history for both.
+// key[k]: the patch's first facet normal as met (lab, from the particle
+// into the wall), which names the contact from step to step (history slot,
+// kept side): the contact normal g.normal tilts where the prism's sides take
+// part (open borders, sharp edges), the facet's normal does not.
 template <typename T> struct WallContacts {
   int n;
   int on[WALL_MAX_PATCH];
   ContactGeometry<T> g[WALL_MAX_PATCH];
+  Vec3<T> key[WALL_MAX_PATCH];
 };
 
 // Polyhedron patches: V, S = -sum n_t A_t, M summed over the patch's
@@ -101,6 +106,7 @@ POLYDEM_FN WallContacts<T> wall_patch_contacts(const WallPatches<T> &P, const Me
     g.M_A = matvec(mp.R, q.M);
     g.M_B = make_vec3(T(0), T(0), T(0));
     g.normal = (T(1) / an) * g.S_A;    // from the particle into the wall
+    C.key[k] = -matvec(mp.R, q.nseed);
     const Vec3<T> cm = q.area > T(0) ? (T(1) / q.area) * q.ac : (T(1) / q.volume) * q.vc;
     g.centroid = xw + matvec(mp.R, cm - mp.o);
     g.gradient_damping = 0;
@@ -122,9 +128,9 @@ template <typename T> POLYDEM_FN WallForce<T> wall_force_zero()
 
 // Forces of all contacts on the particle (lab frame) and the update of its
 // tangential history hist[WALL_HIST_SIZE] for this mesh: each contact takes
-// the old slot whose normal is closest within the patch angle (else a fresh
-// spring); unmatched slots are cleared. Each slot also keeps its plane's
-// distance from the centroid (WallSides). law: the particle's wall law
+// the old slot whose key normal (C.key) is closest within the patch angle
+// (else a fresh spring); unmatched slots are cleared. Each slot keeps that
+// normal and its plane's distance from the centroid (WallSides). law: the particle's wall law
 // (wall_law, or ellipsoid_law); m its mass, Iinv its inverse principal
 // moments, R its rotation (body -> frame of the contact normals, for the
 // contact point's mass); dt the time step (0: no history increment, setup).
@@ -151,12 +157,13 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
   for (int k = 0; k < C.n; ++k) {
     if (!C.on[k]) continue;
     const ContactGeometry<T> &g = C.g[k];
-    // history slot with the closest normal (lab frame)
+    const Vec3<T> &key = C.key[k];
+    // history slot with the closest key normal (lab frame)
     int best = -1;
     T bc = cosmax;
     for (int s = 0; s < WALL_MAX_PATCH; ++s) {
       const T *h = hist + WALL_HIST * s;
-      const T c = h[0] * g.normal.x + h[1] * g.normal.y + h[2] * g.normal.z;
+      const T c = h[0] * key.x + h[1] * key.y + h[2] * key.z;
       if (!used[s] && c >= bc) {
         bc = c;
         best = s;
@@ -175,10 +182,10 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
     kin.meff = T(1) / im;
     const ContactForce<T> cf = contact_step(g, law, kin, shear, CONTACT_HIST);
     T *h = newh + WALL_HIST * out.ncontact;
-    h[0] = g.normal.x;
-    h[1] = g.normal.y;
-    h[2] = g.normal.z;
-    h[3] = dot(g.normal, g.centroid - x);
+    h[0] = key.x;
+    h[1] = key.y;
+    h[2] = key.z;
+    h[3] = dot(key, g.centroid - x);
     for (int i = 0; i < CONTACT_HIST; ++i) h[4 + i] = shear[i];
     out.f += cf.F_A;
     out.fpatch[k] = cf.F_A;

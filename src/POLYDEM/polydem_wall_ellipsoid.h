@@ -264,6 +264,7 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
     g.area = T(0);
     g.S_A = matvec(mp.R, q.S);
     g.normal = g.S_A;    // unit, from the particle into the wall
+    C.key[k] = -matvec(mp.R, q.nseed);
     g.M_A = matvec(mp.R, q.M);
     g.M_B = make_vec3(T(0), T(0), T(0));
     g.centroid = xw + matvec(mp.R, q.ac - mp.o);
