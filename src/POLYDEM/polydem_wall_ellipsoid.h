@@ -24,10 +24,9 @@
    -k_n delta n_s at p* (any point of that line) is then the exact gradient
    of 1/2 k_n delta^2 in translation (d delta/dc = n_s) and rotation (d delta
    /dtheta = (p* - c) x n_s, the envelope theorem on sigma). Edges and
-   vertices: the same formulas with the closest point on the border, a
-   continuous approximation (the support plane through the closest point,
-   normal by the affine map; not the metric closest point, and the force is
-   not an exact gradient there). A flat wall gives one contact whatever its
+   vertices: the same depth continued with the triangle's own support,
+   delta = (1 - r') sigma(n_w), and its exact gradient (ellipsoid_triangle),
+   so that the elastic energy is conserved there too. A flat wall gives one contact whatever its
    triangulation: the coplanar triangles under the foot all give it, the
    others are farther (r' larger), and per patch the smallest r' is kept.
 
@@ -41,7 +40,7 @@
    WALL_MAX_PATCH; beyond, the closest patch, counted as merged); each patch
    keeps its closest point and is one contact of the contact layer
    (wall_ellipsoid_contacts -> wall_contact_forces): measure delta, area 0,
-   S_A = n_s, M_A = (p* - x) x n_s, point damping at the contact point
+   S_A, M_A the gradient of delta (n_s, (p* - x) x n_s on a face), point damping at the contact point
    p_c = p* - delta n_s (on the force line, in the wall's plane for a face).
 
    Centre behind the acting side (h < 0: a kept contact pushed past its
@@ -108,12 +107,13 @@ POLYDEM_FN T ellipsoid_support(const WallEllipsoid<T> &e, const Vec3<T> &n, Vec3
 
 // Overlap of the ellipsoid with triangle t met from side 'side' (+1 front).
 // Returns false if they do not touch; else r' (r), delta, the normal n_s
-// into the wall, the point p* (ps), and whether the closest point is the
+// into the wall, the point p* (ps), the gradients S = d delta/dc and
+// M = d delta/dtheta (mesh frame), and whether the closest point is the
 // foot of the centre with the centre behind the plane (behind).
 template <typename T>
 POLYDEM_FN bool ellipsoid_triangle(const WallEllipsoid<T> &e, const MeshGridView<T> &g, int t,
                                    int side, T &r, T &delta, Vec3<T> &ns, Vec3<T> &ps,
-                                   int &behind, int &degenerate)
+                                   Vec3<T> &S, Vec3<T> &M, int &behind, int &degenerate)
 {
   const T *pl = g.plane + 4 * t;
   const Vec3<T> nw = T(side) * make_vec3(pl[0], pl[1], pl[2]);
@@ -146,9 +146,12 @@ POLYDEM_FN bool ellipsoid_triangle(const WallEllipsoid<T> &e, const MeshGridView
     ns = -nw;
     delta = sig - h;
     ps = e.c - (T(1) / sig) * matvec(e.R, Av);
+    S = ns;
+    M = cross(ps - e.c, ns);
     behind = h < T(0);
     return true;
   }
+  const Vec3<T> Mnw = matvec(e.R, Av);    // M n_w
   behind = 0;
   Vec3<T> u;
   if (h >= T(0)) {
@@ -162,8 +165,25 @@ POLYDEM_FN bool ellipsoid_triangle(const WallEllipsoid<T> &e, const MeshGridView
   if (!(r < T(1))) return false;
   const Vec3<T> w = matvec(e.R, make_vec3(u.x / e.ax.x, u.y / e.ax.y, u.z / e.ax.z));
   ns = (T(1) / norm(w)) * w;
-  delta = (T(1) - r) * ellipsoid_support(e, ns, Av);
+  // delta = (1 - r') sigma(n_w): the face's support depth where q' is the
+  // foot, continued with the triangle's own sigma(n_w) over its edges and
+  // vertices (C1 across the face's border). By the envelope theorem on
+  // r' = min |A^-1 R^T (p - c)| over the triangle, dr'/dc = -w and
+  // dr'/dtheta = -(p - c) x w (p the closest point, p - c = r' (p* - c)),
+  // and d sigma(n_w)/dtheta = (M n_w x n_w) / sigma, so
+  //   S = sigma w,  M = sigma r' (p* - c) x w + (1 - r') (M n_w x n_w) / sigma:
+  // the exact gradient, so k delta^2 / 2 is conserved at open borders and
+  // sharp edges. (Centre behind the side, the reflected form: continuous,
+  // the point force along n_s.)
+  delta = (T(1) - r) * sig;
   ps = e.c + matvec(e.R, make_vec3(e.ax.x * u.x, e.ax.y * u.y, e.ax.z * u.z));
+  if (h >= T(0)) {
+    S = sig * w;
+    M = (sig * r) * cross(ps - e.c, w) + ((T(1) - r) / sig) * cross(Mnw, nw);
+  } else {
+    S = (sig / ellipsoid_support(e, ns, Av)) * ns;
+    M = cross(ps - e.c, S);
+  }
   return delta > T(0);
 }
 
@@ -192,9 +212,9 @@ template <typename T> struct WallEllipsoidAccumulate {
   {
     const int side = wall_side(sides, g->plane + 4 * t, e->c, rb);
     T r, delta;
-    Vec3<T> ns, ps;
+    Vec3<T> ns, ps, S, M;
     int behind, degenerate;
-    if (!ellipsoid_triangle(*e, *g, t, side, r, delta, ns, ps, behind, degenerate)) {
+    if (!ellipsoid_triangle(*e, *g, t, side, r, delta, ns, ps, S, M, behind, degenerate)) {
       out->ndegenerate += degenerate;
       return;
     }
@@ -218,8 +238,8 @@ template <typename T> struct WallEllipsoidAccumulate {
     rbest[k] = r;
     p.volume = vol * ellipsoid_cap_fraction(r);
     p.area = T(0);
-    p.S = ns;
-    p.M = cross(ps - e->c, ns);
+    p.S = S;
+    p.M = M;
     p.ac = ps - delta * ns;
     p.vc = ps;
     p.depth = delta;
@@ -263,7 +283,7 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
     g.volume = q.depth;
     g.area = T(0);
     g.S_A = matvec(mp.R, q.S);
-    g.normal = g.S_A;    // unit, from the particle into the wall
+    g.normal = (T(1) / norm(g.S_A)) * g.S_A;    // from the particle into the wall
     C.key[k] = -matvec(mp.R, q.nseed);
     g.M_A = matvec(mp.R, q.M);
     g.M_B = make_vec3(T(0), T(0), T(0));

@@ -7,9 +7,10 @@
 //   of the semi-axis;
 // - S and M are the gradient of delta (central differences in translation
 //   and rotation, 1e-7 relative);
+// - the same at edges and vertices of an open plate (the exact gradient);
 // - a sweep across the border of an open mesh (face -> edge -> vertex ->
 //   gone) is continuous: no step of 5e-4 a changes delta by more than
-//   2e-3 a nor the normal by more than 1e-2;
+//   2e-3 a nor the gradient S by more than 1e-2;
 // - behind the acting side (kept side): the face contact keeps pushing back;
 // - NaN poses are counted as degenerate, never a contact.
 #include "polydem_stl.h"
@@ -196,6 +197,60 @@ TEST(WallEllipsoidKernel, GradientOfTheOverlap)
     }
   }
   std::printf("[ ell wall ] gradient: largest |finite difference - (S, M/a)| %.3g\n", worst);
+}
+
+// The same at the borders of an open plate
+// (edge and vertex contacts, the centre in front): S and M are the exact
+// gradient of delta, so that k delta^2 / 2 is conserved at a mesh's open
+// edges and at sharp edges too.
+TEST(WallEllipsoidKernel, GradientAtBorders)
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
+  const Mesh<double> plate(wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
+  double worst = 0.0;
+  int nedge = 0, nvert = 0;
+  for (int trial = 0; trial < 200; trial++) {
+    const Quat<double> q = random_quat(rng);
+    const Mat3<double> R = quat_to_mat(q);
+    // centre beyond the edge x = 0.05 (or beyond the corner), above the plane
+    const bool corner = trial % 2;
+    const double off = 0.004 + 0.01 * u(rng);
+    const Vec3<double> c = make_vec3(0.05 + off, corner ? 0.05 + off * u(rng) : 0.04 * u(rng),
+                                     0.012 * u(rng));
+    WallPatches<double> P;
+    wall_ellipsoid_patches(posed<double>(c, R, ax), plate.v, std::cos(20.0 * M_PI / 180.0), P);
+    if (P.n != 1 || P.p[0].depth < 1e-3 * ax.z) continue;
+    (corner ? nvert : nedge)++;
+    const double eps = 1e-7 * ax.x;
+    for (int k = 0; k < 3; k++) {
+      Vec3<double> dx = make_vec3(0.0, 0.0, 0.0);
+      dx[k] = eps;
+      const double g = (depth_of(posed<double>(c + dx, R, ax), plate.v) -
+                        depth_of(posed<double>(c - dx, R, ax), plate.v)) /
+          (2 * eps);
+      EXPECT_NEAR(g, P.p[0].S[k], 1e-6) << trial;
+      worst = std::fmax(worst, std::fabs(g - P.p[0].S[k]));
+      const double phi = 1e-7;
+      Vec3<double> axis = make_vec3(0.0, 0.0, 0.0);
+      axis[k] = 1.0;
+      auto rot = [&](double a) {
+        const Quat<double> dq = make_quat(std::cos(a / 2), std::sin(a / 2) * axis.x,
+                                          std::sin(a / 2) * axis.y, std::sin(a / 2) * axis.z);
+        return quat_to_mat(qmul(dq, q));
+      };
+      const double gr = (depth_of(posed<double>(c, rot(phi), ax), plate.v) -
+                         depth_of(posed<double>(c, rot(-phi), ax), plate.v)) /
+          (2 * phi);
+      EXPECT_NEAR(gr, P.p[0].M[k], 1e-6 * ax.x) << trial;
+      worst = std::fmax(worst, std::fabs(gr - P.p[0].M[k]) / ax.x);
+    }
+  }
+  std::printf("[ ell wall ] border gradient: %d edge, %d vertex contacts, largest |finite "
+              "difference - (S, M/a)| %.3g\n", nedge, nvert, worst);
+  EXPECT_GT(nedge, 30);
+  EXPECT_GT(nvert, 30);
 }
 
 // An ellipsoid slides off the corner of an open square plate: face, then
