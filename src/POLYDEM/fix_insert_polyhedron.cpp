@@ -266,6 +266,18 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   }
   if (fabs(fsum - 1.0) > 1.0e-6)
     error->all(FLERR, "{}: the shape fractions sum to {:.6g}, not 1", me, fsum);
+  // the checks of polyhedron_set, at both ends of each scale range (mass
+  // rho V s^3 and moments m s^2 J / V grow with s): density 1e308 or
+  // 1e-320, scale 1e-300 gave an infinite or zero mass
+  for (const auto &k : kinds)
+    for (const double s : {k.scale.min(), k.scale.max()}) {
+      const double m = k.density * avec->shape(k.ishape).volume() * s * s * s;
+      if (!avec->mass_is_normal(k.ishape, m, s))
+        error->all(FLERR,
+                   "{}: shape '{}': density {:.6g} and scale {:.6g} give a mass {:.6g} outside "
+                   "(0, 1e250] or a moment of inertia that is zero or not finite",
+                   me, k.id, k.density, s, m);
+    }
   if (mode == MODE_RATE) {
     if (!have_rate)
       error->all(FLERR, "{}: mode rate needs one of the keywords rate, rate/mass or per", me);
@@ -862,8 +874,12 @@ void FixInsertPolyhedron::create(const std::vector<Placed> &placed)
 
 bigint FixInsertPolyhedron::count_target(bigint k) const
 {
-  if (ratestyle == RATE_PER) return (k + 1) * (bigint) rate;
-  return (bigint) llround(rate * (double) ((k + 1) * every) * update->dt);
+  // in floating point, clamped to N (or, without N, to 4e18): rate 1e25
+  // overflowed the integer target, which then asked for nothing
+  const double t = ratestyle == RATE_PER ? (double) (k + 1) * rate
+                                         : rate * (double) ((k + 1) * every) * update->dt;
+  const double cap = ntotal > 0 ? (double) ntotal : 4.0e18;
+  return t < cap ? (bigint) llround(t) : (bigint) cap;
 }
 
 double FixInsertPolyhedron::mass_target(bigint k) const

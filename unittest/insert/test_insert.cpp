@@ -577,3 +577,68 @@ TEST(Insert, BadInputIsRefusedClearly)
     EXPECT_EQ(fvec(l, "ins", 0), (double) l.lmp->atom->natoms);
   }
 }
+
+// ---- issue 32 item 3: what polyhedron_set refuses, and runs that never end
+
+// scale 1e-11 (rate) and 1e-12 (pack): the candidate grid (and the void
+// cells) grew as (region / particle)^3 and the run stopped in std::bad_alloc;
+// the grids are capped, and the particles are inserted
+TEST(Insert, TinyScalesGetACappedGrid)
+{
+  for (const std::string mode : {"per 20", "mode pack"}) {
+    Lmp l;
+    l.cmds(mixed_box());
+    const std::string scale = mode == "per 20" ? "1e-11" : "1e-12";
+    l.cmds({"fix ins all insert/polyhedron 20 5 region box " + mode +
+                " density 2500 all_in no shape d 1 scale " + scale,
+            "fix nve all nve/polyhedron", "timestep 1e-5", "run 0"});
+    EXPECT_EQ(l.lmp->atom->natoms, 20) << mode;
+    EXPECT_EQ(overlaps(l, 0), 0) << mode;
+  }
+}
+
+// density 1e308 or 1e-320, scale 1e-300: a mass that is infinite or zero
+// (temperature inf or NaN from step 0) is refused, naming the shape
+TEST(Insert, MassOutOfRangeIsRefusedNamingTheShape)
+{
+  const std::string f = "fix ins all insert/polyhedron 10 1 region box per 1 ";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"density 1e308 shape d 1 scale 1", "shape 'd': density 1e+308 and scale 1"},
+      {"density 1e-320 shape d 1 scale 0.001", "shape 'd': density 9.99989e-321"},
+      {"density 2500 shape d 1 scale 1e-300", "shape 'd': density 2500 and scale 1e-300"},
+      {"density 2500 shape d 0.5 scale 0.001 shape q 0.5 scale uniform 0.001 1e100",
+       "shape 'q': density 2500 and scale 1e+100"},
+      {"shape d 0.5 scale 0.001 density 1 shape q 0.5 scale 0.001 density 1e300",
+       "shape 'q': density 1e+300"}};
+  for (const auto &c : cases) {
+    Lmp l;
+    l.cmds(mixed_box());
+    const std::string msg = l.error_of(f + c.first);
+    EXPECT_NE(msg.find(c.second), std::string::npos) << c.first << ": " << msg;
+    EXPECT_NE(msg.find("outside (0, 1e250]"), std::string::npos) << msg;
+  }
+  // small and large masses that pass
+  Lmp l;
+  l.cmds(mixed_box());
+  EXPECT_EQ(l.error_of(f + "density 1e-250 shape d 1 scale 0.001"), "");
+  EXPECT_EQ(l.error_of("fix ins2 all insert/polyhedron 10 1 region box per 1 density 1e240 "
+                       "shape d 1 scale 1"),
+            "");
+}
+
+// rate 1e25 (and per 1e25) overflowed the integer target of an insertion,
+// which then asked for nothing; the target is clamped to N
+TEST(Insert, HugeRatesAreClampedToN)
+{
+  for (const std::string rate : {"rate 1e25", "per 1e25"}) {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds({"fix ins all insert/polyhedron 30 5 region box " + rate +
+                " every 20 density 1000 all_in no shape d 1 scale 0.001",
+            "fix nve all nve/polyhedron", "timestep 1e-5", "run 0"});
+    EXPECT_EQ(l.lmp->atom->natoms, 30) << rate;
+    l.cmd("run 40");
+    EXPECT_EQ(l.lmp->atom->natoms, 30) << rate;
+  }
+}
+
