@@ -291,9 +291,11 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   for (const auto &k : kinds)
     rmax_insert = std::max(rmax_insert, avec->shape(k.ishape).radius() * k.scale.max());
   double prev = 0.0;
-  mean_mass = 0.0;
+  mean_mass = mean_volume = 0.0;
   for (const auto &k : kinds) {
-    mean_mass += (k.pnum - prev) * k.density * avec->shape(k.ishape).volume() * k.scale.moment(3);
+    const double v = (k.pnum - prev) * avec->shape(k.ishape).volume() * k.scale.moment(3);
+    mean_volume += v;
+    mean_mass += k.density * v;
     prev = k.pnum;
   }
 
@@ -694,6 +696,10 @@ bool FixInsertPolyhedron::sample_in_region(double *x)
   return false;
 }
 
+// mode pack: the first progress line (particles), and at least one line this often (s)
+static constexpr bigint PROGRESS_FIRST = 10000;
+static constexpr double PROGRESS_SECONDS = 60.0;
+
 /* ----------------------------------------------------------------------
    one insertion: particles are drawn (kind, scale) and placed one after
    the other, each with up to `attempts` poses, until nmax particles (< 0:
@@ -746,7 +752,25 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   double mass = massinserted;
   bool failed = false;
   int miss_run = 0;
+  const double goal = voids ? pack_estimate(nmax, mstop - mass, phistop, vol) : 0.0;
+  bigint next_progress = PROGRESS_FIRST;
+  double last_progress = MPI_Wtime();
   while (nmax < 0 || (bigint) placed.size() < nmax) {
+    if (voids) {
+      // progress of a long fill: at 1e4, 2e4, 5e4, 1e5, ... particles, and
+      // at least every PROGRESS_SECONDS (rank 0's clock: printing only)
+      const bigint n = (bigint) placed.size();
+      const bool timed = comm->me == 0 && MPI_Wtime() - last_progress > PROGRESS_SECONDS;
+      if (n >= next_progress || timed) {
+        if (comm->me == 0)
+          utils::logmesg(lmp,
+                         "fix insert/polyhedron {}: packed {} of about {:.4g} particle(s), solid "
+                         "fraction {:.4g}, {} attempts, {:.1f} s\n",
+                         id, n, goal, vol / region_volume, nattempts, MPI_Wtime() - t0);
+        last_progress = MPI_Wtime();
+        while (next_progress <= n) next_progress = next_milestone(next_progress);
+      }
+    }
     // a mass target is met to within half a particle: insert while that
     // brings the total closer to it (on the mixture's mean mass)
     if (mstop > 0.0 && mass + 0.5 * mean_mass >= mstop) break;
@@ -814,6 +838,50 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   last_phi = vol / region_volume;
   time_run += MPI_Wtime() - t0;
   return failed ? -(int) placed.size() - 1 : (int) placed.size();
+}
+
+/* ----------------------------------------------------------------------
+   mode pack: the particles still to place to reach the nearest of the
+   limits (count nmax >= 0, mass dm > 0 on the mean mass, solid fraction
+   phistop > 0 of the region holding the volume vol on the mean volume),
+   printed before the fill; an error if atom IDs cannot count that far
+------------------------------------------------------------------------- */
+
+double FixInsertPolyhedron::pack_estimate(bigint nmax, double dm, double phistop, double vol)
+{
+  const std::string me = "fix insert/polyhedron";
+  double est = 1e300;
+  std::string how;
+  auto limit = [&](double n, const std::string &what) {
+    n = std::max(0.0, n);
+    est = std::min(est, n);
+    how += fmt::format("{}{}: {:.4g}", how.empty() ? "" : "; ", what, n);
+  };
+  if (nmax >= 0) limit((double) nmax, fmt::format("N {}", ntotal));
+  if (masstotal > 0.0) limit(std::ceil(dm / mean_mass), fmt::format("mass/total {}", masstotal));
+  if (phistop > 0.0)
+    limit(std::ceil((phistop * region_volume - vol) / mean_volume),
+          fmt::format("fraction {}", phistop));
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "fix insert/polyhedron {}: mode pack into region '{}' aims at about {:.4g} "
+                   "particle(s) ({}; mean particle volume {:.4g})\n",
+                   id, idregion, est, how, mean_volume);
+  if (est > (double) MAXTAGINT)
+    error->all(FLERR,
+               "{}: mode pack into region '{}' needs about {:.4g} particles ({}), more than "
+               "atom IDs can number ({}): lower the fraction or raise the scale",
+               me, idregion, est, how, MAXTAGINT);
+  return est;
+}
+
+// 1e4, 2e4, 5e4, 1e5, 2e5, ...: the next of the 1-2-5 series after n
+bigint FixInsertPolyhedron::next_milestone(bigint n)
+{
+  bigint decade = 1;
+  while (decade * 10 <= n) decade *= 10;
+  const bigint lead = n / decade;
+  return lead < 2 ? 2 * decade : (lead < 5 ? 5 * decade : 10 * decade);
 }
 
 /* ----------------------------------------------------------------------

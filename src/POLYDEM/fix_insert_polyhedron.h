@@ -101,6 +101,7 @@ class FixInsertPolyhedron : public Fix {
   polydem::InsertVoids space;    // the void cells of mode pack
   double rmax_insert;            // largest bounding radius of a candidate
   double mean_mass;              // mean particle mass of the mixture
+  double mean_volume;            // and its mean particle volume
   std::vector<class FixWallMesh *> walls;
   std::vector<polydem::ShapeView<double>> views;    // of every template (polyhedra)
   std::vector<double> inradius;                     // of every template at unit scale
@@ -127,6 +128,8 @@ class FixInsertPolyhedron : public Fix {
   void draw_range(const double *lo, const double *hi, double *out);
   int insert(bigint nmax, double mmax, double phimax);
   void create(const std::vector<Placed> &placed);
+  double pack_estimate(bigint nmax, double dm, double phistop, double vol);
+  static bigint next_milestone(bigint n);
   bigint count_target(bigint k) const;
   double mass_target(bigint k) const;
   void do_event();

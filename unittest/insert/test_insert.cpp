@@ -642,3 +642,44 @@ TEST(Insert, HugeRatesAreClampedToN)
   }
 }
 
+// mode pack prints the count it aims at (each limit's, and the nearest)
+// before the fill, and progress lines at 1e4, 2e4, 5e4, ... particles
+TEST(Insert, PackPrintsItsEstimateAndProgress)
+{
+  const std::string log = wall_test::tmpdir() + "/insert_progress.log";
+  {
+    Lmp l({"-log", log});
+    l.cmds(mixed_box());
+    // fraction 0.3 of the box needs 8.1e6 cubes of 0.2 mm; N stops at 12000
+    l.cmds({"fix ins all insert/polyhedron 12000 7 region box mode pack fraction 0.3 "
+            "density 1000 all_in no shape q 1 scale 0.0002",
+            "run 0"});
+    EXPECT_EQ(l.lmp->atom->natoms, 12000);
+  }
+  const std::string text = polydem_test::read_text(log);
+  EXPECT_NE(text.find("mode pack into region 'box' aims at about 1.2e+04 particle(s) "
+                      "(N 12000: 1.2e+04; fraction 0.3: 8.1e+06;"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("fix insert/polyhedron ins: packed 10000 of about 1.2e+04 particle(s)"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("packed 20000"), std::string::npos);
+}
+
+// a fill that needs more particles than atom IDs can number (fraction 0.3
+// of the box in 1 micron cubes, 6.5e13) is refused before it starts; it
+// ran without end
+TEST(Insert, PackBeyondTheAtomIdsIsRefused)
+{
+  Lmp l;
+  l.cmds(mixed_box());
+  l.cmd("fix ins all insert/polyhedron 0 7 region box mode pack fraction 0.3 density 1000 "
+        "all_in no shape q 1 scale 1e-6");
+  const std::string msg = l.error_of("run 0");
+  EXPECT_NE(msg.find("fix insert/polyhedron: mode pack into region 'box' needs about 6.48e+13 "
+                     "particles (fraction 0.3: 6.48e+13), more than atom IDs can number"),
+            std::string::npos)
+      << msg;
+}
+
