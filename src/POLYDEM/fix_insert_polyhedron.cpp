@@ -45,7 +45,7 @@ struct RegionMotion : public Region {
 };
 
 constexpr int REGION_TRIES = 1000;    // position draws per attempt before giving up
-constexpr int RESTART_VERSION = 1;
+constexpr int RESTART_VERSION = 2;    // 2: the command's keywords follow the state
 
 // radical-inverse (van der Corput) of i in base b: the Halton sequence
 double halton(unsigned i, unsigned b)
@@ -57,6 +57,20 @@ double halton(unsigned i, unsigned b)
     i /= b;
   }
   return r;
+}
+
+// text with every word that is a finite number rewritten as %.17g, so
+// that 0.001 and 1e-3 compare equal
+std::string canonical_numbers(const std::string &text)
+{
+  std::string out;
+  for (const auto &w : utils::split_words(text)) {
+    char *end = nullptr;
+    const double v = strtod(w.c_str(), &end);
+    const bool num = !w.empty() && end && *end == '\0' && std::isfinite(v);
+    out += (out.empty() ? "" : " ") + (num ? fmt::format("{:.17g}", v) : w);
+  }
+  return out;
 }
 }    // namespace
 
@@ -92,9 +106,11 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   auto num = [&](int i) {
     return polydem_parse::number(FLERR, arg[i], lmp, me);
   };
+  settings = {{"N", arg[3]}, {"seed", arg[4]}};
   int iarg = 5;
   while (iarg < narg) {
     const std::string kw = arg[iarg];
+    const int kw_start = iarg;
     auto need = [&](int n) {
       if (iarg + n >= narg) error->all(FLERR, "{}: keyword '{}' needs {} value(s)", me, kw, n);
     };
@@ -247,7 +263,14 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
     } else
       error->all(FLERR, "{}: unknown keyword '{}'", me, kw);
+    // the keyword's values as given (a shape by its ID): restart compares them
+    std::string key = kw, val;
+    int v0 = kw_start + 1;
+    if (kw == "shape") key += " " + std::string(arg[v0++]);
+    for (int i = v0; i < iarg; i++) val += (val.empty() ? "" : " ") + std::string(arg[i]);
+    settings.emplace_back(key, val);
   }
+  for (auto &kv : settings) kv.second = canonical_numbers(kv.second);
 
   // ---- consistency
   if (idregion.empty()) error->all(FLERR, "{}: keyword 'region' is required", me);
@@ -1116,23 +1139,63 @@ void FixInsertPolyhedron::write_restart(FILE *fp)
     list.push_back((double) (w >> 32));
     list.push_back((double) (w & 0xffffffffULL));
   }
+  // then the keywords: their text's length, and the text (key TAB values NL)
+  std::string text;
+  for (const auto &kv : settings) text += kv.first + "\t" + kv.second + "\n";
+  list.push_back((double) text.size());
   if (comm->me == 0) {
-    int size = (int) (list.size() * sizeof(double));
+    int size = (int) (list.size() * sizeof(double) + text.size());
     fwrite(&size, sizeof(int), 1, fp);
     fwrite(list.data(), sizeof(double), list.size(), fp);
+    fwrite(text.data(), 1, text.size(), fp);
   }
 }
 
 void FixInsertPolyhedron::restart(char *buf)
 {
   auto list = (double *) buf;
-  if ((int) list[0] != RESTART_VERSION)
+  const int version = (int) list[0];
+  if (version != 1 && version != RESTART_VERSION)
     error->all(FLERR, "fix insert/polyhedron: restart data of an unknown version {}", list[0]);
-  if ((bigint) list[1] != seed)
-    error->warning(FLERR,
-                   "fix insert/polyhedron: the restart file was written with seed {}, "
-                   "now {}: its generator state continues",
-                   (bigint) list[1], seed);
+  // a changed command: the stored state continues, with a warning for each
+  // keyword that differs (version 1 kept only the seed)
+  std::vector<std::pair<std::string, std::string>> stored;
+  if (version == 1) {
+    stored = {{"seed", canonical_numbers(std::to_string((bigint) list[1]))}};
+  } else {
+    const size_t len = (size_t) list[20];
+    const std::string text((const char *) (list + 21), len);
+    for (const auto &line : utils::split_lines(text)) {
+      const size_t tab = line.find('\t');
+      if (tab != std::string::npos) stored.emplace_back(line.substr(0, tab), line.substr(tab + 1));
+    }
+  }
+  auto value_of = [](const std::vector<std::pair<std::string, std::string>> &l,
+                     const std::string &key, bool &found) {
+    found = false;
+    std::string v;
+    for (const auto &kv : l)
+      if (kv.first == key) {
+        found = true;
+        v = kv.second;
+      }
+    return v;
+  };
+  std::vector<std::string> keys;
+  for (const auto &l : {stored, settings})
+    for (const auto &kv : l)
+      if (std::find(keys.begin(), keys.end(), kv.first) == keys.end()) keys.push_back(kv.first);
+  for (const auto &key : keys) {
+    if (version == 1 && key != "seed") continue;
+    bool was, is;
+    const std::string a = value_of(stored, key, was), b = value_of(settings, key, is);
+    if (was == is && a == b) continue;
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "fix insert/polyhedron {}: keyword '{}' was {} when the restart file was "
+                     "written, now {}: the stored counts, schedule and generator state continue",
+                     id, key, was ? "'" + a + "'" : "not given", is ? "'" + b + "'" : "not given");
+  }
   ninserted = (bigint) list[2];
   nfailed = (bigint) list[3];
   nattempts = (bigint) list[4];

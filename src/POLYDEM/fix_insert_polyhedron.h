@@ -22,6 +22,7 @@ FixStyle(insert/polyhedron,FixInsertPolyhedron);
 #include "polydem_insert_space.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -83,6 +84,9 @@ class FixInsertPolyhedron : public Fix {
   int itype, allin;
   double gap;
   bigint seed;
+  // the keywords as given (key, values; numbers canonical): a restart
+  // warns about each one that changed
+  std::vector<std::pair<std::string, std::string>> settings;
 
   // state (restart)
   polydem::InsertRng rng;

@@ -683,3 +683,46 @@ TEST(Insert, PackBeyondTheAtomIdsIsRefused)
       << msg;
 }
 
+// a restart read with a changed command warns about each changed keyword
+// (it continues the stored counts, schedule and generator state); the same
+// command, numbers written differently, is silent
+TEST(Insert, RestartWarnsAboutEachChangedKeyword)
+{
+  const std::string rfile = wall_test::tmpdir() + "/insert_changed.restart";
+  const std::string cmd0 = "fix ins all insert/polyhedron 100 5 region box per 7 every 20 "
+                           "density 1000 all_in no shape d 1 scale 0.001";
+  {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds(
+        {cmd0, "fix nve all nve/polyhedron", "timestep 1e-5", "run 30", "write_restart " + rfile});
+  }
+  auto continued = [&](const std::string &cmd, const std::string &name) {
+    const std::string log = wall_test::tmpdir() + "/" + name + ".log";
+    {
+      Lmp l({"-log", log});
+      l.cmds({"read_restart " + rfile, "region box block 0 0.06 0 0.06 0 0.06", cmd,
+              "fix nve all nve/polyhedron", "timestep 1e-5", "run 0"});
+      EXPECT_EQ(l.lmp->atom->natoms, 14) << name;    // the stored schedule continues
+    }
+    return polydem_test::read_text(log);
+  };
+  const std::string same = continued("fix ins all insert/polyhedron 100 5 region box per 7.0 "
+                                     "every 20 density 1e3 all_in no shape d 1.0 scale 1e-3",
+                                     "insert_same");
+  EXPECT_EQ(same.find("when the restart file was written"), std::string::npos) << same;
+  const std::string changed =
+      continued("fix ins all insert/polyhedron 100 6 region box per 9 every 50 density 1000 "
+                "all_in no shape d 1 scale 0.002 vel constant 0 0 -1",
+                "insert_changed");
+  for (const std::string w :
+       {"keyword 'seed' was '5' when the restart file was written, now '6'",
+        "keyword 'per' was '7' when the restart file was written, now '9'",
+        "keyword 'every' was '20' when the restart file was written, now '50'",
+        "keyword 'shape d' was '1 scale 0.001' when the restart file was written, now '1 scale "
+        "0.002'",
+        "keyword 'vel' was not given when the restart file was written, now 'constant 0 0 -1'"})
+    EXPECT_NE(changed.find(w), std::string::npos) << w << "\n" << changed;
+  EXPECT_EQ(changed.find("keyword 'region'"), std::string::npos);
+}
+
