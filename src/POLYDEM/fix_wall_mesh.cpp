@@ -577,7 +577,7 @@ bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
     e.R = b.R;
     e.ax = b.ax;
     polydem::wall_ellipsoid_patches(e, g, cosmax, P, &sides);
-    return P.n == 0 && P.ndegenerate == 0;
+    return P.n == 0 && P.ndegenerate == 0 && !behind_one_sided(g, b.x);
   }
   // apart from every triangle, but possibly behind one: the wall's own
   // contact volume decides (what its forces would act on)
@@ -591,7 +591,42 @@ bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
   polydem::wall_patches(a, g, cosmax, *ws, P, (polydem::WallNear<double> *) nullptr, &sides);
   for (int k = 0; k < P.n; k++)
     if (P.p[k].volume > 0.0 || !(P.p[k].volume == P.p[k].volume)) return false;
-  return P.noverflow == 0 && P.ndegenerate == 0;
+  return P.noverflow == 0 && P.ndegenerate == 0 && !behind_one_sided(g, b.x);
+}
+
+// sides front: is the point c (mesh frame) behind the mesh? Among the
+// triangles whose prism (the triangle swept along its normal, both ways)
+// holds c, the one whose plane is nearest decides: c behind it (the side
+// opposite its normal) is behind the wall. A grain placed there, apart
+// from the wall, is thrown through it when it reaches a triangle from
+// behind. Every triangle is tested (prisms are unbounded): a cost
+// proportional to the mesh size, paid only by poses that passed every
+// other test.
+bool FixWallMesh::behind_one_sided(const polydem::MeshGridView<double> &g,
+                                   const polydem::Vec3<double> &c) const
+{
+  if (twosided) return false;
+  double best = 1e300;
+  bool behind = false;
+  for (int t = 0; t < g.ntri; t++) {
+    const double *pl = g.plane + 4 * t, *p = g.tri + 9 * t;
+    const double h = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
+    if (!(fabs(h) < best)) continue;
+    bool in = true;
+    for (int e = 0; e < 3 && in; e++) {
+      const double *a = p + 3 * e, *b = p + 3 * ((e + 1) % 3);
+      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      const double w[3] = {c.x - a[0], c.y - a[1], c.z - a[2]};
+      // (b - a) x (c - a) . n: c's offset along n drops out of it
+      const double turn = (u[1] * w[2] - u[2] * w[1]) * pl[0] +
+          (u[2] * w[0] - u[0] * w[2]) * pl[1] + (u[0] * w[1] - u[1] * w[0]) * pl[2];
+      in = turn >= 0.0;
+    }
+    if (!in) continue;
+    best = fabs(h);
+    behind = h < 0.0;
+  }
+  return behind;
 }
 
 polydem::MeshPose<double> FixWallMesh::mesh_pose() const

@@ -124,6 +124,8 @@ class FixWallMesh : public Fix {
   std::vector<double> tri_local, tri_global;
   virtual void fetch_triangle_forces() {}    // /kk: device -> tri_local
 
+  bool behind_one_sided(const polydem::MeshGridView<double> &g,
+                        const polydem::Vec3<double> &c) const;
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;
   polydem::ContactLaw<double> law(int i) const;

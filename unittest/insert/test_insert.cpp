@@ -726,3 +726,28 @@ TEST(Insert, RestartWarnsAboutEachChangedKeyword)
   EXPECT_EQ(changed.find("keyword 'region'"), std::string::npos);
 }
 
+// mode pack toward a one-sided floor (sides front) across the middle of
+// the box: no centroid below it (half of them were), while a two-sided
+// floor lets particles fill both halves
+TEST(Insert, PackRefusesPosesBehindAOneSidedWall)
+{
+  const std::string stl = wall_test::tmpdir() + "/insert_floor.stl";
+  wall_test::write_ascii(stl, wall_test::flat(0, 0.06, 0, 0.06, 0.03, 2, 2));
+  for (const std::string sides : {"front", "both"}) {
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block 0 0.06 0 0.06 0 0.06", "create_box 1 box",
+            "polyhedron_shape q " + potentials() + "/cube.shape", "pair_style polyhedron",
+            "pair_coeff * * 1e7 0.3 0.5 0.5", "fix w all wall/mesh " + stl + " sides " + sides,
+            "fix ins all insert/polyhedron 400 3 region box mode pack density 1000 "
+            "shape q 1 scale 0.003",
+            "run 0"});
+    int below = 0, above = 0;
+    for (const auto &p : particles(l)) (p.x.z < 0.03 ? below : above)++;
+    EXPECT_EQ(below + above, 400) << sides;
+    if (sides == "front")
+      EXPECT_EQ(below, 0);
+    else
+      EXPECT_GT(below, 100);
+  }
+}
