@@ -579,10 +579,7 @@ void FixInsertPolyhedron::refresh_views()
   for (int i = 0; i < avec->ntemplates(); i++) {
     const auto &t = avec->shape(i);
     views[i] = t.view();
-    double din = 1e300;
-    for (int f = 0; f < t.nfaces(); f++) din = std::min(din, t.plane(f)[3]);
-    const auto &a = t.semi_axes();
-    inradius[i] = t.is_ellipsoid() ? std::min(a[0], std::min(a[1], a[2])) : din;
+    inradius[i] = t.inradius();
   }
 }
 

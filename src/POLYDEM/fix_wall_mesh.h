@@ -133,6 +133,7 @@ class FixWallMesh : public Fix {
   void build_grid();
   void report_counts();
   void check_timestep();
+  void check_mesh_step();
   virtual void compute_forces(bool update);
 };
 
