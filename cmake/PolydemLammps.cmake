@@ -122,10 +122,19 @@ foreach(e ${_entries})
   endif()
 endforeach()
 
-# src/: links, except KOKKOS, atom.h, atom.cpp
+# src/: links, except KOKKOS, atom.h, atom.cpp and (where LAMMPS's reads no
+# Atom::quat, 29 Sep 2021) compute_property_atom.cpp, patched copies below
+file(READ ${_lammps_pristine}/src/compute_property_atom.cpp _cpa)
+string(FIND "${_cpa}" "quat_flag" _cpa_has_quat)
+if(_cpa_has_quat EQUAL -1)
+  set(_patched "compute_property_atom\\.cpp")
+else()
+  set(_patched "")
+endif()
 file(GLOB _entries RELATIVE ${_lammps_pristine}/src ${_lammps_pristine}/src/*)
 foreach(e ${_entries})
-  if(NOT e MATCHES "^(KOKKOS|atom\\.h|atom\\.cpp|POLYDEM)$")
+  if(NOT e MATCHES "^(KOKKOS|atom\\.h|atom\\.cpp|POLYDEM)$" AND
+     (NOT _patched OR NOT e MATCHES "^${_patched}$"))
     polydem_link(${_lammps_pristine}/src/${e} ${POLYDEM_STAGE}/src/${e})
   endif()
 endforeach()
@@ -201,6 +210,37 @@ foreach(f atom.h atom.cpp)
   file(COPY_FILE ${POLYDEM_STAGE}/src/${f}.tmp ${POLYDEM_STAGE}/src/${f} ONLY_IF_DIFFERENT)
   file(REMOVE ${POLYDEM_STAGE}/src/${f}.tmp)
 endforeach()
+
+# compute_property_atom.cpp (29 Sep 2021): quatw ... quatk read Atom::quat
+# when neither an ellipsoid nor a body style is present and the atom style
+# sets quat_flag (atom_style polyhedron), as LAMMPS does from 4 Feb 2025 on;
+# before, they stopped with "atom property that isn't allocated"
+set(_cpa_file ${POLYDEM_STAGE}/src/compute_property_atom.cpp)
+if(_patched)
+  string(REPLACE "if (!avec_ellipsoid && !avec_body)\n"
+                 "if (!avec_ellipsoid && !avec_body && !atom->quat_flag)    // POLYDEM\n" _new "${_cpa}")
+  string(REGEX MATCHALL "atom->quat_flag\\)    // POLYDEM" _hits "${_new}")
+  list(LENGTH _hits _nhits)
+  if(NOT _nhits EQUAL 4)
+    message(FATAL_ERROR "POLYDEM: cannot patch compute_property_atom.cpp: found ${_nhits} of the 4 "
+                        "quatw..quatk checks. LAMMPS ${POLYDEM_LAMMPS_VERSION_TEXT} is not supported.")
+  endif()
+  set(_cpa "${_new}")
+  set(_k 0)
+  foreach(c w i j k)
+    polydem_insert_after(_cpa "void ComputePropertyAtom::pack_quat${c}(int n)\n{\n"
+      "  if (!avec_ellipsoid && !avec_body) {    // POLYDEM: Atom::quat\n    double **quat = atom->quat;\n    int *mask = atom->mask;\n    int nlocal = atom->nlocal;\n    for (int i = 0; i < nlocal; i++) {\n      buf[n] = (mask[i] & groupbit) ? quat[i][${_k}] : 0.0;\n      n += nvalues;\n    }\n    return;\n  }\n"
+      compute_property_atom.cpp)
+    math(EXPR _k "${_k} + 1")
+  endforeach()
+  # a link left by an earlier configure would carry the write to the pristine file
+  if(IS_SYMLINK ${_cpa_file})
+    file(REMOVE ${_cpa_file})
+  endif()
+  file(WRITE ${_cpa_file}.tmp "${_cpa}")
+  file(COPY_FILE ${_cpa_file}.tmp ${_cpa_file} ONLY_IF_DIFFERENT)
+  file(REMOVE ${_cpa_file}.tmp)
+endif()
 
 # the LAMMPS version for src/POLYDEM/polydem_lammps_compat.h, in a header of
 # the staged src/ (a compile definition would change, and so recompile, every

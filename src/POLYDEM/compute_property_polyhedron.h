@@ -1,8 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    POLYDEM - compute property/polyhedron: per-atom shape index, scale,
    density and orientation quaternion of atom_style polyhedron.
-   compute property/atom cannot give quatw..quatk for this style: LAMMPS's
-   own branch for those names accepts only ellipsoid and body styles.
+   compute property/atom gives quatw..quatk too (LAMMPS 29 Sep 2021 through
+   the copy of compute_property_atom.cpp cmake/PolydemLammps.cmake patches).
 ------------------------------------------------------------------------- */
 
 #ifdef COMPUTE_CLASS

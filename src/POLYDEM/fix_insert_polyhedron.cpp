@@ -45,7 +45,7 @@ struct RegionMotion : public Region {
 };
 
 constexpr int REGION_TRIES = 1000;    // position draws per attempt before giving up
-constexpr int RESTART_VERSION = 1;
+constexpr int RESTART_VERSION = 2;    // 2: the command's keywords follow the state
 
 // radical-inverse (van der Corput) of i in base b: the Halton sequence
 double halton(unsigned i, unsigned b)
@@ -57,6 +57,20 @@ double halton(unsigned i, unsigned b)
     i /= b;
   }
   return r;
+}
+
+// text with every word that is a finite number rewritten as %.17g, so
+// that 0.001 and 1e-3 compare equal
+std::string canonical_numbers(const std::string &text)
+{
+  std::string out;
+  for (const auto &w : utils::split_words(text)) {
+    char *end = nullptr;
+    const double v = strtod(w.c_str(), &end);
+    const bool num = !w.empty() && end && *end == '\0' && std::isfinite(v);
+    out += (out.empty() ? "" : " ") + (num ? fmt::format("{:.17g}", v) : w);
+  }
+  return out;
 }
 }    // namespace
 
@@ -92,9 +106,11 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   auto num = [&](int i) {
     return polydem_parse::number(FLERR, arg[i], lmp, me);
   };
+  settings = {{"N", arg[3]}, {"seed", arg[4]}};
   int iarg = 5;
   while (iarg < narg) {
     const std::string kw = arg[iarg];
+    const int kw_start = iarg;
     auto need = [&](int n) {
       if (iarg + n >= narg) error->all(FLERR, "{}: keyword '{}' needs {} value(s)", me, kw, n);
     };
@@ -247,7 +263,14 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
     } else
       error->all(FLERR, "{}: unknown keyword '{}'", me, kw);
+    // the keyword's values as given (a shape by its ID): restart compares them
+    std::string key = kw, val;
+    int v0 = kw_start + 1;
+    if (kw == "shape") key += " " + std::string(arg[v0++]);
+    for (int i = v0; i < iarg; i++) val += (val.empty() ? "" : " ") + std::string(arg[i]);
+    settings.emplace_back(key, val);
   }
+  for (auto &kv : settings) kv.second = canonical_numbers(kv.second);
 
   // ---- consistency
   if (idregion.empty()) error->all(FLERR, "{}: keyword 'region' is required", me);
@@ -266,6 +289,18 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   }
   if (fabs(fsum - 1.0) > 1.0e-6)
     error->all(FLERR, "{}: the shape fractions sum to {:.6g}, not 1", me, fsum);
+  // the checks of polyhedron_set, at both ends of each scale range (mass
+  // rho V s^3 and moments m s^2 J / V grow with s): density 1e308 or
+  // 1e-320, scale 1e-300 gave an infinite or zero mass
+  for (const auto &k : kinds)
+    for (const double s : {k.scale.min(), k.scale.max()}) {
+      const double m = k.density * avec->shape(k.ishape).volume() * s * s * s;
+      if (!avec->mass_is_normal(k.ishape, m, s))
+        error->all(FLERR,
+                   "{}: shape '{}': density {:.6g} and scale {:.6g} give a mass {:.6g} outside "
+                   "(0, 1e250] or a moment of inertia that is zero or not finite",
+                   me, k.id, k.density, s, m);
+    }
   if (mode == MODE_RATE) {
     if (!have_rate)
       error->all(FLERR, "{}: mode rate needs one of the keywords rate, rate/mass or per", me);
@@ -279,9 +314,11 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   for (const auto &k : kinds)
     rmax_insert = std::max(rmax_insert, avec->shape(k.ishape).radius() * k.scale.max());
   double prev = 0.0;
-  mean_mass = 0.0;
+  mean_mass = mean_volume = 0.0;
   for (const auto &k : kinds) {
-    mean_mass += (k.pnum - prev) * k.density * avec->shape(k.ishape).volume() * k.scale.moment(3);
+    const double v = (k.pnum - prev) * avec->shape(k.ishape).volume() * k.scale.moment(3);
+    mean_volume += v;
+    mean_mass += k.density * v;
     prev = k.pnum;
   }
 
@@ -542,10 +579,7 @@ void FixInsertPolyhedron::refresh_views()
   for (int i = 0; i < avec->ntemplates(); i++) {
     const auto &t = avec->shape(i);
     views[i] = t.view();
-    double din = 1e300;
-    for (int f = 0; f < t.nfaces(); f++) din = std::min(din, t.plane(f)[3]);
-    const auto &a = t.semi_axes();
-    inradius[i] = t.is_ellipsoid() ? std::min(a[0], std::min(a[1], a[2])) : din;
+    inradius[i] = t.inradius();
   }
 }
 
@@ -682,6 +716,10 @@ bool FixInsertPolyhedron::sample_in_region(double *x)
   return false;
 }
 
+// mode pack: the first progress line (particles), and at least one line this often (s)
+static constexpr bigint PROGRESS_FIRST = 10000;
+static constexpr double PROGRESS_SECONDS = 60.0;
+
 /* ----------------------------------------------------------------------
    one insertion: particles are drawn (kind, scale) and placed one after
    the other, each with up to `attempts` poses, until nmax particles (< 0:
@@ -734,7 +772,25 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
   double mass = massinserted;
   bool failed = false;
   int miss_run = 0;
+  const double goal = voids ? pack_estimate(nmax, mstop - mass, phistop, vol) : 0.0;
+  bigint next_progress = PROGRESS_FIRST;
+  double last_progress = MPI_Wtime();
   while (nmax < 0 || (bigint) placed.size() < nmax) {
+    if (voids) {
+      // progress of a long fill: at 1e4, 2e4, 5e4, 1e5, ... particles, and
+      // at least every PROGRESS_SECONDS (rank 0's clock: printing only)
+      const bigint n = (bigint) placed.size();
+      const bool timed = comm->me == 0 && MPI_Wtime() - last_progress > PROGRESS_SECONDS;
+      if (n >= next_progress || timed) {
+        if (comm->me == 0)
+          utils::logmesg(lmp,
+                         "fix insert/polyhedron {}: packed {} of about {:.4g} particle(s), solid "
+                         "fraction {:.4g}, {} attempts, {:.1f} s\n",
+                         id, n, goal, vol / region_volume, nattempts, MPI_Wtime() - t0);
+        last_progress = MPI_Wtime();
+        while (next_progress <= n) next_progress = next_milestone(next_progress);
+      }
+    }
     // a mass target is met to within half a particle: insert while that
     // brings the total closer to it (on the mixture's mean mass)
     if (mstop > 0.0 && mass + 0.5 * mean_mass >= mstop) break;
@@ -805,6 +861,50 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
 }
 
 /* ----------------------------------------------------------------------
+   mode pack: the particles still to place to reach the nearest of the
+   limits (count nmax >= 0, mass dm > 0 on the mean mass, solid fraction
+   phistop > 0 of the region holding the volume vol on the mean volume),
+   printed before the fill; an error if atom IDs cannot count that far
+------------------------------------------------------------------------- */
+
+double FixInsertPolyhedron::pack_estimate(bigint nmax, double dm, double phistop, double vol)
+{
+  const std::string me = "fix insert/polyhedron";
+  double est = 1e300;
+  std::string how;
+  auto limit = [&](double n, const std::string &what) {
+    n = std::max(0.0, n);
+    est = std::min(est, n);
+    how += fmt::format("{}{}: {:.4g}", how.empty() ? "" : "; ", what, n);
+  };
+  if (nmax >= 0) limit((double) nmax, fmt::format("N {}", ntotal));
+  if (masstotal > 0.0) limit(std::ceil(dm / mean_mass), fmt::format("mass/total {}", masstotal));
+  if (phistop > 0.0)
+    limit(std::ceil((phistop * region_volume - vol) / mean_volume),
+          fmt::format("fraction {}", phistop));
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "fix insert/polyhedron {}: mode pack into region '{}' aims at about {:.4g} "
+                   "particle(s) ({}; mean particle volume {:.4g})\n",
+                   id, idregion, est, how, mean_volume);
+  if (est > (double) MAXTAGINT)
+    error->all(FLERR,
+               "{}: mode pack into region '{}' needs about {:.4g} particles ({}), more than "
+               "atom IDs can number ({}): lower the fraction or raise the scale",
+               me, idregion, est, how, MAXTAGINT);
+  return est;
+}
+
+// 1e4, 2e4, 5e4, 1e5, 2e5, ...: the next of the 1-2-5 series after n
+bigint FixInsertPolyhedron::next_milestone(bigint n)
+{
+  bigint decade = 1;
+  while (decade * 10 <= n) decade *= 10;
+  const bigint lead = n / decade;
+  return lead < 2 ? 2 * decade : (lead < 5 ? 5 * decade : 10 * decade);
+}
+
+/* ----------------------------------------------------------------------
    the rank owning each placed particle creates it; IDs follow the order
    of placement after the largest existing ID
 ------------------------------------------------------------------------- */
@@ -862,8 +962,12 @@ void FixInsertPolyhedron::create(const std::vector<Placed> &placed)
 
 bigint FixInsertPolyhedron::count_target(bigint k) const
 {
-  if (ratestyle == RATE_PER) return (k + 1) * (bigint) rate;
-  return (bigint) llround(rate * (double) ((k + 1) * every) * update->dt);
+  // in floating point, clamped to N (or, without N, to 4e18): rate 1e25
+  // overflowed the integer target, which then asked for nothing
+  const double t = ratestyle == RATE_PER ? (double) (k + 1) * rate
+                                         : rate * (double) ((k + 1) * every) * update->dt;
+  const double cap = ntotal > 0 ? (double) ntotal : 4.0e18;
+  return t < cap ? (bigint) llround(t) : (bigint) cap;
 }
 
 double FixInsertPolyhedron::mass_target(bigint k) const
@@ -1032,23 +1136,63 @@ void FixInsertPolyhedron::write_restart(FILE *fp)
     list.push_back((double) (w >> 32));
     list.push_back((double) (w & 0xffffffffULL));
   }
+  // then the keywords: their text's length, and the text (key TAB values NL)
+  std::string text;
+  for (const auto &kv : settings) text += kv.first + "\t" + kv.second + "\n";
+  list.push_back((double) text.size());
   if (comm->me == 0) {
-    int size = (int) (list.size() * sizeof(double));
+    int size = (int) (list.size() * sizeof(double) + text.size());
     fwrite(&size, sizeof(int), 1, fp);
     fwrite(list.data(), sizeof(double), list.size(), fp);
+    fwrite(text.data(), 1, text.size(), fp);
   }
 }
 
 void FixInsertPolyhedron::restart(char *buf)
 {
   auto list = (double *) buf;
-  if ((int) list[0] != RESTART_VERSION)
+  const int version = (int) list[0];
+  if (version != 1 && version != RESTART_VERSION)
     error->all(FLERR, "fix insert/polyhedron: restart data of an unknown version {}", list[0]);
-  if ((bigint) list[1] != seed)
-    error->warning(FLERR,
-                   "fix insert/polyhedron: the restart file was written with seed {}, "
-                   "now {}: its generator state continues",
-                   (bigint) list[1], seed);
+  // a changed command: the stored state continues, with a warning for each
+  // keyword that differs (version 1 kept only the seed)
+  std::vector<std::pair<std::string, std::string>> stored;
+  if (version == 1) {
+    stored = {{"seed", canonical_numbers(std::to_string((bigint) list[1]))}};
+  } else {
+    const size_t len = (size_t) list[20];
+    const std::string text((const char *) (list + 21), len);
+    for (const auto &line : utils::split_lines(text)) {
+      const size_t tab = line.find('\t');
+      if (tab != std::string::npos) stored.emplace_back(line.substr(0, tab), line.substr(tab + 1));
+    }
+  }
+  auto value_of = [](const std::vector<std::pair<std::string, std::string>> &l,
+                     const std::string &key, bool &found) {
+    found = false;
+    std::string v;
+    for (const auto &kv : l)
+      if (kv.first == key) {
+        found = true;
+        v = kv.second;
+      }
+    return v;
+  };
+  std::vector<std::string> keys;
+  for (const auto &l : {stored, settings})
+    for (const auto &kv : l)
+      if (std::find(keys.begin(), keys.end(), kv.first) == keys.end()) keys.push_back(kv.first);
+  for (const auto &key : keys) {
+    if (version == 1 && key != "seed") continue;
+    bool was, is;
+    const std::string a = value_of(stored, key, was), b = value_of(settings, key, is);
+    if (was == is && a == b) continue;
+    if (comm->me == 0)
+      error->warning(FLERR,
+                     "fix insert/polyhedron {}: keyword '{}' was {} when the restart file was "
+                     "written, now {}: the stored counts, schedule and generator state continue",
+                     id, key, was ? "'" + a + "'" : "not given", is ? "'" + b + "'" : "not given");
+  }
   ninserted = (bigint) list[2];
   nfailed = (bigint) list[3];
   nattempts = (bigint) list[4];

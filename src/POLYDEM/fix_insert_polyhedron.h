@@ -22,6 +22,7 @@ FixStyle(insert/polyhedron,FixInsertPolyhedron);
 #include "polydem_insert_space.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -83,6 +84,9 @@ class FixInsertPolyhedron : public Fix {
   int itype, allin;
   double gap;
   bigint seed;
+  // the keywords as given (key, values; numbers canonical): a restart
+  // warns about each one that changed
+  std::vector<std::pair<std::string, std::string>> settings;
 
   // state (restart)
   polydem::InsertRng rng;
@@ -101,6 +105,7 @@ class FixInsertPolyhedron : public Fix {
   polydem::InsertVoids space;    // the void cells of mode pack
   double rmax_insert;            // largest bounding radius of a candidate
   double mean_mass;              // mean particle mass of the mixture
+  double mean_volume;            // and its mean particle volume
   std::vector<class FixWallMesh *> walls;
   std::vector<polydem::ShapeView<double>> views;    // of every template (polyhedra)
   std::vector<double> inradius;                     // of every template at unit scale
@@ -127,6 +132,8 @@ class FixInsertPolyhedron : public Fix {
   void draw_range(const double *lo, const double *hi, double *out);
   int insert(bigint nmax, double mmax, double phimax);
   void create(const std::vector<Placed> &placed);
+  double pack_estimate(bigint nmax, double dm, double phistop, double vol);
+  static bigint next_milestone(bigint n);
   bigint count_target(bigint k) const;
   double mass_target(bigint k) const;
   void do_event();

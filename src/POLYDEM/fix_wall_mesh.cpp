@@ -428,6 +428,50 @@ void FixWallMesh::init()
   }
   build_grid();
   check_timestep();
+  check_mesh_step();
+}
+
+// A mesh that moves farther in one step than a particle is thick can pass
+// through it with no contact (a plate at 2 cm per step through a 6 mm
+// cube): warn when its largest displacement per step, |v| dt (wiggle: its
+// largest speed) or |omega| dt times its largest distance from the axis,
+// exceeds MESH_STEP_WARN of the smallest inscribed radius in the group
+// (and of the particles an insertion fix will add to it)
+void FixWallMesh::check_mesh_step()
+{
+  constexpr double MESH_STEP_WARN = 0.1;
+  double speed = 0.0;
+  if (movestyle == MOVE_TRANSLATE)
+    speed = sqrt(vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]);
+  else if (movestyle == MOVE_WIGGLE)
+    speed = 2.0 * MY_PI / period * sqrt(amp[0] * amp[0] + amp[1] * amp[1] + amp[2] * amp[2]);
+  else if (movestyle == MOVE_ROTATE) {
+    double r2 = 0.0;    // largest squared distance of a vertex from the axis
+    for (size_t k = 0; k < mesh.tri.size(); k += 3) {
+      const double d[3] = {mesh.tri[k] - origin[0], mesh.tri[k + 1] - origin[1],
+                           mesh.tri[k + 2] - origin[2]};
+      const double a = d[0] * axis[0] + d[1] * axis[1] + d[2] * axis[2];
+      r2 = MAX(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - a * a);
+    }
+    speed = fabs(omega) * sqrt(r2);
+  }
+  if (!(speed > 0.0)) return;
+  double rin = 1e300;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit)
+      rin = MIN(rin, avec->shape(atom->pshape[i]).inradius() * atom->pscale[i]);
+  if (comm->me == 0)
+    for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+      if (c.mask & groupbit) rin = MIN(rin, avec->shape(c.ishape).inradius() * c.scale);
+  MPI_Allreduce(MPI_IN_PLACE, &rin, 1, MPI_DOUBLE, MPI_MIN, world);
+  const double step = speed * update->dt;
+  if (comm->me == 0 && rin < 1e300 && step > MESH_STEP_WARN * rin)
+    error->warning(FLERR,
+                   "fix wall/mesh {}: the mesh moves up to {:.4g} per step (speed {:.4g}, "
+                   "timestep {:.4g}), more than {} of the smallest particle's inscribed radius "
+                   "{:.4g}: it can pass through particles with no contact; lower the timestep or "
+                   "the mesh speed",
+                   id, step, speed, update->dt, MESH_STEP_WARN, rin);
 }
 
 // A face lying flat on the wall in the core has the largest stiffness of the
@@ -577,7 +621,7 @@ bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
     e.R = b.R;
     e.ax = b.ax;
     polydem::wall_ellipsoid_patches(e, g, cosmax, P, &sides);
-    return P.n == 0 && P.ndegenerate == 0;
+    return P.n == 0 && P.ndegenerate == 0 && !behind_one_sided(g, b.x);
   }
   // apart from every triangle, but possibly behind one: the wall's own
   // contact volume decides (what its forces would act on)
@@ -591,7 +635,42 @@ bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
   polydem::wall_patches(a, g, cosmax, *ws, P, (polydem::WallNear<double> *) nullptr, &sides);
   for (int k = 0; k < P.n; k++)
     if (P.p[k].volume > 0.0 || !(P.p[k].volume == P.p[k].volume)) return false;
-  return P.noverflow == 0 && P.ndegenerate == 0;
+  return P.noverflow == 0 && P.ndegenerate == 0 && !behind_one_sided(g, b.x);
+}
+
+// sides front: is the point c (mesh frame) behind the mesh? Among the
+// triangles whose prism (the triangle swept along its normal, both ways)
+// holds c, the one whose plane is nearest decides: c behind it (the side
+// opposite its normal) is behind the wall. A grain placed there, apart
+// from the wall, is thrown through it when it reaches a triangle from
+// behind. Every triangle is tested (prisms are unbounded): a cost
+// proportional to the mesh size, paid only by poses that passed every
+// other test.
+bool FixWallMesh::behind_one_sided(const polydem::MeshGridView<double> &g,
+                                   const polydem::Vec3<double> &c) const
+{
+  if (twosided) return false;
+  double best = 1e300;
+  bool behind = false;
+  for (int t = 0; t < g.ntri; t++) {
+    const double *pl = g.plane + 4 * t, *p = g.tri + 9 * t;
+    const double h = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
+    if (!(fabs(h) < best)) continue;
+    bool in = true;
+    for (int e = 0; e < 3 && in; e++) {
+      const double *a = p + 3 * e, *b = p + 3 * ((e + 1) % 3);
+      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+      const double w[3] = {c.x - a[0], c.y - a[1], c.z - a[2]};
+      // (b - a) x (c - a) . n: c's offset along n drops out of it
+      const double turn = (u[1] * w[2] - u[2] * w[1]) * pl[0] +
+          (u[2] * w[0] - u[0] * w[2]) * pl[1] + (u[0] * w[1] - u[1] * w[0]) * pl[2];
+      in = turn >= 0.0;
+    }
+    if (!in) continue;
+    best = fabs(h);
+    behind = h < 0.0;
+  }
+  return behind;
 }
 
 polydem::MeshPose<double> FixWallMesh::mesh_pose() const

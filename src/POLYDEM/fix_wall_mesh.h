@@ -124,6 +124,8 @@ class FixWallMesh : public Fix {
   std::vector<double> tri_local, tri_global;
   virtual void fetch_triangle_forces() {}    // /kk: device -> tri_local
 
+  bool behind_one_sided(const polydem::MeshGridView<double> &g,
+                        const polydem::Vec3<double> &c) const;
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;
   polydem::ContactLaw<double> law(int i) const;
@@ -131,6 +133,7 @@ class FixWallMesh : public Fix {
   void build_grid();
   void report_counts();
   void check_timestep();
+  void check_mesh_step();
   virtual void compute_forces(bool update);
 };
 

@@ -22,6 +22,7 @@
 
 #include "polydem_parse.h"
 #include "polydem_damping.h"
+#include "polydem_history.h"
 #include "polydem_lammps_compat.h"
 #include "polydem_ellipsoid_force.h"
 #include "polydem_shape_template.h"
@@ -212,9 +213,9 @@ void PairEllipsoid::init_style()
   polydem_compat::request_size_list(neighbor, this, instance_me, use_history);
   if (use_history) {
     if (fix_history == nullptr) {
-      auto cmd = fmt::format("NEIGH_HISTORY_ELL{} all NEIGH_HISTORY {}", history_id, SIZE_HISTORY);
-      fix_history = (FixNeighHistory *) modify->replace_fix(
-          "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), cmd, 1);
+      fix_history = polydem_history::create_history_fix(
+          modify, "NEIGH_HISTORY_ELL" + std::to_string(history_id),
+          "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), SIZE_HISTORY);
       fix_history->pair = this;
     }
     int ifix = modify->find_fix("NEIGH_HISTORY_ELL" + std::to_string(history_id));

@@ -25,6 +25,7 @@
 #include "polydem_contact_law.h"
 #include "polydem_lammps_compat.h"
 #include "polydem_damping.h"
+#include "polydem_history.h"
 #include "polydem_contact_record.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
@@ -225,10 +226,9 @@ void PairPolyhedron::init_style()
   dt = update->dt;
 
   if (fix_history == nullptr) {
-    auto cmd =
-        fmt::format("NEIGH_HISTORY_POLY{} all NEIGH_HISTORY {}", history_id, SIZE_HISTORY);
-    fix_history = (FixNeighHistory *) modify->replace_fix(
-        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id), cmd, 1);
+    fix_history = polydem_history::create_history_fix(
+        modify, "NEIGH_HISTORY_POLY" + std::to_string(history_id),
+        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id), SIZE_HISTORY);
     fix_history->pair = this;
   }
   int ifix = modify->find_fix("NEIGH_HISTORY_POLY" + std::to_string(history_id));

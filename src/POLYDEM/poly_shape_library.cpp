@@ -207,11 +207,15 @@ void PolyShapeLibrary::inertia(int i, double *moments) const
 static constexpr double MASS_MAX = 1e250;
 bool PolyShapeLibrary::mass_is_normal(int i) const
 {
-  double m[3];
-  inertia(i, m);
-  const double mass = atom->rmass[i];
+  return mass_is_normal(atom->pshape[i], atom->rmass[i], atom->pscale[i]);
+}
+
+bool PolyShapeLibrary::mass_is_normal(int ishape, double mass, double scale) const
+{
+  const auto v = templates[ishape]->view();
+  const double f = mass * scale * scale / v.volume;
   bool ok = std::isnormal(mass) && mass > 0.0 && mass <= MASS_MAX;
-  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(m[k]) && m[k] > 0.0;
+  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(f * v.inertia[k]) && f * v.inertia[k] > 0.0;
   return ok;
 }
 

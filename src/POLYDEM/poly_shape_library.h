@@ -56,6 +56,8 @@ class PolyShapeLibrary : protected Pointers {
   // principal moments of atom i (body frame): I_k = m s^2 J_k / V
   void inertia(int i, double *moments) const;
   bool mass_is_normal(int i) const;    // mass in (0, 1e250], moments normal
+  // the same for a particle of template ishape, mass and scale (insertion)
+  bool mass_is_normal(int ishape, double mass, double scale) const;
   double density(int i) const;
   void check_dimension();              // error unless 3-d
   void check_inserting_fixes();        // error for fix pour, fix deposit

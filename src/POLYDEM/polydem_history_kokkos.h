@@ -11,6 +11,7 @@
 #include "atom.h"
 #include "fix_neigh_history_kokkos.h"
 #include "modify.h"
+#include "polydem_history.h"
 
 #include <mpi.h>
 
@@ -64,15 +65,17 @@ PartnerViews<LMPHostType> partner_views<LMPHostType>(FixNeighHistoryKokkos<LMPHo
 /* ----------------------------------------------------------------------
    FixNeighHistoryKokkos of LAMMPS 29Sep2021 with a complete copy_arrays:
    the original copies one value per partner instead of dnum, which loses
-   the history whenever atoms are sorted or leave a rank (AtomVec::copy).
+   the history whenever atoms are sorted or leave a rank (AtomVec::copy),
+   and the restart write of polydem_history.h (none between runs).
    Registered at run time under its own name (no style file needed).
 ------------------------------------------------------------------------- */
 
 template <class DeviceType>
-class FixNeighHistoryPolyhedronKokkos : public FixNeighHistoryKokkos<DeviceType> {
+class FixNeighHistoryPolyhedronKokkos :
+    public polydem_history::RestartBetweenRuns<FixNeighHistoryKokkos<DeviceType>> {
  public:
   FixNeighHistoryPolyhedronKokkos(LAMMPS *lmp, int narg, char **arg) :
-      FixNeighHistoryKokkos<DeviceType>(lmp, narg, arg)
+      polydem_history::RestartBetweenRuns<FixNeighHistoryKokkos<DeviceType>>(lmp, narg, arg)
   {
   }
   // The base class writes the partner arrays on the device in pre_exchange

@@ -18,6 +18,23 @@
 
 namespace polydem {
 
+// The edge of cubic cells over the box [lo, hi]: h, enlarged by factors of
+// 1.25 until at most maxcells cells cover the box. No bound on the number
+// of enlargements: a particle 1e-12 of the box (a cell count of 1e36) needs
+// some 200 of them, and the loop ends once one cell spans the box.
+inline double capped_edge(const double *lo, const double *hi, double h, double maxcells)
+{
+  double ext = 0.0;
+  for (int k = 0; k < 3; k++) ext = std::max(ext, hi[k] - lo[k]);
+  if (!(h > 0.0) || !std::isfinite(h)) h = ext > 0.0 ? ext : 1.0;
+  for (;;) {
+    double ncell = 1.0;
+    for (int k = 0; k < 3; k++) ncell *= std::max(1.0, std::ceil((hi[k] - lo[k]) / h));
+    if (ncell <= maxcells || !(h < ext)) return h;
+    h *= 1.25;
+  }
+}
+
 // The particles a candidate is tested against, binned in cells of edge >=
 // reach (the largest bounding radius of a candidate plus the largest present
 // plus the gap), so a candidate's neighbours lie in the 27 cells around it.
@@ -35,12 +52,7 @@ class InsertGrid {
       lo_[k] = lo[k] - reach;
       hi_[k] = hi[k] + reach;
     }
-    for (int pass = 0; pass < 64; pass++) {
-      double ncell = 1.0;
-      for (int k = 0; k < 3; k++) ncell *= std::max(1.0, std::ceil((hi_[k] - lo_[k]) / h_));
-      if (ncell <= MAXCELLS) break;
-      h_ *= 1.25;
-    }
+    h_ = capped_edge(lo_, hi_, reach, MAXCELLS);
     for (int k = 0; k < 3; k++) n_[k] = std::max(1, (int) std::ceil((hi_[k] - lo_[k]) / h_));
     head_.assign((size_t) n_[0] * n_[1] * n_[2], -1);
     next_.clear();
@@ -150,13 +162,7 @@ class InsertVoids {
              Surf &&surface, const InsertGrid &grid)
   {
     rin_ = rin;
-    h_ = 0.25 * rin;
-    for (int pass = 0; pass < 64; pass++) {
-      double n = 1.0;
-      for (int k = 0; k < 3; k++) n *= std::max(1.0, std::ceil((hi[k] - lo[k]) / h_));
-      if (n <= (double) MAXCELLS) break;
-      h_ *= 1.25;
-    }
+    h_ = capped_edge(lo, hi, 0.25 * rin, MAXCELLS);
     for (int k = 0; k < 3; k++) {
       lo_[k] = lo[k];
       n_[k] = std::max(1, (int) std::ceil((hi[k] - lo[k]) / h_));

@@ -955,6 +955,14 @@ std::vector<int> PolyShapeTemplate::face(int i) const
                           face_verts_.begin() + face_start_[i + 1]);
 }
 
+double PolyShapeTemplate::inradius() const
+{
+  if (ellipsoid_) return std::min(axes_[0], std::min(axes_[1], axes_[2]));
+  double r = 1e300;
+  for (int f = 0; f < nfaces(); f++) r = std::min(r, planes_[4 * f + 3]);
+  return r;
+}
+
 double PolyShapeTemplate::max_face_area() const
 {
   double amax = 0.0;

@@ -93,6 +93,9 @@ class PolyShapeTemplate {
   double volume() const { return volume_; }    // unit scale, length^3
   double max_face_area() const;                // unit scale, length^2 (0: ellipsoid)
   double radius() const { return radius_; }    // max |vertex| about the centroid
+  // inscribed radius about the centroid, unit scale: the nearest face plane
+  // (polyhedron), the smallest semi-axis (ellipsoid)
+  double inradius() const;
   // Principal moments per unit density (length^5), ascending (ellipsoids:
   // in the order of the body axes).
   const std::array<double, 3> &moments() const { return moments_; }

@@ -577,3 +577,177 @@ TEST(Insert, BadInputIsRefusedClearly)
     EXPECT_EQ(fvec(l, "ins", 0), (double) l.lmp->atom->natoms);
   }
 }
+
+// ---- issue 32 item 3: what polyhedron_set refuses, and runs that never end
+
+// scale 1e-11 (rate) and 1e-12 (pack): the candidate grid (and the void
+// cells) grew as (region / particle)^3 and the run stopped in std::bad_alloc;
+// the grids are capped, and the particles are inserted
+TEST(Insert, TinyScalesGetACappedGrid)
+{
+  for (const std::string mode : {"per 20", "mode pack"}) {
+    Lmp l;
+    l.cmds(mixed_box());
+    const std::string scale = mode == "per 20" ? "1e-11" : "1e-12";
+    l.cmds({"fix ins all insert/polyhedron 20 5 region box " + mode +
+                " density 2500 all_in no shape d 1 scale " + scale,
+            "fix nve all nve/polyhedron", "timestep 1e-5", "run 0"});
+    EXPECT_EQ(l.lmp->atom->natoms, 20) << mode;
+    EXPECT_EQ(overlaps(l, 0), 0) << mode;
+  }
+}
+
+// density 1e308 or 1e-320, scale 1e-300: a mass that is infinite or zero
+// (temperature inf or NaN from step 0) is refused, naming the shape
+TEST(Insert, MassOutOfRangeIsRefusedNamingTheShape)
+{
+  const std::string f = "fix ins all insert/polyhedron 10 1 region box per 1 ";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"density 1e308 shape d 1 scale 1", "shape 'd': density 1e+308 and scale 1"},
+      {"density 1e-320 shape d 1 scale 0.001", "shape 'd': density 9.99989e-321"},
+      {"density 2500 shape d 1 scale 1e-300", "shape 'd': density 2500 and scale 1e-300"},
+      {"density 2500 shape d 0.5 scale 0.001 shape q 0.5 scale uniform 0.001 1e100",
+       "shape 'q': density 2500 and scale 1e+100"},
+      {"shape d 0.5 scale 0.001 density 1 shape q 0.5 scale 0.001 density 1e300",
+       "shape 'q': density 1e+300"}};
+  for (const auto &c : cases) {
+    Lmp l;
+    l.cmds(mixed_box());
+    const std::string msg = l.error_of(f + c.first);
+    EXPECT_NE(msg.find(c.second), std::string::npos) << c.first << ": " << msg;
+    EXPECT_NE(msg.find("outside (0, 1e250]"), std::string::npos) << msg;
+  }
+  // small and large masses that pass
+  Lmp l;
+  l.cmds(mixed_box());
+  EXPECT_EQ(l.error_of(f + "density 1e-250 shape d 1 scale 0.001"), "");
+  EXPECT_EQ(l.error_of("fix ins2 all insert/polyhedron 10 1 region box per 1 density 1e240 "
+                       "shape d 1 scale 1"),
+            "");
+}
+
+// rate 1e25 (and per 1e25) overflowed the integer target of an insertion,
+// which then asked for nothing; the target is clamped to N
+TEST(Insert, HugeRatesAreClampedToN)
+{
+  for (const std::string rate : {"rate 1e25", "per 1e25"}) {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds({"fix ins all insert/polyhedron 30 5 region box " + rate +
+                " every 20 density 1000 all_in no shape d 1 scale 0.001",
+            "fix nve all nve/polyhedron", "timestep 1e-5", "run 0"});
+    EXPECT_EQ(l.lmp->atom->natoms, 30) << rate;
+    l.cmd("run 40");
+    EXPECT_EQ(l.lmp->atom->natoms, 30) << rate;
+  }
+}
+
+// mode pack prints the count it aims at (each limit's, and the nearest)
+// before the fill, and progress lines at 1e4, 2e4, 5e4, ... particles
+TEST(Insert, PackPrintsItsEstimateAndProgress)
+{
+  const std::string log = wall_test::tmpdir() + "/insert_progress.log";
+  {
+    Lmp l({"-log", log});
+    l.cmds(mixed_box());
+    // fraction 0.3 of the box needs 8.1e6 cubes of 0.2 mm; N stops at 12000
+    l.cmds({"fix ins all insert/polyhedron 12000 7 region box mode pack fraction 0.3 "
+            "density 1000 all_in no shape q 1 scale 0.0002",
+            "run 0"});
+    EXPECT_EQ(l.lmp->atom->natoms, 12000);
+  }
+  const std::string text = polydem_test::read_text(log);
+  EXPECT_NE(text.find("mode pack into region 'box' aims at about 1.2e+04 particle(s) "
+                      "(N 12000: 1.2e+04; fraction 0.3: 8.1e+06;"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("fix insert/polyhedron ins: packed 10000 of about 1.2e+04 particle(s)"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("packed 20000"), std::string::npos);
+}
+
+// a fill that needs more particles than atom IDs can number (fraction 0.3
+// of the box in 1 micron cubes, 6.5e13) is refused before it starts; it
+// ran without end
+TEST(Insert, PackBeyondTheAtomIdsIsRefused)
+{
+  Lmp l;
+  l.cmds(mixed_box());
+  l.cmd("fix ins all insert/polyhedron 0 7 region box mode pack fraction 0.3 density 1000 "
+        "all_in no shape q 1 scale 1e-6");
+  const std::string msg = l.error_of("run 0");
+  EXPECT_NE(msg.find("fix insert/polyhedron: mode pack into region 'box' needs about 6.48e+13 "
+                     "particles (fraction 0.3: 6.48e+13), more than atom IDs can number"),
+            std::string::npos)
+      << msg;
+}
+
+// a restart read with a changed command warns about each changed keyword
+// (it continues the stored counts, schedule and generator state); the same
+// command, numbers written differently, is silent
+TEST(Insert, RestartWarnsAboutEachChangedKeyword)
+{
+  const std::string rfile = wall_test::tmpdir() + "/insert_changed.restart";
+  const std::string cmd0 = "fix ins all insert/polyhedron 100 5 region box per 7 every 20 "
+                           "density 1000 all_in no shape d 1 scale 0.001";
+  {
+    Lmp l;
+    l.cmds(mixed_box());
+    l.cmds(
+        {cmd0, "fix nve all nve/polyhedron", "timestep 1e-5", "run 30", "write_restart " + rfile});
+  }
+  auto continued = [&](const std::string &cmd, const std::string &name) {
+    const std::string log = wall_test::tmpdir() + "/" + name + ".log";
+    {
+      Lmp l({"-log", log});
+      l.cmds({"read_restart " + rfile, "region box block 0 0.06 0 0.06 0 0.06", cmd,
+              "fix nve all nve/polyhedron", "timestep 1e-5", "run 0"});
+      EXPECT_EQ(l.lmp->atom->natoms, 14) << name;    // the stored schedule continues
+    }
+    return polydem_test::read_text(log);
+  };
+  const std::string same = continued("fix ins all insert/polyhedron 100 5 region box per 7.0 "
+                                     "every 20 density 1e3 all_in no shape d 1.0 scale 1e-3",
+                                     "insert_same");
+  EXPECT_EQ(same.find("when the restart file was written"), std::string::npos) << same;
+  const std::string changed =
+      continued("fix ins all insert/polyhedron 100 6 region box per 9 every 50 density 1000 "
+                "all_in no shape d 1 scale 0.002 vel constant 0 0 -1",
+                "insert_changed");
+  for (const std::string w :
+       {"keyword 'seed' was '5' when the restart file was written, now '6'",
+        "keyword 'per' was '7' when the restart file was written, now '9'",
+        "keyword 'every' was '20' when the restart file was written, now '50'",
+        "keyword 'shape d' was '1 scale 0.001' when the restart file was written, now '1 scale "
+        "0.002'",
+        "keyword 'vel' was not given when the restart file was written, now 'constant 0 0 -1'"})
+    EXPECT_NE(changed.find(w), std::string::npos) << w << "\n" << changed;
+  EXPECT_EQ(changed.find("keyword 'region'"), std::string::npos);
+}
+
+// mode pack toward a one-sided floor (sides front) across the middle of
+// the box: no centroid below it (half of them were), while a two-sided
+// floor lets particles fill both halves
+TEST(Insert, PackRefusesPosesBehindAOneSidedWall)
+{
+  const std::string stl = wall_test::tmpdir() + "/insert_floor.stl";
+  wall_test::write_ascii(stl, wall_test::flat(0, 0.06, 0, 0.06, 0.03, 2, 2));
+  for (const std::string sides : {"front", "both"}) {
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block 0 0.06 0 0.06 0 0.06", "create_box 1 box",
+            "polyhedron_shape q " + potentials() + "/cube.shape", "pair_style polyhedron",
+            "pair_coeff * * 1e7 0.3 0.5 0.5", "fix w all wall/mesh " + stl + " sides " + sides,
+            "fix ins all insert/polyhedron 400 3 region box mode pack density 1000 "
+            "shape q 1 scale 0.003",
+            "run 0"});
+    int below = 0, above = 0;
+    for (const auto &p : particles(l)) (p.x.z < 0.03 ? below : above)++;
+    EXPECT_EQ(below + above, 400) << sides;
+    if (sides == "front")
+      EXPECT_EQ(below, 0);
+    else
+      EXPECT_GT(below, 100);
+  }
+}

@@ -550,6 +550,31 @@ TEST(AtomStyle, ComputePropertyPolyhedron)
   }
 }
 
+// Issue 32 item 5: compute property/atom quatw quati quatj quatk give a
+// polyhedron's orientation on every LAMMPS version (29 Sep 2021 stopped with
+// "atom property that isn't allocated"; the build points LAMMPS's quat
+// keywords at Atom::quat there, as LAMMPS itself does from 24 Mar 2022 on),
+// in a group (0 outside it), next to another keyword
+TEST(AtomStyle, ComputePropertyAtomGivesTheQuaternion)
+{
+  for (const std::vector<std::string> &extra : polydem_test::plain_and_kk()) {
+    Lmp l(extra);
+    gas(l, 10);
+    l.cmds({"group cubes type 1", "compute q all property/atom quatw quati quatj quatk id",
+            "compute w cubes property/atom quatk", "run 20"});
+    auto *a = l.lmp->atom;
+    auto *q = (double **) lammps_extract_compute(l.lmp, "q", LMP_STYLE_ATOM, LMP_TYPE_ARRAY);
+    auto *w = (double *) lammps_extract_compute(l.lmp, "w", LMP_STYLE_ATOM, LMP_TYPE_VECTOR);
+    ASSERT_TRUE(q && w);
+    for (int i = 0; i < a->nlocal; i++) {
+      for (int k = 0; k < 4; k++) EXPECT_EQ(q[i][k], a->quat[i][k]) << "atom " << i;
+      EXPECT_EQ(q[i][4], (double) a->tag[i]);
+      EXPECT_EQ(w[i], a->type[i] == 1 ? a->quat[i][3] : 0.0);
+      EXPECT_NE(a->quat[i][0], 1.0);    // rotated (quat/random), so not a default
+    }
+  }
+}
+
 // Issue 17 item 13: fix pour and fix deposit create atoms without a
 // polyhedron's data (fix pour segfaulted at its first insertion): refused,
 // naming the fix to use
