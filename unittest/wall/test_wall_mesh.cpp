@@ -560,7 +560,7 @@ std::vector<std::string> one_particle()
           "pair_style polyhedron", "pair_coeff * * 1e6 0.1 0.5 0.5"};
 }
 
-// the log of a one-particle session running cmds (the last one may fail)
+// the log of a one-particle LAMMPS instance running cmds (the last one may fail)
 std::string one_particle_log(const std::string &name, const std::vector<std::string> &cmds)
 {
   const std::string log = tmpdir() + "/" + name + ".log";

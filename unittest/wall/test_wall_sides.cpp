@@ -304,7 +304,7 @@ TEST(WallSides, InitialOverlapWarns)
 {
   const std::string stl = tmpdir() + "/floor_ov.stl";
   write_ascii(stl, flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
-  auto session = [&](const std::string &z, const std::string &args, const std::string &name,
+  auto start_log = [&](const std::string &z, const std::string &args, const std::string &name,
                      double &vafter) {
     const std::string log = tmpdir() + "/" + name + ".log";
     {
@@ -317,9 +317,9 @@ TEST(WallSides, InitialOverlapWarns)
     return read_text(log);
   };
   double v1, v2, v3;
-  const std::string over = session("0.0025", "", "overlap_start", v1);
-  const std::string apart = session("0.0031", "", "apart_start", v2);
-  const std::string tight = session("0.0025", "overlap/warn 0.2 depth/warn 0.05", "tight", v3);
+  const std::string over = start_log("0.0025", "", "overlap_start", v1);
+  const std::string apart = start_log("0.0031", "", "apart_start", v2);
+  const std::string tight = start_log("0.0025", "overlap/warn 0.2 depth/warn 0.05", "tight", v3);
   const size_t at =
       over.find("WARNING: fix wall/mesh w: 1 contact(s) overlap the mesh at the start "
                 "of the run with no contact history");
