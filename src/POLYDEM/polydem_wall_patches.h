@@ -57,6 +57,7 @@ struct WallWorkspace {
   T pc[4], pbox[6];              // that plane (as stored), the box of the part behind it
   T po[4];                       // that plane as the particle meets it (pside x pc)
   int pvalid, pany, pside;       // cache valid; a vertex behind it; side (+1 front, -1 back)
+  int pclaimed;                  // a kept contact chose pside (else the centroid did)
   // candidates of one particle, and the coplanar-group coverage test
   static constexpr int MAXH = 4 * MAX_TEMPLATE_VERTS + 8;
   int cand[WALL_MAX_CAND];
@@ -144,7 +145,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     if (!(ws->pvalid && pc[0] == ws->pc[0] && pc[1] == ws->pc[1] && pc[2] == ws->pc[2] &&
           pc[3] == ws->pc[3])) {
       for (int k = 0; k < 4; ++k) ws->pc[k] = pc[k];
-      ws->pside = wall_side(sides, pc, a->x, posed_radius(*a));
+      ws->pside = wall_side(sides, pc, a->x, posed_radius(*a), &ws->pclaimed);
       for (int k = 0; k < 4; ++k) ws->po[k] = T(ws->pside) * pc[k];
       const T *pl = ws->po;
       ws->pvalid = 1;
@@ -236,13 +237,43 @@ template <typename T, int MF, int ME> struct WallAccumulate {
   POLYDEM_FN void operator()(int t)
   {
     plane_of(t);
-    const Triangle<T> tri = triangle(t, ws->pside);
+    int side = ws->pside;
+    Triangle<T> tri = triangle(t, side);
     if (separated(t, tri)) return;
+    if (!ws->pclaimed && sides && sides->both && !centroid_in_prism(tri)) {
+      // Two-sided, a contact beginning, the centroid outside the triangle's
+      // prism (beside an open border or a curved mesh's small facet): the
+      // particle's part within the prism may lie wholly on the centroid's
+      // side of the plane (no contact) or straddle it, so the centroid's
+      // side can give a first overlap that jumps from zero when the
+      // centroid crosses the extended plane. The side with the smaller
+      // overlap is the one the particle came from: its overlap grows from
+      // zero as the contact begins, and W(V) stays continuous.
+      const Triangle<T> other = triangle(t, -side);
+      const ClipResult<T> rs = polyhedron_triangle(*a, tri, ws->clip, ws->verts);
+      const ClipResult<T> ro = polyhedron_triangle(*a, other, ws->clip, ws->verts);
+      const T vs = rs.status == STATUS_OK ? rs.volume : T(0);
+      const T vo = ro.status == STATUS_OK ? ro.volume : T(0);
+      if (vo < vs) {
+        side = -side;
+        tri = other;
+      }
+    }
     if (ws->ncand < WALL_MAX_CAND) {
-      ws->cside[ws->ncand] = (signed char) ws->pside;
+      ws->cside[ws->ncand] = (signed char) side;
       ws->cand[ws->ncand++] = t;
     } else
       clip_add(tri, t);
+  }
+
+  // the particle's centroid within the prism of tri (the triangle swept
+  // along its normal, both ways)
+  POLYDEM_FN bool centroid_in_prism(const Triangle<T> &tri) const
+  {
+    const Vec3<T> n = cross(tri.v[1] - tri.v[0], tri.v[2] - tri.v[0]);
+    for (int e = 0; e < 3; ++e)
+      if (dot(cross(tri.v[(e + 1) % 3] - tri.v[e], n), a->x - tri.v[e]) > T(0)) return false;
+    return true;
   }
 
   // Group the candidates by plane. If the coplanar triangles of a group

@@ -43,10 +43,14 @@ template <typename T> struct WallSides {
 };
 
 // +1: front, -1: back, for the plane pl (unit normal, offset) of a triangle,
-// centroid c and bounding radius r (mesh frame); s null: the front
+// centroid c and bounding radius r (mesh frame); s null: the front.
+// claimed (if given): 1 when a kept contact chose the side, 0 when the
+// centroid did.
 template <typename T>
-POLYDEM_FN int wall_side(const WallSides<T> *s, const T *pl, const Vec3<T> &c, T r)
+POLYDEM_FN int wall_side(const WallSides<T> *s, const T *pl, const Vec3<T> &c, T r,
+                         int *claimed = nullptr)
 {
+  if (claimed) *claimed = 0;
   if (!s || !s->both) return 1;
   const T h = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
   int side = h >= T(0) ? 1 : -1;
@@ -59,6 +63,7 @@ POLYDEM_FN int wall_side(const WallSides<T> *s, const T *pl, const Vec3<T> &c, T
     if (d <= best) {
       best = d;
       side = sk;
+      if (claimed) *claimed = 1;
     }
   }
   return side;

@@ -4,8 +4,9 @@
 // impact's energy over the whole impact. The cases (issue 32, item 1): the
 // top edge of a thin vertical fin, the open border of a half-plate, a box's
 // outer (convex) edge, a concave corner, a ridge of two 30 degree plates, and
-// a grazing slide along an open border; several offsets and orientations;
-// fix wall/mesh/kk the same (fin, box edge and ridge at dt 5e-8).
+// a grazing slide along an open border, a rod passing beside one; several
+// offsets and orientations;
+// fix wall/mesh/kk the same (fin, box edge, ridge and rod at dt 5e-8).
 // Before the prisms' side sections were part of dV/dx (polydem_clip.h) a
 // cube falling onto the fin's edge left it with many times its energy.
 #include "wall_edges.h"
@@ -13,10 +14,24 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace wall_test;
 
 namespace {
+
+// a rod 2 x 1/3 x 1/3 (x 0.006 m in energy_drift): its shape file
+std::string rod_shape()
+{
+  const std::string path = tmpdir() + "/rod.shape";
+  FILE *f = std::fopen(path.c_str(), "w");
+  std::fprintf(f, "vertices 8\n");
+  for (int k = 0; k < 8; k++)
+    std::fprintf(f, "%g %.17g %.17g\n", k & 1 ? 1.0 : -1.0, (k & 2 ? 1.0 : -1.0) / 6.0,
+                 (k & 4 ? 1.0 : -1.0) / 6.0);
+  std::fclose(f);
+  return path;
+}
 
 std::vector<Case> cases()
 {
@@ -37,6 +52,13 @@ std::vector<Case> cases()
   out.push_back({"corner", "cube", corner(), {0.006, 0.0, 0.006}, {-0.7, 0.1, -0.7}, tilt2});
   // a dodecahedron onto a ridge of two 30 degree plates
   out.push_back({"ridge", "dodecahedron", ridge(), {0.0005, 0.0, 0.008}, {0, 0, -1}, tilt});
+  // beside an open border: a rod (12 x 2 x 2 mm) at 45 degrees whose centroid
+  // (outside the plate's prism) crosses the plate's extended plane 1 mm before
+  // its upper end, overhanging the plate, lands on the border. Before the side
+  // of a beginning two-sided contact was the smaller overlap's, the centroid's
+  // crossing turned the overhang into an overlap from below, out of nothing.
+  out.push_back({"beside", rod_shape(), half_plate(), {0.0025, 0.0, 0.0005}, {0, 0, -1},
+                 "quat 0 1 0 45"});
   // ellipsoids (semi-axes 4, 2.5, 1.5 mm; pair_style ellipsoid's linear law)
   const std::string ell = "ellipsoid 0.004 0.0025 0.0015";
   for (const std::string &q : {tilt, tilt2}) {
@@ -47,6 +69,8 @@ std::vector<Case> cases()
     out.push_back({"corner", ell, corner(), {0.006, 0.0, 0.006}, {-0.7, 0.1, -0.7}, q});
     out.push_back({"ridge", ell, ridge(), {0.0005, 0.0, 0.008}, {0, 0, -1}, q});
   }
+  out.push_back({"beside", "ellipsoid 0.006 0.001 0.001", half_plate(), {0.0025, 0.0, 0.0005},
+                 {0, 0, -1}, "quat 0 1 0 45"});
   return out;
 }
 
@@ -60,7 +84,7 @@ TEST(WallEdges, ElasticImpactsKeepTheEnergy)
     const double dev = energy_drift(c, {}, touched);
     // /kk: the same kernels, the same energy (the fin, box edge and ridge cases)
     if (polydem_test::has_kokkos() && c.dt > 2e-8 &&
-        (c.name == "fin" || c.name == "boxedge" || c.name == "ridge")) {
+        (c.name == "fin" || c.name == "boxedge" || c.name == "ridge" || c.name == "beside")) {
       double touched_kk;
       const double dev_kk =
           energy_drift(c, polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"}),
@@ -68,8 +92,9 @@ TEST(WallEdges, ElasticImpactsKeepTheEnergy)
       EXPECT_EQ(touched_kk, touched) << c.name;
       EXPECT_NEAR(dev_kk, dev, 1e-9) << c.name;
     }
-    std::printf("[ edges ] %-8s %-29s x (%.4f %.4f %.4f) %-18s dt %.0e: contacts %g, "
-                "max |E/E0 - 1| %.3g\n", c.name.c_str(), c.shape.c_str(), c.x[0], c.x[1], c.x[2],
+    std::printf("[ edges ] %-8s %-29s x (%.4f %.4f %.4f) %-18s dt %.0e: contact-steps %g, "
+                "max |E/E0 - 1| %.3g\n", c.name.c_str(),
+                c.shape[0] == '/' ? "rod 12 x 2 x 2 mm" : c.shape.c_str(), c.x[0], c.x[1], c.x[2],
                 c.quat.c_str(), c.dt, touched, dev);
     EXPECT_GT(touched, 0.0) << c.name;
     EXPECT_LT(dev, 1e-6) << c.name;
