@@ -701,15 +701,7 @@ polydem::MeshPose<double> FixWallMesh::mesh_pose() const
 
 polydem::WallScene<double> FixWallMesh::scene() const
 {
-  polydem::WallScene<double> sc;
-  sc.mp = mesh_pose();
-  sc.grid = grid_view();
-  sc.cosmax = cosmax;
-  sc.both = twosided;
-  sc.depth_warn = depth_warn;
-  sc.overlap_warn = overlap_warn;
-  sc.near_skin = near_skin;
-  return sc;
+  return {mesh_pose(), grid_view(), cosmax, twosided, depth_warn, overlap_warn, near_skin};
 }
 
 polydem::ContactLaw<double> FixWallMesh::law_of(int t, int ishape, double s) const

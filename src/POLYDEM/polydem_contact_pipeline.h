@@ -42,11 +42,11 @@ namespace polydem {
 // of a /kk functor, or HostAtoms over the host arrays of a LAMMPS Atom
 
 template <typename T> struct HostRows {
-  T **a;
+  T *const *a;
   T operator()(int k, int d) const { return a[k][d]; }
 };
 template <typename T> struct HostVals {
-  T *a;
+  const T *a;
   T operator()(int k) const { return a[k]; }
 };
 template <typename Tag> struct HostAtoms {
@@ -57,7 +57,7 @@ template <typename Tag> struct HostAtoms {
 };
 template <class Atom> inline auto host_atoms(const Atom *atom)
 {
-  HostAtoms<std::remove_pointer_t<decltype(atom->tag)>> a;
+  HostAtoms<std::remove_cv_t<std::remove_pointer_t<std::decay_t<decltype(atom->tag)>>>> a;
   a.x.a = atom->x;
   a.quat.a = atom->quat;
   a.v.a = atom->v;
