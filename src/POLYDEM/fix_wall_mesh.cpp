@@ -17,7 +17,6 @@
 #include "update.h"
 
 #include "polydem_parse.h"
-#include "polydem_contact_law.h"
 #include "polydem_damping.h"
 #include "polydem_shape_template.h"
 
@@ -40,9 +39,8 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
     wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
     overlap_warn(0.05), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0), hist(nullptr),
-    ellipsoids(0), kt_ratio(0.0), gt_ratio(0.0), reduced(0), avec(nullptr), near_cap(128),
-    near_skin(0.02), near_builds(0), near_builds_all(0), near_overflows_all(0), near_builds_run(0),
-    pertri(0), tri_reduced(0)
+    ellipsoids(0), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
+    near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
@@ -405,26 +403,28 @@ void FixWallMesh::init()
     error->warning(FLERR, "fix wall/mesh {}: youngs and poisson do not apply to ellipsoids "
                    "(their wall stiffness is k_n of pair_coeff)", id);
   const int nt = atom->ntypes;
-  tE.assign(nt + 1, 0.0);
-  tnu = wE = wnu = tmu = tkn = tE;
-  tdamp.assign(nt + 1, polydem::damping_law(1.0, 1));
-  kt_ratio = ellipsoids ? *ktr : 0.0;
-  gt_ratio = ellipsoids ? *gtr : 0.0;
+  law_entries.assign(nt + 1, polydem::LawEntry<double>());
+  laws = polydem::law_table(law_entries.data(), nt, nt + 1);
+  laws.core = core;
+  laws.twist = twist;
+  laws.kt_ratio = ellipsoids ? *ktr : 0.0;
+  laws.gt_ratio = ellipsoids ? *gtr : 0.0;
   for (int t = 1; t <= nt; t++) {
+    auto &L = law_entries[t];
     if (ellipsoids) {
-      tkn[t] = kn[t][t];
+      L.kn = kn[t][t];
     } else {
-      tE[t] = E[t];
-      tnu[t] = nu[t];
-      wE[t] = wall_E > 0.0 ? wall_E : E[t];
-      wnu[t] = wall_nu > -1.0 ? wall_nu : nu[t];
+      L.E1 = E[t];
+      L.nu1 = nu[t];
+      L.E2 = wall_E > 0.0 ? wall_E : E[t];
+      L.nu2 = wall_nu > -1.0 ? wall_nu : nu[t];
     }
     const double et = wall_e > 0.0 ? wall_e : e[t][t];
-    tmu[t] = wall_mu >= 0.0 ? wall_mu : mu[t][t];
-    if (!(ellipsoids ? tkn[t] > 0.0 : tE[t] > 0.0) || !(et > 0.0))
+    L.mu = wall_mu >= 0.0 ? wall_mu : mu[t][t];
+    if (!(ellipsoids ? L.kn > 0.0 : L.E1 > 0.0) || !(et > 0.0))
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} {})",
                  t, t, t, ellipsoids ? "kn e mu" : "E nu e mu");
-    tdamp[t] = polydem::damping_law(et, 1);
+    L.damping = polydem::damping_law(et, 1);
   }
   build_grid();
   check_timestep();
@@ -485,7 +485,7 @@ void FixWallMesh::check_timestep()
   auto consider = [&](int type, int ishape, double s, double m) {
     if (avec->shape(ishape).is_ellipsoid()) {
       // ellipsoids: the linear spring's contact time pi sqrt(m / k_n) (central impact)
-      tcmin = MIN(tcmin, MY_PI * sqrt(m / (tkn[type] * force->ftm2v)));
+      tcmin = MIN(tcmin, MY_PI * sqrt(m / (law_entries[type].kn * force->ftm2v)));
       return;
     }
     const auto L = law_of(type, ishape, s);
@@ -512,7 +512,7 @@ void FixWallMesh::check_timestep()
     error->all(FLERR,
                "fix wall/mesh {}: the contact stiffness of {} atom(s) overflows (youngs "
                "{:.4g} of the wall, the particles' from pair_coeff): lower youngs",
-               id, nover, wall_E > 0.0 ? wall_E : tE[1]);
+               id, nover, wall_E > 0.0 ? wall_E : law_entries[1].E1);
   if (comm->me != 0) return;
   if (tcmin < 1e300) {
     utils::logmesg(lmp, "fix wall/mesh {}: ellipsoid contact time {:.6g}, timestep {:.6g} = "
@@ -699,17 +699,16 @@ polydem::MeshPose<double> FixWallMesh::mesh_pose() const
   return mp;
 }
 
-polydem::ContactLaw<double> FixWallMesh::law(int i) const
+polydem::WallScene<double> FixWallMesh::scene() const
 {
-  return law_of(atom->type[i], atom->pshape[i], atom->pscale[i]);
+  return {mesh_pose(), grid_view(), cosmax, twosided, depth_warn, overlap_warn, near_skin};
 }
 
 polydem::ContactLaw<double> FixWallMesh::law_of(int t, int ishape, double s) const
 {
-  if (avec->shape(ishape).is_ellipsoid())
-    return polydem::ellipsoid_law(tkn[t], tdamp[t], tmu[t], kt_ratio, gt_ratio);
+  if (avec->shape(ishape).is_ellipsoid()) return polydem::wall_ellipsoid_law(laws, t);
   const double V = avec->shape(ishape).volume() * s * s * s;
-  return polydem::wall_law(tE[t], tnu[t], wE[t], wnu[t], V, tdamp[t], tmu[t], core, twist);
+  return polydem::wall_polyhedron_law(laws, t, V);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -754,12 +753,11 @@ void FixWallMesh::compute_forces(bool update)
   reduced = 0;
   tri_reduced = 0;
   if (pertri) std::fill(tri_local.begin(), tri_local.end(), 0.0);
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omg = atom->omega;
-  double **torque = atom->torque, **quat = atom->quat;
+  double **f = atom->f, **torque = atom->torque;
+  const auto atoms = polydem::host_atoms(atom);
   const int *mask = atom->mask;
   const int nlocal = atom->nlocal;
-  const auto mp = mesh_pose();
-  const auto g = grid_view();
+  const auto sc = scene();
   if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
   ws->record = pertri;
   polydem::WallPatches<double> P;
@@ -783,54 +781,33 @@ void FixWallMesh::compute_forces(bool update)
   polydem::WallTally<double> sum;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
+    // gather: atom i with its template and semi-axes (0: a polyhedron)
     const auto &shape = avec->shape(atom->pshape[i]);
     const auto sv = shape.view();
-    polydem::Pose<double> pose;
-    pose.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
-    pose.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
-    pose.s = atom->pscale[i];
-    const double m = atom->rmass[i];
-    const double s3 = pose.s * pose.s * pose.s;
-    const double dt = update ? lmp->update->dt : 0.0;
-    const auto vi = polydem::make_vec3(v[i][0], v[i][1], v[i][2]);
-    const auto wi = polydem::make_vec3(omg[i][0], omg[i][1], omg[i][2]);
-    polydem::WallForce<double> wf;
-    if (shape.is_ellipsoid()) {    // the grid query (no near list)
-      const auto &a = shape.semi_axes();
-      const auto ax = polydem::make_vec3(pose.s * a[0], pose.s * a[1], pose.s * a[2]);
-      wf = polydem::wall_ellipsoid_particle(ax, pose, mp, g, law(i), m, dt, cosmax, twosided, vi,
-                                            wi, hist[i], update, P);
-      sum.add(pose.x, wf, mp, P,
-              polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, m, depth_warn,
-                                     overlap_warn));
-      if (pertri) polydem::wall_ellipsoid_triangle_forces(P, wf, add_tri);
-    } else {
-      polydem::WallNear<double> *pn = nullptr;
-      if (near_cap > 0) {
-        nl.ref = &near_ref[13 * (size_t) i];
-        nl.count = &near_count[i];
-        nl.tri = &near_tri[(size_t) near_cap * i];
-        nl.gap = &near_gap[(size_t) near_cap * i];
-        nl.skin = near_skin * sv.radius * pose.s;
-        pn = &nl;
-      }
-      wf = polydem::wall_particle(sv, pose, mp, g, [&] { return law(i); }, m, dt, cosmax,
-                                  twosided, vi, wi, hist[i], update, *ws, P, pn);
-      sum.add(pose.x, wf, mp, P,
-              polydem::wall_warnings(P, wf, sv.volume * s3, sv.radius * pose.s, m, depth_warn,
-                                     overlap_warn));
-      if (pn) {
-        sum.near_builds += nl.built;
-        if (nl.built && near_count[i] == polydem::NEAR_OVERFLOW) sum.near_overflow += 1;
-      }
-      if (pertri) polydem::wall_triangle_forces(*ws, P, wf, add_tri);
+    const auto &a = shape.semi_axes();
+    const auto b =
+        polydem::gather_wall_body(atoms, i, &sv,
+                                  shape.is_ellipsoid() ? polydem::make_vec3(a[0], a[1], a[2])
+                                                       : polydem::make_vec3(0.0, 0.0, 0.0));
+    polydem::WallNear<double> *pn = nullptr;
+    if (near_cap > 0) {
+      nl.ref = &near_ref[13 * (size_t) i];
+      nl.count = &near_count[i];
+      nl.tri = &near_tri[(size_t) near_cap * i];
+      nl.gap = &near_gap[(size_t) near_cap * i];
+      pn = &nl;
     }
-    f[i][0] += wf.f.x;
-    f[i][1] += wf.f.y;
-    f[i][2] += wf.f.z;
-    torque[i][0] += wf.tau.x;
-    torque[i][1] += wf.tau.y;
-    torque[i][2] += wf.tau.z;
+    // the contact (polydem_contact_pipeline.h), then scatter and tally
+    const auto r =
+        polydem::wall_body_contact(b, laws, sc, lmp->update->dt, update, hist[i], *ws, P, pn);
+    polydem::wall_tally_add(sum, b, r, sc.mp, P);
+    if (pertri) polydem::wall_body_triangle_forces(b, *ws, P, r, add_tri);
+    f[i][0] += r.wf.f.x;
+    f[i][1] += r.wf.f.y;
+    f[i][2] += r.wf.f.z;
+    torque[i][0] += r.wf.tau.x;
+    torque[i][1] += r.wf.tau.y;
+    torque[i][2] += r.wf.tau.z;
   }
   absorb(sum);
   if (update && neighbor->ago == 0) report_counts();

@@ -17,11 +17,10 @@ FixStyle(wall/mesh,FixWallMesh);
 
 #include "fix.h"
 
+#include "polydem_contact_pipeline.h"
 #include "polydem_insert.h"
 #include "polydem_mesh_grid.h"
 #include "polydem_stl.h"
-#include "polydem_wall_contact.h"
-#include "polydem_wall_ellipsoid.h"
 
 #include <memory>
 #include <string>
@@ -87,13 +86,13 @@ class FixWallMesh : public Fix {
   double elapsed;    // time since the fix was defined (mesh motion)
 
   double **hist;     // per atom: WALL_HIST_SIZE values
-  // per type (1..ntypes): particle E, nu; wall E, nu; mu; damping law
-  std::vector<double> tE, tnu, wE, wnu, tmu;
-  std::vector<polydem::DampingLaw<double>> tdamp;
-  // ellipsoids (pair_style ellipsoid): per type k_n; k_t / k_n, gamma_t / gamma_n
+  // the law table (polydem_law_table.h), built in init: per particle type
+  // (1..ntypes) the particle's E, nu, the wall's E, nu (polyhedra), k_n
+  // (ellipsoids), mu and the damping law; core, twist, k_t / k_n and
+  // gamma_t / gamma_n (ellipsoids, from pair_style ellipsoid)
+  std::vector<polydem::LawEntry<double>> law_entries;
+  polydem::LawTable<double> laws;
   int ellipsoids;    // the group's particles are ellipsoids
-  std::vector<double> tkn;
-  double kt_ratio, gt_ratio;
   double local[NVEC + 1], global[NVEC + 1];    // [NVEC]: energy
   int reduced;
   // kernel failure counts (overflow, degenerate, merged patches), near-list
@@ -128,7 +127,7 @@ class FixWallMesh : public Fix {
                         const polydem::Vec3<double> &c) const;
   polydem::MeshPose<double> mesh_pose() const;
   polydem::MeshGridView<double> grid_view() const;
-  polydem::ContactLaw<double> law(int i) const;
+  polydem::WallScene<double> scene() const;    // the mesh as the particles see it now
   polydem::ContactLaw<double> law_of(int type, int ishape, double s) const;
   void build_grid();
   void report_counts();

@@ -11,6 +11,7 @@
 #include "memory_kokkos.h"
 #include "neighbor.h"
 #include "polydem_kokkos_masks.h"
+#include "polydem_law_table_kokkos.h"
 #include "polydem_shape_template.h"
 #include "update.h"
 
@@ -35,8 +36,8 @@ template <class V, class S> void upload(V &d, const std::vector<S> &h, const cha
 }
 
 /* ----------------------------------------------------------------------
-   one particle per thread: FixWallMesh::compute_forces statement for
-   statement (pose, wall_particle, reaction), sums reduced over threads
+   one particle per thread, as FixWallMesh::compute_forces: gather, the
+   pipeline's wall_body_contact, scatter; sums reduced over threads
 ------------------------------------------------------------------------- */
 
 // pertriangle: shares of the patch forces go to their triangles (atomics:
@@ -65,60 +66,31 @@ template <class DeviceType> struct WallMeshKernel {
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> hist;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
   Kokkos::View<double *[3], DeviceType> axes;    // ellipsoids' semi-axes (0: polyhedron)
-  Kokkos::View<polydem::ContactLaw<double> *, DeviceType> elaw;    // ellipsoids' law per type
-  Kokkos::View<double *[5], DeviceType> mat;
-  Kokkos::View<polydem::DampingLaw<double> *, DeviceType> damp;
+  polydem::LawTable<double> laws;                // entries on the device
   Kokkos::View<char *, DeviceType> workspace;
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> near_ref;
   Kokkos::View<int *, DeviceType> near_count;
   Kokkos::View<int **, Kokkos::LayoutRight, DeviceType> near_tri;
   Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> near_gap;
   int near_cap;
-  double near_skin;
   Kokkos::View<double *[3], DeviceType> trif;    // pertriangle: force on each triangle
   int pertri;
-  polydem::MeshGridView<double> grid;
-  polydem::MeshPose<double> mp;
-  double cosmax, core, dt, depth_warn, overlap_warn;
-  int update, groupbit, ibase, twosided, twist;
+  polydem::WallScene<double> sc;    // grid pointers into device memory
+  double dt;
+  int update, groupbit, ibase;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int slot, value_type &sum) const
   {
     const int i = ibase + slot;
     if (!(mask(i) & groupbit)) return;
+    // gather: atom i with its template and semi-axes (0: a polyhedron)
     const int ps = pshape(i);
-    const polydem::ShapeView<double> &sv = shapes(ps);
-    const int t = type(i);
-    const double s = pscale(i);
-    const double V = sv.volume * s * s * s;
-    polydem::Pose<double> pose;
-    pose.x = polydem::make_vec3(x(i, 0), x(i, 1), x(i, 2));
-    pose.q = polydem::make_quat(quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3));
-    pose.s = s;
+    const auto b = polydem::gather_wall_body(
+        *this, i, &shapes(ps), polydem::make_vec3(axes(ps, 0), axes(ps, 1), axes(ps, 2)));
     double h[NH];
     for (int k = 0; k < NH; k++) h[k] = hist(i, k);
-    polydem::WallPatches<double> P;
-    if (axes(ps, 0) > 0.0) {    // an ellipsoid: the grid query, no workspace
-      const auto ax = polydem::make_vec3(s * axes(ps, 0), s * axes(ps, 1), s * axes(ps, 2));
-      const auto wf = polydem::wall_ellipsoid_particle(
-          ax, pose, mp, grid, elaw(t), rmass(i), update ? dt : 0.0, cosmax, twosided,
-          polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
-          polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, P);
-      const auto w =
-          polydem::wall_warnings(P, wf, V, sv.radius * s, rmass(i), depth_warn, overlap_warn);
-      if (pertri) {
-        TriAdd<DeviceType> add{trif};
-        polydem::wall_ellipsoid_triangle_forces(P, wf, add);
-      }
-      finish(i, h, wf, pose, P, w, sum);
-      return;
-    }
     auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
     ws.record = pertri;
-    const auto law = [&] {
-      return polydem::wall_law(mat(t, 0), mat(t, 1), mat(t, 2), mat(t, 3), V, damp(t), mat(t, 4),
-                               core, twist);
-    };
     polydem::WallNear<double> nl;
     polydem::WallNear<double> *pn = nullptr;
     if (near_cap > 0) {
@@ -127,41 +99,23 @@ template <class DeviceType> struct WallMeshKernel {
       nl.tri = &near_tri(i, 0);
       nl.gap = &near_gap(i, 0);
       nl.cap = near_cap;
-      nl.skin = near_skin * sv.radius * s;
-      nl.built = 0;
       pn = &nl;
     }
-    const auto wf = polydem::wall_particle(
-        sv, pose, mp, grid, law, rmass(i), update ? dt : 0.0, cosmax, twosided,
-        polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
-        polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)), h, update != 0, ws, P, pn);
-    const auto w =
-        polydem::wall_warnings(P, wf, V, sv.radius * s, rmass(i), depth_warn, overlap_warn);
+    // the contact (polydem_contact_pipeline.h), then scatter and tally
+    polydem::WallPatches<double> P;
+    const auto r = polydem::wall_body_contact(b, laws, sc, dt, update != 0, h, ws, P, pn);
+    for (int k = 0; k < NH; k++) hist(i, k) = h[k];
+    f(i, 0) += r.wf.f.x;
+    f(i, 1) += r.wf.f.y;
+    f(i, 2) += r.wf.f.z;
+    torque(i, 0) += r.wf.tau.x;
+    torque(i, 1) += r.wf.tau.y;
+    torque(i, 2) += r.wf.tau.z;
+    polydem::wall_tally_add(sum, b, r, sc.mp, P);
     if (pertri) {
       TriAdd<DeviceType> add{trif};
-      polydem::wall_triangle_forces(ws, P, wf, add);
+      polydem::wall_body_triangle_forces(b, ws, P, r, add);
     }
-    if (pn) {
-      sum.near_overflow += (nl.built && near_count(i) == polydem::NEAR_OVERFLOW) ? 1.0 : 0.0;
-      sum.near_builds += nl.built;
-    }
-    finish(i, h, wf, pose, P, w, sum);
-  }
-
-  // history back, forces on the particle, the sums
-  KOKKOS_INLINE_FUNCTION void finish(int i, const double *h, const polydem::WallForce<double> &wf,
-                                     const polydem::Pose<double> &pose,
-                                     const polydem::WallPatches<double> &P,
-                                     const polydem::WallWarnings<double> &w, value_type &sum) const
-  {
-    for (int k = 0; k < NH; k++) hist(i, k) = h[k];
-    f(i, 0) += wf.f.x;
-    f(i, 1) += wf.f.y;
-    f(i, 2) += wf.f.z;
-    torque(i, 0) += wf.tau.x;
-    torque(i, 1) += wf.tau.y;
-    torque(i, 2) += wf.tau.z;
-    sum.add(pose.x, wf, mp, P, w);
   }
 };
 
@@ -209,24 +163,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
   upload(d_items, grid.items, "wall/mesh/kk:items");
   upload(d_tbin, grid.tbin, "wall/mesh/kk:tbin");
 
-  // per-type material, as FixWallMesh::params
-  const int nt = atom->ntypes;
-  d_mat = Kokkos::View<double *[5], DeviceType>("wall/mesh/kk:mat", nt + 1);
-  d_damp = Kokkos::View<polydem::DampingLaw<double> *, DeviceType>("wall/mesh/kk:damp", nt + 1);
-  auto h_mat = Kokkos::create_mirror_view(d_mat);
-  auto h_damp = Kokkos::create_mirror_view(d_damp);
-  for (int t = 0; t <= nt; t++) {
-    const double m[5] = {tE[t], tnu[t], wE[t], wnu[t], tmu[t]};
-    for (int k = 0; k < 5; k++) h_mat(t, k) = m[k];
-    h_damp(t) = tdamp[t];
-  }
-  Kokkos::deep_copy(d_mat, h_mat);
-  Kokkos::deep_copy(d_damp, h_damp);
-  d_elaw = Kokkos::View<polydem::ContactLaw<double> *, DeviceType>("wall/mesh/kk:elaw", nt + 1);
-  auto h_elaw = Kokkos::create_mirror_view(d_elaw);
-  for (int t = 0; t <= nt; t++)
-    h_elaw(t) = polydem::ellipsoid_law(tkn[t], tdamp[t], tmu[t], kt_ratio, gt_ratio);
-  Kokkos::deep_copy(d_elaw, h_elaw);
+  // the law table (FixWallMesh::init) on the device
+  d_laws_table = polydem_kk::mirror_law_table<DeviceType>(laws, d_laws);
   shape_version = -1;
   update_shapes();
 }
@@ -348,7 +286,6 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.near_tri = d_near_tri;
   k.near_gap = d_near_gap;
   k.near_cap = near_cap;
-  k.near_skin = near_skin;
   k.x = atomKK->k_x.view<DeviceType>();
   k.v = atomKK->k_v.view<DeviceType>();
   k.omega = atomKK->k_omega.view<DeviceType>();
@@ -363,27 +300,18 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.hist = k_hist.template view<DeviceType>();
   k.shapes = d_shapes;
   k.axes = d_axes;
-  k.elaw = d_elaw;
-  k.mat = d_mat;
-  k.damp = d_damp;
+  k.laws = d_laws_table;
   k.workspace = d_workspace;
-  k.grid = grid_view();
-  k.grid.tri = d_tri.data();
-  k.grid.start = d_start.data();
-  k.grid.items = d_items.data();
-  k.grid.plane = d_plane.data();
-  k.grid.box = d_box.data();
-  k.grid.tbin = d_tbin.data();
-  k.mp = mesh_pose();
-  k.cosmax = cosmax;
-  k.core = core;
+  k.sc = scene();
+  k.sc.grid.tri = d_tri.data();
+  k.sc.grid.start = d_start.data();
+  k.sc.grid.items = d_items.data();
+  k.sc.grid.plane = d_plane.data();
+  k.sc.grid.box = d_box.data();
+  k.sc.grid.tbin = d_tbin.data();
   k.dt = update->dt;
   k.update = stepping ? 1 : 0;
   k.groupbit = groupbit;
-  k.twosided = twosided;
-  k.twist = twist;
-  k.depth_warn = depth_warn;
-  k.overlap_warn = overlap_warn;
 
   WallTally total;
   for (int i0 = 0; i0 < nlocal; i0 += nslots) {

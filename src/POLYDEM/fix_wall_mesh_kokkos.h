@@ -62,11 +62,9 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
   // semi-axes per template at unit scale (0: a polyhedron), as pair ellipsoid/kk
   Kokkos::View<double *[3], DeviceType> d_axes;
-  // per type: the ellipsoids' wall law (polydem::ellipsoid_law)
-  Kokkos::View<polydem::ContactLaw<double> *, DeviceType> d_elaw;
-  // per type: particle E, nu; wall E, nu; friction; damping law
-  Kokkos::View<double *[5], DeviceType> d_mat;
-  Kokkos::View<polydem::DampingLaw<double> *, DeviceType> d_damp;
+  // the law table's entries on the device, and the table pointing there
+  Kokkos::View<polydem::LawEntry<double> *, DeviceType> d_laws;
+  polydem::LawTable<double> d_laws_table;
   Kokkos::View<char *, DeviceType> d_workspace;
   // near lists (keyword cache), per local atom
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> d_near_ref;

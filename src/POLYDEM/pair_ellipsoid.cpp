@@ -20,11 +20,11 @@
 #include "neighbor.h"
 #include "update.h"
 
-#include "polydem_parse.h"
+#include "polydem_contact_pipeline.h"
 #include "polydem_damping.h"
 #include "polydem_history.h"
 #include "polydem_lammps_compat.h"
-#include "polydem_ellipsoid_force.h"
+#include "polydem_parse.h"
 #include "polydem_shape_template.h"
 
 #include <cmath>
@@ -33,7 +33,14 @@
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
-static constexpr int SIZE_HISTORY = 3;    // tangential displacement s (polydem_contact_law.h)
+static constexpr int SIZE_HISTORY = polydem::ELLIPSOID_HIST;    // s (polydem_contact_law.h)
+static_assert(int(PairEllipsoid::CNT_DEGENERATE) == int(polydem::EP_DEGENERATE) &&
+                  int(PairEllipsoid::CNT_NOCONV) == int(polydem::EP_NOCONV) &&
+                  int(PairEllipsoid::CNT_BIGOVERLAP) == int(polydem::EP_BIGOVERLAP) &&
+                  int(PairEllipsoid::CNT_CONTACTS) == int(polydem::EP_CONTACTS) &&
+                  int(PairEllipsoid::CNT_COLLISIONS) == int(polydem::EP_COLLISIONS) &&
+                  int(PairEllipsoid::NCOUNT) == int(polydem::EP_NCOUNT),
+              "counters in the order of the pipeline's");
 // first value of the restart settings since the history convention of
 // polydem_contact_law.h (older files begin with overlap/warn, which is > 0)
 static constexpr double RESTART_VERSION = -2.0;
@@ -223,6 +230,16 @@ void PairEllipsoid::init_style()
     fix_history = (FixNeighHistory *) modify->fix[ifix];
   }
 
+  // the law table: settings now, the type pairs' entries in init_one
+  const int nt = atom->ntypes + 1;
+  law_entries.assign((size_t) nt * nt, polydem::LawEntry<double>());
+  laws = polydem::law_table(law_entries.data(), atom->ntypes, nt * nt);
+  laws.kt_ratio = kt_ratio;
+  laws.gt_ratio = gt_ratio;
+  laws.overlap = overlap;
+  laws.damping_mass = damping_mass;
+  laws.overlap_warn = overlap_warn;
+
   for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
   check_timestep();
 }
@@ -254,9 +271,13 @@ double PairEllipsoid::init_one(int i, int j)
   kn[j][i] = kn[i][j];
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
+  // the law table's entries of the pair (friction only with a history)
   const int nt = atom->ntypes + 1;
-  if ((int) damping.size() != nt * nt) damping.assign((size_t) nt * nt, polydem::damping_law(1.0, 1));
-  damping[i * nt + j] = damping[j * nt + i] = polydem::damping_law(restitution[i][j], 1);
+  polydem::LawEntry<double> e = polydem::LawEntry<double>();
+  e.kn = kn[i][j];
+  e.mu = use_history ? friction[i][j] : 0.0;
+  e.damping = polydem::damping_law(restitution[i][j], 1);
+  law_entries[i * nt + j] = law_entries[j * nt + i] = e;
   // particles present, and those an insertion fix may add later
   double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
   for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
@@ -291,85 +312,49 @@ void PairEllipsoid::check_timestep()
 void PairEllipsoid::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag);
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  double **omega = atom->omega, **torque = atom->torque, **quat = atom->quat;
-  double *radius = atom->radius, *rmass = atom->rmass, *pscale = atom->pscale;
-  int *pshape = atom->pshape, *type = atom->type;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
+  double *radius = atom->radius;
+  int *pshape = atom->pshape;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
   const int inum = list->inum;
   int *ilist = list->ilist, *numneigh = list->numneigh, **firstneigh = list->firstneigh;
-
-  auto pose = [&](int i) {
-    polydem::EllipsoidPose<double> p;
-    const auto &ax = avec->shape(pshape[i]).semi_axes();
-    p.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
-    p.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
-    p.axes = pscale[i] * polydem::make_vec3(ax[0], ax[1], ax[2]);
-    return p;
-  };
-  auto vec = [](const double *a) { return polydem::make_vec3(a[0], a[1], a[2]); };
-  const tagint *tag = atom->tag;
   int **firsttouch = use_history ? fix_history->firstflag : nullptr;
   double **firstshear = use_history ? fix_history->firstvalue : nullptr;
   const bool update_history = update->setupflag == 0;
 
+  // gather: atom k with its template's semi-axes
+  const auto atoms = polydem::host_atoms(atom);
+  auto body = [&](int k) {
+    const auto &ax = avec->shape(pshape[k]).semi_axes();
+    return polydem::gather_ellipsoid_body(atoms, k, polydem::make_vec3(ax[0], ax[1], ax[2]));
+  };
+
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
-    const auto A = pose(i);
+    const auto A = body(i);
     const int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
-    int *touch = use_history ? firsttouch[i] : nullptr;
-    double *allshear = use_history ? firstshear[i] : nullptr;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      // no contact: the pair's tangential history ends
-      auto release = [&]() {
-        if (!use_history) return;
-        touch[jj] = 0;
-        for (int k = 0; k < SIZE_HISTORY; k++) allshear[SIZE_HISTORY * jj + k] = 0.0;
-      };
+      double *shear = use_history ? &firstshear[i][SIZE_HISTORY * jj] : nullptr;
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const double radsum = radius[i] + radius[j];
-      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) {
-        release();
-        continue;
-      }
-      const auto B = pose(j);
-      const auto c = polydem::ellipsoid_contact(A, B);
-      if (c.status != polydem::STATUS_OK) {
-        if (c.status != polydem::STATUS_SEPARATED)
-          local_counts[c.status == polydem::STATUS_NO_CONVERGENCE ? CNT_NOCONV : CNT_DEGENERATE] +=
-              1.0;
-        release();
-        continue;
-      }
       // a pair with a ghost j is seen on two ranks when newton_pair is off
-      const double w = (newton_pair || j < nlocal) ? 1.0 : 0.5;
-      local_counts[CNT_CONTACTS] += w;
-      const double amin = MIN(MIN(MIN(A.axes.x, A.axes.y), MIN(A.axes.z, B.axes.x)),
-                              MIN(B.axes.y, B.axes.z));
-      const int it = type[i], jt = type[j];
-      const auto kin = polydem::make_kinematics(
-          A.x, B.x, vec(v[i]), vec(v[j]), vec(omega[i]), vec(omega[j]),
-          damping_mass == polydem::DAMPING_CONTACT
-              ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass[i], rmass[j])
-              : rmass[i] * rmass[j] / (rmass[i] + rmass[j]),
-          update_history ? update->dt : 0.0);
-      const auto geo = polydem::ellipsoid_geometry(c, overlap, A.x, B.x);
-      const auto law = polydem::ellipsoid_law(kn[it][jt], damping[it * (atom->ntypes + 1) + jt],
-                                              use_history ? friction[it][jt] : 0.0, kt_ratio,
-                                              gt_ratio);
-      if (use_history) touch[jj] = 1;
-      const auto cf = polydem::pair_contact_step(
-          geo, law, kin, use_history ? &allshear[SIZE_HISTORY * jj] : nullptr, SIZE_HISTORY,
-          polydem::contact_history_sign(tag[i], tag[j]), update_history);
-      if (geo.volume > overlap_warn * amin) local_counts[CNT_BIGOVERLAP] += 1.0;
-      if (geo.volume < cf.rate * update->dt) local_counts[CNT_COLLISIONS] += w;
-      polydem::scatter_contact_host(f, torque, i, j, newton_pair || j < nlocal, cf);
+      const bool to_j = newton_pair || j < nlocal;
+      polydem::PairContactResult<double> c;
+      c.contact = 0;
+      if (delx * delx + dely * dely + delz * delz >= radsum * radsum)
+        polydem::history_release(shear, SIZE_HISTORY);
+      else
+        c = polydem::ellipsoid_pair_contact(A, body(j), laws, update->dt, update_history, shear,
+                                            to_j ? 1.0 : 0.5, local_counts);
+      if (use_history) firsttouch[i][jj] = c.contact;
+      if (!c.contact) continue;
+      polydem::scatter_contact_host(f, torque, i, j, to_j, c.cf);
       if (evflag)
-        ev_tally_xyz(i, j, nlocal, newton_pair, cf.energy, 0.0, cf.F_A.x, cf.F_A.y, cf.F_A.z,
-                     delx, dely, delz);
+        ev_tally_xyz(i, j, nlocal, newton_pair, c.cf.energy, 0.0, c.cf.F_A.x, c.cf.F_A.y,
+                     c.cf.F_A.z, delx, dely, delz);
     }
   }
   pvector[0] = local_counts[CNT_COLLISIONS];

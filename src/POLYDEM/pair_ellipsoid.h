@@ -18,7 +18,7 @@ PairStyle(ellipsoid,PairEllipsoid);
 
 #include "pair.h"
 #include "polydem_lammps_compat.h"
-#include "polydem_contact_law.h"
+#include "polydem_law_table.h"
 
 #include <vector>
 
@@ -39,7 +39,8 @@ class PairEllipsoid : public Pair {
   void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
 
-  // counters since the start of the run (global after report_counters)
+  // counters since the start of the run (global after report_counters), in
+  // the order of polydem::EllipsoidPairCount (polydem_contact_pipeline.h);
   // CNT_COLLISIONS: contacts in their first step (delta < (d delta/dt) dt), i.e.
   // collisions started; CNT_CONTACTS: pair-steps in contact
   enum { CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, CNT_COLLISIONS, NCOUNT };
@@ -48,9 +49,10 @@ class PairEllipsoid : public Pair {
  protected:
   double **kn, **restitution;    // per type pair
   double **friction;             // per type pair: Coulomb mu (0: frictionless)
-  // damping law of each type pair (damping_law(restitution, 1)), set in
-  // init_one; index i * (ntypes + 1) + j
-  std::vector<polydem::DampingLaw<double>> damping;
+  // the law table (polydem_law_table.h) of the contacts: settings from
+  // init_style, each type pair's entry from init_one (mixed coefficients)
+  std::vector<polydem::LawEntry<double>> law_entries;
+  polydem::LawTable<double> laws;
   double kt_ratio, gt_ratio;     // k_t / k_n, gamma_t / gamma_n (keyword tangential)
   int use_history;               // some mu > 0: per-pair tangential history
   class FixDummy *fix_dummy;

@@ -19,11 +19,12 @@
 #include "neighbor.h"
 #include "update.h"
 
-#include "polydem_ellipsoid_force.h"
+#include "polydem_contact_pipeline.h"
 #include "polydem_history_kokkos.h"
-#include "polydem_tally_kokkos.h"
 #include "polydem_kokkos_masks.h"
+#include "polydem_law_table_kokkos.h"
 #include "polydem_shape_template.h"
+#include "polydem_tally_kokkos.h"
 
 using namespace LAMMPS_NS;
 
@@ -32,8 +33,8 @@ namespace {
 typedef polydem_kk::PairReduce<PairEllipsoid::NCOUNT> EllReduce;
 
 /* ----------------------------------------------------------------------
-   one thread per list entry ii: the statements of PairEllipsoid::compute
-   for all neighbors of i, with atomic accumulation
+   one thread per list entry ii, as PairEllipsoid::compute: gather, the
+   pipeline's ellipsoid_pair_contact, scatter with atomics
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> struct EllContactFunctor {
@@ -46,51 +47,37 @@ template <class DeviceType> struct EllContactFunctor {
   typename AT::t_f_array f, torque;
   typename AT::t_float_1d_randomread radius, rmass, pscale;
   typename AT::t_int_1d_randomread type, pshape;
+  typename AT::t_tagint_1d_randomread tag;
   polydem_view_t<tdual_quat_array, DeviceType> quat;
   typename AT::t_int_1d_randomread ilist, numneigh;
   typename AT::t_neighbors_2d neighbors;
   Kokkos::View<double *[3], DeviceType> axes;
-  Kokkos::View<double **, DeviceType> kn, mu;
-  Kokkos::View<polydem::DampingLaw<double> **, DeviceType> damp;
-  // friction (use_history): per-pair tangential displacement, stored as the
-  // displacement of the lower-tag atom's point relative to the other's (the
+  polydem::LawTable<double> laws;    // entries on the device
+  // friction (use_history): per-pair history in the pair convention (the
   // Kokkos history fix copies it to the partner unchanged; see
   // pair_polyhedron_kokkos.cpp); partner counts at reneighboring
-  typename AT::t_tagint_1d_randomread tag;
   typename AT::t_int_2d firsttouch;
   typename AT::t_float_2d firstshear;
   Kokkos::View<int *, DeviceType> npartner;
   int use_history, shearupdate, count_partners;
-  double kt_ratio, gt_ratio;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
-  int nlocal, newton_pair, overlap, damping_mass;
+  int nlocal, newton_pair;
   polydem_kk::TallyFlags tally;
-  double dt, overlap_warn;
+  double dt;
 
-  KOKKOS_INLINE_FUNCTION polydem::EllipsoidPose<double> pose(int i) const
+  // gather: atom k with its template's semi-axes
+  KOKKOS_INLINE_FUNCTION polydem::EllipsoidBody<double> body(int k) const
   {
-    polydem::EllipsoidPose<double> p;
-    const int t = pshape(i);
-    const double s = pscale(i);
-    p.x = polydem::make_vec3(x(i, 0), x(i, 1), x(i, 2));
-    p.q = polydem::make_quat(quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3));
-    p.axes = polydem::make_vec3(s * axes(t, 0), s * axes(t, 1), s * axes(t, 2));
-    return p;
-  }
-
-  // no contact: the pair's tangential history ends
-  KOKKOS_INLINE_FUNCTION void release(int i, int jj) const
-  {
-    if (!use_history) return;
-    firsttouch(i, jj) = 0;
-    for (int k = 0; k < 3; k++) firstshear(i, 3 * jj + k) = 0.0;
+    const int t = pshape(k);
+    return polydem::gather_ellipsoid_body(*this, k,
+                                          polydem::make_vec3(axes(t, 0), axes(t, 1), axes(t, 2)));
   }
 
   KOKKOS_INLINE_FUNCTION void operator()(const int ii, EllReduce &red) const
   {
     const int i = ilist(ii);
-    const auto A = pose(i);
+    const auto A = body(i);
     const int jnum = numneigh(i);
     for (int jj = 0; jj < jnum; jj++) {
       const int j = neighbors(i, jj) & NEIGHMASK;
@@ -98,51 +85,22 @@ template <class DeviceType> struct EllContactFunctor {
         Kokkos::atomic_increment(&npartner(i));
         if (j < nlocal) Kokkos::atomic_increment(&npartner(j));
       }
+      double *shear = use_history ? &firstshear(i, polydem::ELLIPSOID_HIST * jj) : nullptr;
       const double delx = x(i, 0) - x(j, 0), dely = x(i, 1) - x(j, 1), delz = x(i, 2) - x(j, 2);
       const double radsum = radius(i) + radius(j);
-      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) {
-        release(i, jj);
-        continue;
-      }
-      const auto B = pose(j);
-      const auto c = polydem::ellipsoid_contact(A, B);
-      if (c.status != polydem::STATUS_OK) {
-        if (c.status != polydem::STATUS_SEPARATED)
-          red.cnt[c.status == polydem::STATUS_NO_CONVERGENCE ? PairEllipsoid::CNT_NOCONV
-                                                             : PairEllipsoid::CNT_DEGENERATE] += 1.0;
-        release(i, jj);
-        continue;
-      }
-      const double w = (newton_pair || j < nlocal) ? 1.0 : 0.5;    // ghost pairs: 2 ranks
-      red.cnt[PairEllipsoid::CNT_CONTACTS] += w;
-      double amin = A.axes.x;
-      const double ax[5] = {A.axes.y, A.axes.z, B.axes.x, B.axes.y, B.axes.z};
-      for (int k = 0; k < 5; k++)
-        if (ax[k] < amin) amin = ax[k];
-      const int it = type(i), jt = type(j);
-      const auto kin = polydem::make_kinematics(
-          A.x, B.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
-          polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
-          polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)),
-          polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2)),
-          damping_mass == polydem::DAMPING_CONTACT
-              ? polydem::ellipsoid_contact_mass(c, overlap, A, B, rmass(i), rmass(j))
-              : rmass(i) * rmass(j) / (rmass(i) + rmass(j)),
-          shearupdate ? dt : 0.0);
-      const auto geo = polydem::ellipsoid_geometry(c, overlap, A.x, B.x);
-      const auto law = polydem::ellipsoid_law(kn(it, jt), damp(it, jt),
-                                              use_history ? mu(it, jt) : 0.0, kt_ratio, gt_ratio);
-      // the history is that of the lower-tag atom (polydem_contact_law.h)
-      if (use_history) firsttouch(i, jj) = 1;
-      const auto cf = polydem::pair_contact_step(
-          geo, law, kin, use_history ? &firstshear(i, 3 * jj) : nullptr, 3,
-          use_history ? polydem::contact_history_sign(tag(i), tag(j)) : 1.0, shearupdate != 0);
-      if (geo.volume > overlap_warn * amin) red.cnt[PairEllipsoid::CNT_BIGOVERLAP] += 1.0;
-      if (geo.volume < cf.rate * dt) red.cnt[PairEllipsoid::CNT_COLLISIONS] += w;
-
-      polydem_kk::scatter_contact(f, torque, i, j, newton_pair || j < nlocal, cf);
-      const double F[3] = {cf.F_A.x, cf.F_A.y, cf.F_A.z};
-      polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, cf.energy, F, delx, dely, delz);
+      const bool to_j = newton_pair || j < nlocal;    // else the pair is seen on 2 ranks
+      polydem::PairContactResult<double> c;
+      c.contact = 0;
+      if (delx * delx + dely * dely + delz * delz >= radsum * radsum)
+        polydem::history_release(shear, polydem::ELLIPSOID_HIST);
+      else
+        c = polydem::ellipsoid_pair_contact(A, body(j), laws, dt, shearupdate != 0, shear,
+                                            to_j ? 1.0 : 0.5, red.cnt);
+      if (use_history) firsttouch(i, jj) = c.contact;
+      if (!c.contact) continue;
+      polydem_kk::scatter_contact(f, torque, i, j, to_j, c.cf);
+      const double F[3] = {c.cf.F_A.x, c.cf.F_A.y, c.cf.F_A.z};
+      polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, c.cf.energy, F, delx, dely, delz);
     }
   }
 };
@@ -190,7 +148,8 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
   if (friction_used() && fix_history == nullptr) {
     fix_history = polydem_kk::create_history_fix<DeviceType>(
         modify, "NEIGH_HISTORY_ELL" + std::to_string(history_id),
-        "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), 3, execution_space == Device);
+        "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), polydem::ELLIPSOID_HIST,
+        execution_space == Device);
     fix_history->pair = this;
   }
   PairEllipsoid::init_style();
@@ -219,23 +178,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::update_device_
     shape_version = av->shape_version();
   }
   if (params_dirty) {
-    const int n = atom->ntypes;
-    d_kn = Kokkos::View<double **, DeviceType>("ellipsoid/kk:kn", n + 1, n + 1);
-    d_damp = Kokkos::View<polydem::DampingLaw<double> **, DeviceType>("ellipsoid/kk:damp", n + 1,
-                                                                     n + 1);
-    d_mu = Kokkos::View<double **, DeviceType>("ellipsoid/kk:mu", n + 1, n + 1);
-    auto hm = Kokkos::create_mirror_view(d_mu);
-    auto hk = Kokkos::create_mirror_view(d_kn);
-    auto hd = Kokkos::create_mirror_view(d_damp);
-    for (int i = 1; i <= n; i++)
-      for (int j = 1; j <= n; j++) {
-        hk(i, j) = kn[i][j];
-        hd(i, j) = damping[i * (n + 1) + j];
-        hm(i, j) = friction[i][j];
-      }
-    Kokkos::deep_copy(d_kn, hk);
-    Kokkos::deep_copy(d_damp, hd);
-    Kokkos::deep_copy(d_mu, hm);
+    d_laws_table = polydem_kk::mirror_law_table<DeviceType>(laws, d_laws);
     params_dirty = 0;
   }
 }
@@ -278,12 +221,9 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   fn.numneigh = k_list->d_numneigh;
   fn.neighbors = k_list->d_neighbors;
   fn.axes = d_axes;
-  fn.kn = d_kn;
-  fn.damp = d_damp;
-  fn.mu = d_mu;
+  fn.laws = d_laws_table;
+  fn.tag = atomKK->k_tag.view<DeviceType>();
   fn.use_history = use_history;
-  fn.kt_ratio = kt_ratio;
-  fn.gt_ratio = gt_ratio;
   fn.shearupdate = update->setupflag ? 0 : 1;
   fn.count_partners = 0;
   const int nlocal = atom->nlocal;
@@ -291,7 +231,6 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
     auto *fh = (FixNeighHistoryKokkos<DeviceType> *) fix_history;
     fh->k_firstflag.template sync<DeviceType>();    // read and written on the device below
     fh->k_firstvalue.template sync<DeviceType>();
-    fn.tag = atomKK->k_tag.view<DeviceType>();
     fn.firsttouch = fh->k_firstflag.template view<DeviceType>();
     fn.firstshear = fh->k_firstvalue.template view<DeviceType>();
     fn.count_partners = neighbor->ago == 0;
@@ -306,12 +245,9 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   if (vflag_atom) fn.vatom = k_vatom.template view<DeviceType>();
   fn.nlocal = atom->nlocal;
   fn.newton_pair = force->newton_pair;
-  fn.overlap = overlap;
-  fn.damping_mass = damping_mass;
   fn.tally = {atom->nlocal, force->newton_pair, eflag_global, eflag_atom, vflag_global,
               vflag_atom};
   fn.dt = update->dt;
-  fn.overlap_warn = overlap_warn;
 
   EllReduce red;
   Kokkos::parallel_reduce(

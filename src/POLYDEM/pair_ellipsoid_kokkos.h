@@ -36,8 +36,9 @@ template <class DeviceType> class PairEllipsoidKokkos : public PairEllipsoid {
   class AtomVecPolyhedronKokkos *avecKK;
   int shape_version;
   Kokkos::View<double *[3], DeviceType> d_axes;    // semi-axes per template (unit scale)
-  Kokkos::View<double **, DeviceType> d_kn, d_mu;   // per type pair
-  Kokkos::View<polydem::DampingLaw<double> **, DeviceType> d_damp;
+  // the law table's entries on the device, and the table pointing there
+  Kokkos::View<polydem::LawEntry<double> *, DeviceType> d_laws;
+  polydem::LawTable<double> d_laws_table;
   // friction: partner counts for the history fix (polydem_history_kokkos.h)
   Kokkos::View<int *, DeviceType> d_npartner;    // list entries per local atom
   int params_dirty;

@@ -21,13 +21,13 @@
 #include "update.h"
 
 #include "compute.h"
-#include "polydem_parse.h"
-#include "polydem_contact_law.h"
-#include "polydem_lammps_compat.h"
+#include "polydem_contact_pipeline.h"
+#include "polydem_contact_record.h"
 #include "polydem_damping.h"
 #include "polydem_history.h"
-#include "polydem_contact_record.h"
+#include "polydem_lammps_compat.h"
 #include "polydem_overlap.h"
+#include "polydem_parse.h"
 #include "polydem_shape_template.h"
 
 #include <cmath>
@@ -37,6 +37,13 @@ using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
 static constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // s, k_t, twist (polydem_contact_law.h)
+static_assert(int(PairPolyhedron::CNT_OVERFLOW) == int(polydem::PP_OVERFLOW) &&
+                  int(PairPolyhedron::CNT_DEGENERATE) == int(polydem::PP_DEGENERATE) &&
+                  int(PairPolyhedron::CNT_NOCONV) == int(polydem::PP_NOCONV) &&
+                  int(PairPolyhedron::CNT_BIGOVERLAP) == int(polydem::PP_BIGOVERLAP) &&
+                  int(PairPolyhedron::CNT_CONTACTS) == int(polydem::PP_CONTACTS) &&
+                  int(PairPolyhedron::NCOUNT) == int(polydem::PP_NCOUNT),
+              "counters in the order of the pipeline's");
 // first value of the restart settings since the history has 5 values (older
 // files begin with overlap/warn, which is > 0)
 static constexpr double RESTART_VERSION = -2.0;
@@ -102,7 +109,6 @@ void PairPolyhedron::allocate()
   memory->create(matset, n + 1, "pair:matset");
   memory->create(restitution, n + 1, n + 1, "pair:restitution");
   memory->create(friction, n + 1, n + 1, "pair:friction");
-  damping.assign((size_t) (n + 1) * (n + 1), polydem::damping_law(1.0, 0));
   memory->create(pairset, n + 1, n + 1, "pair:pairset");
   for (int i = 0; i <= n; i++) {
     youngs[i] = poisson[i] = 0.0;
@@ -225,6 +231,14 @@ void PairPolyhedron::init_style()
 
   dt = update->dt;
 
+  // the law table: settings now, the type pairs' entries in init_one
+  const int nt = atom->ntypes + 1;
+  law_entries.assign((size_t) nt * nt, polydem::LawEntry<double>());
+  laws = polydem::law_table(law_entries.data(), atom->ntypes, nt * nt);
+  laws.core = core;
+  laws.twist = twist;
+  laws.overlap_warn = overlap_warn;
+
   if (fix_history == nullptr) {
     fix_history = polydem_history::create_history_fix(
         modify, "NEIGH_HISTORY_POLY" + std::to_string(history_id),
@@ -256,9 +270,21 @@ double PairPolyhedron::init_one(int i, int j)
   }
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
-  // closed form (polydem_damping.h), once per type pair
+  // the law table's entries of the pair, damping in closed form (polydem_damping.h)
   const int nt = atom->ntypes + 1;
-  damping[i * nt + j] = damping[j * nt + i] = polydem::damping_law(restitution[i][j], 1);
+  const auto damp = polydem::damping_law(restitution[i][j], 1);
+  auto fill = [&](int a, int b) {
+    auto &e = law_entries[a * nt + b];
+    e.E1 = youngs[a];
+    e.nu1 = poisson[a];
+    e.E2 = youngs[b];
+    e.nu2 = poisson[b];
+    e.kn = 0.0;
+    e.mu = friction[i][j];
+    e.damping = damp;
+  };
+  fill(i, j);
+  fill(j, i);
 
   // particles present, and those an insertion fix may add later
   double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
@@ -325,10 +351,9 @@ void PairPolyhedron::compute(int eflag, int vflag)
   const bool shearupdate = !update->setupflag;
   dt = update->dt;
 
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  double **omega = atom->omega, **torque = atom->torque, **quat = atom->quat;
-  double *radius = atom->radius, *rmass = atom->rmass, *pscale = atom->pscale;
-  int *pshape = atom->pshape, *type = atom->type;
+  double **x = atom->x, **f = atom->f, **torque = atom->torque;
+  double *radius = atom->radius;
+  int *pshape = atom->pshape;
   const int nlocal = atom->nlocal;
   const int newton_pair = force->newton_pair;
 
@@ -341,6 +366,8 @@ void PairPolyhedron::compute(int eflag, int vflag)
   int **firsttouch = fix_history->firstflag;
   double **firstshear = fix_history->firstvalue;
 
+  const auto atoms = polydem::host_atoms(atom);
+
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     int *touch = firsttouch[i];
@@ -348,11 +375,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
     int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
     const auto vi = avec->shape(pshape[i]).view();
-    polydem::Pose<double> pi;
-    pi.x = polydem::make_vec3(x[i][0], x[i][1], x[i][2]);
-    pi.q = polydem::make_quat(quat[i][0], quat[i][1], quat[i][2], quat[i][3]);
-    pi.s = pscale[i];
-    const auto A = polydem::make_posed(vi, pi);
+    const auto A = polydem::gather_polyhedron_body(atoms, i, vi);
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
@@ -360,65 +383,25 @@ void PairPolyhedron::compute(int eflag, int vflag)
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1],
                    delz = x[i][2] - x[j][2];
       const double radsum = radius[i] + radius[j];
-      const double rsq = delx * delx + dely * dely + delz * delz;
-      auto no_contact = [&]() {
+      if (delx * delx + dely * dely + delz * delz >= radsum * radsum) {
         touch[jj] = 0;
-        for (int k = 0; k < SIZE_HISTORY; k++) shear[k] = 0.0;
-      };
-      if (rsq >= radsum * radsum) {
-        no_contact();
+        polydem::history_release(shear, SIZE_HISTORY);
         continue;
       }
       const auto vj = avec->shape(pshape[j]).view();
-      polydem::Pose<double> pj;
-      pj.x = polydem::make_vec3(x[j][0], x[j][1], x[j][2]);
-      pj.q = polydem::make_quat(quat[j][0], quat[j][1], quat[j][2], quat[j][3]);
-      pj.s = pscale[j];
-      const auto B = polydem::make_posed(vj, pj);
-
-      const auto g = polydem::gjk_intersect(A, B);
-      if (g.status == polydem::STATUS_SEPARATED) {
-        no_contact();
-        continue;
-      }
-      if (g.status != polydem::STATUS_OK) local_counts[CNT_NOCONV] += 1.0;
-      const auto ov = polydem::polyhedron_overlap(A, B, *ws);
-      if (ov.status != polydem::STATUS_OK) {
-        if (ov.status == polydem::STATUS_OVERFLOW) local_counts[CNT_OVERFLOW] += 1.0;
-        else if (ov.status == polydem::STATUS_DEGENERATE) local_counts[CNT_DEGENERATE] += 1.0;
-        no_contact();
-        continue;
-      }
-      touch[jj] = 1;
-      local_counts[CNT_CONTACTS] += 1.0;
-      const double si = pscale[i], sj = pscale[j];
-      const double Vi = vi.volume * si * si * si, Vj = vj.volume * sj * sj * sj;
-      if (ov.volume > overlap_warn * MIN(Vi, Vj)) local_counts[CNT_BIGOVERLAP] += 1.0;
-
-      // material, Eqs. 13, 19, 20
-      const int itype = type[i], jtype = type[j];
-      const auto law = polydem::feng_law(youngs[itype], poisson[itype], Vi, youngs[jtype],
-                                         poisson[jtype], Vj,
-                                         damping[itype * (atom->ntypes + 1) + jtype],
-                                         friction[itype][jtype], core, twist);
-      const auto kin = polydem::make_kinematics(
-          pi.x, pj.x, polydem::make_vec3(v[i][0], v[i][1], v[i][2]),
-          polydem::make_vec3(v[j][0], v[j][1], v[j][2]),
-          polydem::make_vec3(omega[i][0], omega[i][1], omega[i][2]),
-          polydem::make_vec3(omega[j][0], omega[j][1], omega[j][2]),
-          rmass[i] * rmass[j] / (rmass[i] + rmass[j]), shearupdate ? dt : 0.0);
-      const auto geo = polydem::contact_geometry<double>(ov);
-      const auto cf = polydem::pair_contact_step(geo, law, kin, shear, SIZE_HISTORY,
-                                                 polydem::contact_history_sign(tag[i], tag[j]),
-                                                 shearupdate);
-      polydem::scatter_contact_host(f, torque, i, j, newton_pair || j < nlocal, cf);
+      const auto B = polydem::gather_polyhedron_body(atoms, j, vj);
+      const auto c =
+          polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate, shear, *ws, local_counts);
+      touch[jj] = c.contact;
+      if (!c.contact) continue;
+      polydem::scatter_contact_host(f, torque, i, j, newton_pair || j < nlocal, c.cf);
       if (evflag)
-        ev_tally_xyz(i, j, nlocal, newton_pair, cf.energy, 0.0, cf.F_A.x, cf.F_A.y, cf.F_A.z,
-                     delx, dely, delz);
+        ev_tally_xyz(i, j, nlocal, newton_pair, c.cf.energy, 0.0, c.cf.F_A.x, c.cf.F_A.y,
+                     c.cf.F_A.z, delx, dely, delz);
       if (store && polydem::contact_owned(newton_pair, j < nlocal, tag[i], tag[j], x[i], x[j])) {
         contact_data.resize(contact_data.size() + polydem::CR_NFIELD);
         polydem::fill_contact_record(&contact_data[contact_data.size() - polydem::CR_NFIELD],
-                                     tag[i], tag[j], mask[i], mask[j], MIN(Vi, Vj), geo, cf);
+                                     tag[i], tag[j], mask[i], mask[j], c.vmin, c.geo, c.cf);
       }
     }
   }

@@ -17,7 +17,7 @@ PairStyle(polyhedron,PairPolyhedron);
 
 #include "pair.h"
 #include "polydem_lammps_compat.h"
-#include "polydem_contact_law.h"
+#include "polydem_law_table.h"
 
 #include <memory>
 #include <vector>
@@ -44,7 +44,8 @@ class PairPolyhedron : public Pair {
   void *extract(const char *, int &) override;
   double memory_usage() override;
 
-  // counters since the start of the run (global after report_counters)
+  // counters since the start of the run (global after report_counters);
+  // the order of polydem::PolyhedronPairCount (polydem_contact_pipeline.h)
   enum { CNT_OVERFLOW, CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, NCOUNT };
   double counters[NCOUNT];
 
@@ -60,9 +61,10 @@ class PairPolyhedron : public Pair {
   double *youngs, *poisson;    // per type
   int *matset;                 // per type: material given
   double **restitution, **friction;
-  // damping law of each type pair (damping_law(restitution)), set in init_one;
-  // index i * (ntypes + 1) + j
-  std::vector<polydem::DampingLaw<double>> damping;
+  // the law table (polydem_law_table.h) of the contacts: settings from
+  // init_style, each type pair's entry from init_one (mixed coefficients)
+  std::vector<polydem::LawEntry<double>> law_entries;
+  polydem::LawTable<double> laws;
   int twist;                   // torsional friction of the contact area (polydem_contact_law.h)
   int **pairset;               // explicit e, mu for an unlike pair
   double overlap_warn;         // warn for V > overlap_warn * smaller particle volume

@@ -20,13 +20,12 @@
 #include "neighbor.h"
 #include "update.h"
 
-#include "polydem_contact_law.h"
-#include "polydem_damping.h"
+#include "polydem_contact_pipeline.h"
 #include "polydem_contact_record.h"
 #include "polydem_history_kokkos.h"
-#include "polydem_tally_kokkos.h"
-#include "polydem_overlap.h"
+#include "polydem_law_table_kokkos.h"
 #include "polydem_shape_template.h"
+#include "polydem_tally_kokkos.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,9 +114,10 @@ template <class DeviceType> struct PolyScanFunctor {
 typedef polydem_kk::PairReduce<PairPolyhedron::NCOUNT> PolyReduce;
 
 /* ----------------------------------------------------------------------
-   step 3: one thread per candidate pair; the statements of
-   PairPolyhedron::compute for one (i, jj), with the workspace of slot
-   p - first and atomic accumulation (i and j are shared between threads)
+   step 3: one thread per candidate pair: gather the two bodies, the
+   pipeline's polyhedron_pair_contact (as the plain style) with the
+   workspace of slot p - first, scatter with atomics (i and j are shared
+   between threads)
 ------------------------------------------------------------------------- */
 
 template <class DeviceType, int MF> struct PolyContactFunctor {
@@ -129,7 +129,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   typename AT::t_x_array_randomread x;
   typename AT::t_v_array_randomread v, omega;
   typename AT::t_f_array f, torque;
-  typename AT::t_float_1d_randomread radius, rmass, pscale;
+  typename AT::t_float_1d_randomread rmass, pscale;
   typename AT::t_int_1d_randomread type, pshape;
   typename AT::t_tagint_1d_randomread tag;
   typename AT::t_int_1d_randomread mask;
@@ -139,9 +139,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   typename AT::t_float_2d firstshear;
   Kokkos::View<int *[2], DeviceType> pairs;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
-  Kokkos::View<double *, DeviceType> youngs, poisson;
-  Kokkos::View<polydem::DampingLaw<double> **, DeviceType> damp;
-  Kokkos::View<double **, DeviceType> mu;
+  polydem::LawTable<double> laws;    // entries on the device
   Kokkos::View<char *, DeviceType> workspace;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
@@ -149,84 +147,35 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
   Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> records;
   int store_contacts;
   int first;    // pair index of slot 0
-  int nlocal, newton_pair, shearupdate, twist;
+  int nlocal, newton_pair, shearupdate;
   polydem_kk::TallyFlags tally;
-  double dt, overlap_warn, core;
-
-  KOKKOS_INLINE_FUNCTION void no_contact(int i, int jj) const
-  {
-    firsttouch(i, jj) = 0;
-    for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = 0.0;
-  }
+  double dt;
 
   KOKKOS_INLINE_FUNCTION void operator()(const int p, PolyReduce &red) const
   {
     const int i = pairs(p, 0), jj = pairs(p, 1);
     const int j = neighbors(i, jj) & NEIGHMASK;
     Workspace &ws = reinterpret_cast<Workspace *>(workspace.data())[p - first];
-
     const polydem::ShapeView<double> vi = shapes(pshape(i)), vj = shapes(pshape(j));
-    polydem::Pose<double> pi, pj;
-    pi.x = polydem::make_vec3(x(i, 0), x(i, 1), x(i, 2));
-    pi.q = polydem::make_quat(quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3));
-    pi.s = pscale(i);
-    pj.x = polydem::make_vec3(x(j, 0), x(j, 1), x(j, 2));
-    pj.q = polydem::make_quat(quat(j, 0), quat(j, 1), quat(j, 2), quat(j, 3));
-    pj.s = pscale(j);
-    const auto A = polydem::make_posed(vi, pi);
-    const auto B = polydem::make_posed(vj, pj);
-
-    const auto g = polydem::gjk_intersect(A, B);
-    if (g.status == polydem::STATUS_SEPARATED) {
-      no_contact(i, jj);
-      return;
-    }
-    if (g.status != polydem::STATUS_OK) red.cnt[PairPolyhedron::CNT_NOCONV] += 1.0;
-    const auto ov = polydem::polyhedron_overlap(A, B, ws);
-    if (ov.status != polydem::STATUS_OK) {
-      if (ov.status == polydem::STATUS_OVERFLOW)
-        red.cnt[PairPolyhedron::CNT_OVERFLOW] += 1.0;
-      else if (ov.status == polydem::STATUS_DEGENERATE)
-        red.cnt[PairPolyhedron::CNT_DEGENERATE] += 1.0;
-      no_contact(i, jj);
-      return;
-    }
-    firsttouch(i, jj) = 1;
-    red.cnt[PairPolyhedron::CNT_CONTACTS] += 1.0;
-    const double si = pi.s, sj = pj.s;
-    const double Vi = vi.volume * si * si * si, Vj = vj.volume * sj * sj * sj;
-    if (ov.volume > overlap_warn * (Vi < Vj ? Vi : Vj))
-      red.cnt[PairPolyhedron::CNT_BIGOVERLAP] += 1.0;
-
-    // material, Eqs. 13, 19, 20: the plain style's law (damping per type
-    // pair from the host's damping_law)
-    const int itype = type(i), jtype = type(j);
-    const auto law = polydem::feng_law(youngs(itype), poisson(itype), Vi, youngs(jtype),
-                                       poisson(jtype), Vj, damp(itype, jtype), mu(itype, jtype),
-                                       core, twist);
-    const auto kin = polydem::make_kinematics(
-        pi.x, pj.x, polydem::make_vec3(v(i, 0), v(i, 1), v(i, 2)),
-        polydem::make_vec3(v(j, 0), v(j, 1), v(j, 2)),
-        polydem::make_vec3(omega(i, 0), omega(i, 1), omega(i, 2)),
-        polydem::make_vec3(omega(j, 0), omega(j, 1), omega(j, 2)),
-        rmass(i) * rmass(j) / (rmass(i) + rmass(j)), shearupdate ? dt : 0.0);
-    const auto geo = polydem::contact_geometry<double>(ov);
+    const auto A = polydem::gather_polyhedron_body(*this, i, vi);
+    const auto B = polydem::gather_polyhedron_body(*this, j, vj);
     // the history is that of the lower-tag atom (polydem_contact_law.h);
     // FixNeighHistoryKokkos copies it to the partner unchanged
-    const auto cf = polydem::pair_contact_step(geo, law, kin, &firstshear(i, SIZE_HISTORY * jj),
-                                               SIZE_HISTORY,
-                                               polydem::contact_history_sign(tag(i), tag(j)),
-                                               shearupdate != 0);
-    polydem_kk::scatter_contact(f, torque, i, j, newton_pair || j < nlocal, cf);
+    const auto c = polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate != 0,
+                                                    &firstshear(i, SIZE_HISTORY * jj), ws, red.cnt);
+    firsttouch(i, jj) = c.contact;
+    if (!c.contact) return;
+    polydem_kk::scatter_contact(f, torque, i, j, newton_pair || j < nlocal, c.cf);
+    const polydem::Vec3<double> &xi = A.shape.x, &xj = B.shape.x;
     if (store_contacts) {
-      const double xi[3] = {pi.x.x, pi.x.y, pi.x.z}, xj[3] = {pj.x.x, pj.x.y, pj.x.z};
-      if (polydem::contact_owned(newton_pair, j < nlocal, tag(i), tag(j), xi, xj))
-        polydem::fill_contact_record(&records(p, 0), tag(i), tag(j), mask(i), mask(j),
-                                     Vi < Vj ? Vi : Vj, geo, cf);
+      const double pi[3] = {xi.x, xi.y, xi.z}, pj[3] = {xj.x, xj.y, xj.z};
+      if (polydem::contact_owned(newton_pair, j < nlocal, tag(i), tag(j), pi, pj))
+        polydem::fill_contact_record(&records(p, 0), tag(i), tag(j), mask(i), mask(j), c.vmin,
+                                     c.geo, c.cf);
     }
-    const double F[3] = {cf.F_A.x, cf.F_A.y, cf.F_A.z};
-    polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, cf.energy, F, pi.x.x - pj.x.x,
-                             pi.x.y - pj.x.y, pi.x.z - pj.x.z);
+    const double F[3] = {c.cf.F_A.x, c.cf.F_A.y, c.cf.F_A.z};
+    polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, c.cf.energy, F, xi.x - xj.x,
+                             xi.y - xj.y, xi.z - xj.z);
   }
 };
 
@@ -395,34 +344,13 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
 }
 
 /* ----------------------------------------------------------------------
-   per-type material after init_one has mixed the unlike pairs
+   the law table (init_style, init_one) on the device
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_params()
 {
   if (!params_dirty) return;
-  const int n = atom->ntypes;
-  d_youngs = Kokkos::View<double *, DeviceType>("polyhedron/kk:youngs", n + 1);
-  d_poisson = Kokkos::View<double *, DeviceType>("polyhedron/kk:poisson", n + 1);
-  d_damp = Kokkos::View<polydem::DampingLaw<double> **, DeviceType>("polyhedron/kk:damp", n + 1,
-                                                                    n + 1);
-  d_mu = Kokkos::View<double **, DeviceType>("polyhedron/kk:mu", n + 1, n + 1);
-  auto h_youngs = Kokkos::create_mirror_view(d_youngs);
-  auto h_poisson = Kokkos::create_mirror_view(d_poisson);
-  auto h_damp = Kokkos::create_mirror_view(d_damp);
-  auto h_mu = Kokkos::create_mirror_view(d_mu);
-  for (int i = 1; i <= n; i++) {
-    h_youngs(i) = youngs[i];
-    h_poisson(i) = poisson[i];
-    for (int j = 1; j <= n; j++) {
-      h_damp(i, j) = damping[i * (n + 1) + j];
-      h_mu(i, j) = friction[i][j];
-    }
-  }
-  Kokkos::deep_copy(d_youngs, h_youngs);
-  Kokkos::deep_copy(d_poisson, h_poisson);
-  Kokkos::deep_copy(d_damp, h_damp);
-  Kokkos::deep_copy(d_mu, h_mu);
+  d_laws_table = polydem_kk::mirror_law_table<DeviceType>(laws, d_laws);
   params_dirty = 0;
 }
 
@@ -526,7 +454,6 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.omega = atomKK->k_omega.view<DeviceType>();
   fn.f = atomKK->k_f.view<DeviceType>();
   fn.torque = atomKK->k_torque.view<DeviceType>();
-  fn.radius = atomKK->k_radius.view<DeviceType>();
   fn.rmass = atomKK->k_rmass.view<DeviceType>();
   fn.pscale = avecKK->k_pscale.view<DeviceType>();
   fn.type = atomKK->k_type.view<DeviceType>();
@@ -539,22 +466,16 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.firstshear = fix_historyKK->k_firstvalue.template view<DeviceType>();
   fn.pairs = d_pairs;
   fn.shapes = d_shapes;
-  fn.youngs = d_youngs;
-  fn.poisson = d_poisson;
-  fn.damp = d_damp;
-  fn.mu = d_mu;
+  fn.laws = d_laws_table;
   fn.workspace = d_workspace;
   if (eflag_atom) fn.eatom = k_eatom.template view<DeviceType>();
   if (vflag_atom) fn.vatom = k_vatom.template view<DeviceType>();
   fn.nlocal = atom->nlocal;
   fn.newton_pair = force->newton_pair;
   fn.shearupdate = update->setupflag ? 0 : 1;
-  fn.twist = twist;
   fn.tally = {atom->nlocal, force->newton_pair, eflag_global, eflag_atom, vflag_global,
               vflag_atom};
   fn.dt = update->dt;
-  fn.overlap_warn = overlap_warn;
-  fn.core = core;
   fn.store_contacts = store_contacts;
   if (store_contacts) {
     if ((int) d_records.extent(0) < npairs)

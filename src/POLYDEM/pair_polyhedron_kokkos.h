@@ -64,11 +64,10 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges, d_sdual;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
 
-  // per type / type pair: E, nu; damping law, friction
+  // the law table's entries on the device, and the table pointing there
   int params_dirty;
-  Kokkos::View<double *, DeviceType> d_youngs, d_poisson;
-  Kokkos::View<polydem::DampingLaw<double> **, DeviceType> d_damp;
-  Kokkos::View<double **, DeviceType> d_mu;
+  Kokkos::View<polydem::LawEntry<double> *, DeviceType> d_laws;
+  polydem::LawTable<double> d_laws_table;
 
   // contact-pair array: candidates per list entry, their exclusive prefix
   // sum, and (i, jj) per candidate

@@ -131,7 +131,7 @@ template <typename T> POLYDEM_FN WallForce<T> wall_force_zero()
 // the old slot whose key normal (C.key) is closest within the patch angle
 // (else a fresh spring); unmatched slots are cleared. Each slot keeps that
 // normal and its plane's distance from the centroid (WallSides). law: the particle's wall law
-// (wall_law, or ellipsoid_law); m its mass, Iinv its inverse principal
+// (wall_law of polydem_law_table.h, or ellipsoid_law); m its mass, Iinv its inverse principal
 // moments, R its rotation (body -> frame of the contact normals, for the
 // contact point's mass); dt the time step (0: no history increment, setup).
 template <typename T>
@@ -207,17 +207,6 @@ POLYDEM_FN WallForce<T> wall_forces(const WallPatches<T> &P, const MeshPose<T> &
 {
   return wall_contact_forces(wall_patch_contacts(P, mp), mp, law, m, Iinv, R, cosmax, x, v, w, dt,
                              hist, update);
-}
-
-// Wall law of a particle (volume V, material E, nu) on the wall (wE, wnu):
-// the wall is a half-space sized like the particle (R_w = R_p) and of
-// infinite mass; damping of restitution e at the contact's exponent
-// (damping_law(e, 1) on the host).
-template <typename T>
-POLYDEM_FN ContactLaw<T> wall_law(T E, T nu, T wE, T wnu, T V, const DampingLaw<T> &d, T mu,
-                                  T core, int twist)
-{
-  return feng_law(E, nu, V, wE, wnu, V, d, mu, core, twist);
 }
 
 // Torque on the mesh about its axis point o + d balancing the particle's

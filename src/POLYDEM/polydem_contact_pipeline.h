@@ -1,0 +1,371 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   POLYDEM - the per-contact pipeline: one entry point per contact kind,
+   called alike by the plain and the /kk loop of its style, which only
+   gather the two bodies, call, and scatter/tally what comes back.
+   No LAMMPS includes; host and device (no allocation, no virtual calls,
+   bounded loops).
+
+     polyhedron_pair_contact  pair polyhedron:  GJK -> overlap polyhedron
+                              (polydem_overlap.h) -> Feng law
+     ellipsoid_pair_contact   pair ellipsoid:   characteristic quartic and
+                              contact point (polydem_ellipsoid_force.h) ->
+                              linear law
+     wall_body_contact        fix wall/mesh:    a polyhedron's clipped patches
+                              (polydem_wall_contact.h) or an ellipsoid's
+                              (polydem_wall_ellipsoid.h) -> the type's wall law
+
+   Each runs pose -> geometry -> counters -> law (from the LawTable) ->
+   kinematics -> contact_step (polydem_contact_law.h) on the contact's
+   history slot, and returns the force, torques and energy; its kernel
+   counters are added to the caller's array (indices PP_*, EP_*; the wall's
+   are in WallPatches and WallWarnings). A new contact kind (mixed
+   polyhedron-ellipsoid, composites) is one more entry point here.
+
+   The law of each contact comes from the style's LawTable (polydem_law_table.h).
+------------------------------------------------------------------------- */
+
+#ifndef POLYDEM_CONTACT_PIPELINE_H
+#define POLYDEM_CONTACT_PIPELINE_H
+
+#include "polydem_law_table.h"
+#include "polydem_overlap.h"
+#include "polydem_wall_contact.h"
+#include "polydem_wall_ellipsoid.h"
+
+#include <type_traits>
+
+namespace polydem {
+
+// ---------------------------------------------------------------------------
+// gathering a body from per-atom arrays: `atoms` has x, quat, v, omega
+// (atoms.x(k, d)) and pscale, rmass, type, tag (atoms.rmass(k)): the Views
+// of a /kk functor, or HostAtoms over the host arrays of a LAMMPS Atom
+
+template <typename T> struct HostRows {
+  T *const *a;
+  T operator()(int k, int d) const { return a[k][d]; }
+};
+template <typename T> struct HostVals {
+  const T *a;
+  T operator()(int k) const { return a[k]; }
+};
+template <typename Tag> struct HostAtoms {
+  HostRows<double> x, quat, v, omega;
+  HostVals<double> pscale, rmass;
+  HostVals<int> type;
+  HostVals<Tag> tag;
+};
+template <class Atom> inline auto host_atoms(const Atom *atom)
+{
+  HostAtoms<std::remove_cv_t<std::remove_pointer_t<std::decay_t<decltype(atom->tag)>>>> a;
+  a.x.a = atom->x;
+  a.quat.a = atom->quat;
+  a.v.a = atom->v;
+  a.omega.a = atom->omega;
+  a.pscale.a = atom->pscale;
+  a.rmass.a = atom->rmass;
+  a.type.a = atom->type;
+  a.tag.a = atom->tag;
+  return a;
+}
+
+template <typename T, class Atoms> POLYDEM_FN Pose<T> gather_pose(const Atoms &atoms, int k)
+{
+  Pose<T> p;
+  p.x = make_vec3<T>(atoms.x(k, 0), atoms.x(k, 1), atoms.x(k, 2));
+  p.q = make_quat<T>(atoms.quat(k, 0), atoms.quat(k, 1), atoms.quat(k, 2), atoms.quat(k, 3));
+  p.s = atoms.pscale(k);
+  return p;
+}
+
+// what every body carries besides its shape and pose: velocity, spin (lab),
+// mass, type
+template <typename T> struct BodyMotion {
+  Vec3<T> v, w;
+  T m;
+  int type;
+};
+
+// velocity, spin, mass and type of atom k into a body
+template <typename T, class Atoms>
+POLYDEM_FN void gather_motion(const Atoms &atoms, int k, BodyMotion<T> &b)
+{
+  b.v = make_vec3<T>(atoms.v(k, 0), atoms.v(k, 1), atoms.v(k, 2));
+  b.w = make_vec3<T>(atoms.omega(k, 0), atoms.omega(k, 1), atoms.omega(k, 2));
+  b.m = atoms.rmass(k);
+  b.type = atoms.type(k);
+}
+
+// ---------------------------------------------------------------------------
+// pairs
+
+// what a pair entry point returns: contact = 0: none (the history slot was
+// cleared, nothing to scatter); else the geometry, the forces on A and B,
+// and the smaller body measure (polyhedra: volume, for contact records)
+template <typename T> struct PairContactResult {
+  int contact;
+  ContactGeometry<T> geo;
+  ContactForce<T> cf;
+  T vmin;
+};
+
+// no contact: the pair's history ends (hist may be null: none kept)
+template <typename T> POLYDEM_FN void history_release(T *hist, int n)
+{
+  if (hist)
+    for (int k = 0; k < n; ++k) hist[k] = T(0);
+}
+
+// A pair's body: the template at its pose (make_posed; the ShapeView it
+// points to outlives the body), its motion, its tag.
+template <typename T> struct PolyhedronBody : BodyMotion<T> {
+  PosedShape<T> shape;
+  long tag;
+};
+
+// pair polyhedron's counters (PairPolyhedron::CNT_*)
+enum PolyhedronPairCount : int {
+  PP_OVERFLOW,      // overlap workspace overflows (contact skipped)
+  PP_DEGENERATE,    // degenerate overlaps (contact skipped)
+  PP_NOCONV,        // GJK non-convergences (overlap computed anyway)
+  PP_BIGOVERLAP,    // V > overlap_warn x smaller volume
+  PP_CONTACTS,      // pair-steps in contact
+  PP_NCOUNT
+};
+
+// One polyhedron pair (A = the list's i): hist = its CONTACT_HIST values in
+// the pair convention (contact_history_sign), advanced and kept if update
+// (not at setup, where dt does not increment it); ws: the overlap workspace;
+// count[PP_*] incremented.
+template <typename T, int MF, typename C>
+POLYDEM_FN PairContactResult<T>
+polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                        const LawTable<T> &tab, T dt, bool update, T *hist,
+                        OverlapWorkspace<T, MF> &ws, C *count)
+{
+  PairContactResult<T> r;
+  r.contact = 0;
+  const auto g = gjk_intersect(A.shape, B.shape);
+  if (g.status == STATUS_SEPARATED) {
+    history_release(hist, CONTACT_HIST);
+    return r;
+  }
+  if (g.status != STATUS_OK) count[PP_NOCONV] += C(1);
+  const OverlapResult<T> ov = polyhedron_overlap(A.shape, B.shape, ws);
+  if (ov.status != STATUS_OK) {
+    if (ov.status == STATUS_OVERFLOW)
+      count[PP_OVERFLOW] += C(1);
+    else if (ov.status == STATUS_DEGENERATE)
+      count[PP_DEGENERATE] += C(1);
+    history_release(hist, CONTACT_HIST);
+    return r;
+  }
+  r.contact = 1;
+  count[PP_CONTACTS] += C(1);
+  const T si = A.shape.s, sj = B.shape.s;
+  const T Vi = A.shape.view->volume * si * si * si, Vj = B.shape.view->volume * sj * sj * sj;
+  r.vmin = Vi < Vj ? Vi : Vj;
+  if (ov.volume > tab.overlap_warn * r.vmin) count[PP_BIGOVERLAP] += C(1);
+
+  const ContactLaw<T> law = polyhedron_pair_law(tab, A.type, B.type, Vi, Vj);
+  const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
+                                                   A.m * B.m / (A.m + B.m), update ? dt : T(0));
+  r.geo = contact_geometry<T>(ov);
+  r.cf = pair_contact_step(r.geo, law, kin, hist, CONTACT_HIST,
+                           T(contact_history_sign(A.tag, B.tag)), update);
+  return r;
+}
+
+// atom k with its template's view (which outlives the body)
+template <typename T, class Atoms>
+POLYDEM_FN PolyhedronBody<T> gather_polyhedron_body(const Atoms &atoms, int k,
+                                                    const ShapeView<T> &view)
+{
+  PolyhedronBody<T> b;
+  b.shape = make_posed(view, gather_pose<T>(atoms, k));
+  gather_motion<T>(atoms, k, b);
+  b.tag = atoms.tag(k);
+  return b;
+}
+
+// An ellipsoid pair's body: pose with scaled semi-axes, its motion, its tag.
+template <typename T> struct EllipsoidBody : BodyMotion<T> {
+  EllipsoidPose<T> pose;
+  long tag;
+};
+
+// atom k with its template's semi-axes at unit scale
+template <typename T, class Atoms>
+POLYDEM_FN EllipsoidBody<T> gather_ellipsoid_body(const Atoms &atoms, int k, const Vec3<T> &axes)
+{
+  EllipsoidBody<T> b;
+  const Pose<T> p = gather_pose<T>(atoms, k);
+  b.pose.x = p.x;
+  b.pose.q = p.q;
+  b.pose.axes = make_vec3(p.s * axes.x, p.s * axes.y, p.s * axes.z);
+  gather_motion<T>(atoms, k, b);
+  b.tag = atoms.tag(k);
+  return b;
+}
+
+constexpr int ELLIPSOID_HIST = 3;    // tangential displacement s (polydem_contact_law.h)
+
+// pair ellipsoid's counters (PairEllipsoid::CNT_*)
+enum EllipsoidPairCount : int {
+  EP_DEGENERATE,    // coincident centres or NaN (skipped)
+  EP_NOCONV,        // contact search without convergence (skipped)
+  EP_BIGOVERLAP,    // delta > overlap_warn x smallest semi-axis
+  EP_CONTACTS,      // pair-steps in contact (x share)
+  EP_COLLISIONS,    // contacts in their first step, delta < (d delta/dt) dt (x share)
+  EP_NCOUNT
+};
+
+// One ellipsoid pair: hist = its ELLIPSOID_HIST values in the pair
+// convention, or null (frictionless: none kept); share: the part of the pair
+// this call counts in the contact statistics (1/2 for a pair seen on two
+// ranks); count[EP_*] incremented.
+template <typename T, typename C>
+POLYDEM_FN PairContactResult<T>
+ellipsoid_pair_contact(const EllipsoidBody<T> &A, const EllipsoidBody<T> &B, const LawTable<T> &tab,
+                       T dt, bool update, T *hist, C share, C *count)
+{
+  PairContactResult<T> r;
+  r.contact = 0;
+  const EllipsoidContact<T> c = ellipsoid_contact(A.pose, B.pose);
+  if (c.status != STATUS_OK) {
+    if (c.status != STATUS_SEPARATED)
+      count[c.status == STATUS_NO_CONVERGENCE ? EP_NOCONV : EP_DEGENERATE] += C(1);
+    history_release(hist, ELLIPSOID_HIST);
+    return r;
+  }
+  r.contact = 1;
+  count[EP_CONTACTS] += share;
+  T amin = A.pose.axes.x;
+  const T ax[5] = {A.pose.axes.y, A.pose.axes.z, B.pose.axes.x, B.pose.axes.y, B.pose.axes.z};
+  for (int k = 0; k < 5; ++k)
+    if (ax[k] < amin) amin = ax[k];
+  r.vmin = amin;
+  const ContactKinematics<T> kin =
+      make_kinematics(A.pose.x, B.pose.x, A.v, B.v, A.w, B.w,
+                      tab.damping_mass == DAMPING_CONTACT
+                          ? ellipsoid_contact_mass(c, tab.overlap, A.pose, B.pose, A.m, B.m)
+                          : A.m * B.m / (A.m + B.m),
+                      update ? dt : T(0));
+  r.geo = ellipsoid_geometry(c, tab.overlap, A.pose.x, B.pose.x);
+  const ContactLaw<T> law = ellipsoid_pair_law(tab, A.type, B.type);
+  r.cf = pair_contact_step(r.geo, law, kin, hist, ELLIPSOID_HIST,
+                           T(contact_history_sign(A.tag, B.tag)), update);
+  if (r.geo.volume > tab.overlap_warn * amin) count[EP_BIGOVERLAP] += C(1);
+  if (r.geo.volume < r.cf.rate * dt) count[EP_COLLISIONS] += share;
+  return r;
+}
+
+// ---------------------------------------------------------------------------
+// particle - wall
+
+// A particle on a wall: its template (unit scale; volume, radius, inertia),
+// ellipsoid semi-axes at unit scale (all 0: a polyhedron), pose, motion.
+template <typename T> struct WallBody : BodyMotion<T> {
+  const ShapeView<T> *shape;
+  Vec3<T> axes;
+  Pose<T> pose;
+};
+
+// atom k with its template (unit scale) and the template's semi-axes (0: a polyhedron)
+template <typename T, class Atoms>
+POLYDEM_FN WallBody<T> gather_wall_body(const Atoms &atoms, int k, const ShapeView<T> *shape,
+                                        const Vec3<T> &axes)
+{
+  WallBody<T> b;
+  b.shape = shape;
+  b.axes = axes;
+  b.pose = gather_pose<T>(atoms, k);
+  gather_motion<T>(atoms, k, b);
+  return b;
+}
+
+// The mesh as every particle sees it this step: pose and grid, patch angle
+// (cosine), sides, warning thresholds (x bounding radius, x particle
+// volume), near-list skin (x bounding radius).
+template <typename T> struct WallScene {
+  MeshPose<T> mp;
+  MeshGridView<T> grid;
+  T cosmax;
+  int both;
+  T depth_warn, overlap_warn;
+  T near_skin;
+};
+
+// What a particle's wall contact returns: forces on it (and per patch),
+// energy, contacts; its warnings; near-list statistics.
+template <typename T> struct WallContactResult {
+  WallForce<T> wf;
+  WallWarnings<T> warn;
+  int near_built, near_overflow;
+};
+
+// One particle on the mesh: hist its WALL_HIST_SIZE values (updated if
+// update; dt counts only then); ws the clipping workspace (polyhedra), P the
+// patches (out: kernel counts), near its near list or null.
+template <typename T, int MF, int ME>
+POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const LawTable<T> &tab,
+                                                  const WallScene<T> &sc, T dt, bool update,
+                                                  T *hist, WallWorkspace<T, MF, ME> &ws,
+                                                  WallPatches<T> &P, WallNear<T> *near)
+{
+  WallContactResult<T> r;
+  const ShapeView<T> &sv = *b.shape;
+  const T s = b.pose.s;
+  const T V = sv.volume * s * s * s;
+  const T dts = update ? dt : T(0);
+  r.near_built = r.near_overflow = 0;
+  if (b.axes.x > T(0)) {    // an ellipsoid: the grid query (no near list, no workspace)
+    const Vec3<T> ax = make_vec3(s * b.axes.x, s * b.axes.y, s * b.axes.z);
+    r.wf = wall_ellipsoid_particle(ax, b.pose, sc.mp, sc.grid, wall_ellipsoid_law(tab, b.type), b.m,
+                                   dts, sc.cosmax, sc.both, b.v, b.w, hist, update, P);
+  } else {
+    if (near) {
+      near->skin = sc.near_skin * sv.radius * s;
+      near->built = 0;
+    }
+    r.wf = wall_particle(
+        sv, b.pose, sc.mp, sc.grid,
+        [&] {
+          return wall_polyhedron_law(tab, b.type, V);
+        },
+        b.m, dts, sc.cosmax, sc.both, b.v, b.w, hist, update, ws, P, near);
+    if (near) {
+      r.near_built = near->built;
+      r.near_overflow = near->built && *near->count == NEAR_OVERFLOW;
+    }
+  }
+  r.warn = wall_warnings(P, r.wf, V, sv.radius * s, b.m, sc.depth_warn, sc.overlap_warn);
+  return r;
+}
+
+// the particle's part of the call's sums (reaction on the mesh, counts)
+template <typename T>
+POLYDEM_FN void wall_tally_add(WallTally<T> &sum, const WallBody<T> &b,
+                               const WallContactResult<T> &r, const MeshPose<T> &mp,
+                               const WallPatches<T> &P)
+{
+  sum.add(b.pose.x, r.wf, mp, P, r.warn);
+  sum.near_builds += T(r.near_built);
+  sum.near_overflow += T(r.near_overflow);
+}
+
+// per-triangle forces (pertriangle yes) of the particle's patches to add(t, fx, fy, fz)
+template <typename T, int MF, int ME, typename F>
+POLYDEM_FN void wall_body_triangle_forces(const WallBody<T> &b, const WallWorkspace<T, MF, ME> &ws,
+                                          const WallPatches<T> &P, const WallContactResult<T> &r,
+                                          F &add)
+{
+  if (b.axes.x > T(0))
+    wall_ellipsoid_triangle_forces(P, r.wf, add);
+  else
+    wall_triangle_forces(ws, P, r.wf, add);
+}
+
+}    // namespace polydem
+
+#endif
