@@ -3,10 +3,7 @@
 polydem_lammps_test(test_contact_computes test_contact_computes.cpp)
 # the /kk cases skip themselves where LAMMPS has no KOKKOS package
 add_test(NAME lammps.contact_computes COMMAND test_contact_computes)
-add_test(NAME lammps.contact_computes_2_ranks
-  COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2
-          $<TARGET_FILE:test_contact_computes>)
-set_tests_properties(lammps.contact_computes_2_ranks PROPERTIES ENVIRONMENT "${_polydem_mpi_env}")
+polydem_mpi_test(lammps.contact_computes_2_ranks 2 test_contact_computes)
 if(POLYDEM_KOKKOS)
   polydem_kk_threads_test(lammps.contact_computes 5 test_contact_computes)
 endif()

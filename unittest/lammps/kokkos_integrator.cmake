@@ -6,10 +6,6 @@ if(POLYDEM_KOKKOS)
   add_test(NAME lammps.kokkos_vs_plain COMMAND test_kokkos_integrator)
   polydem_kk_threads_test(lammps.kokkos_vs_plain 3 test_kokkos_integrator)
   # /kk on 2 ranks: exchange and borders between ranks, against plain on 1 rank
-  add_test(NAME lammps.kokkos_2_ranks
-    COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2
-            $<TARGET_FILE:test_kokkos_integrator>
-            --gtest_filter=KokkosIntegrator.KokkosOnAllRanksMatchesPlainOnOne:CommModes/*)
-  set_tests_properties(lammps.kokkos_2_ranks PROPERTIES
-    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+  polydem_mpi_test(lammps.kokkos_2_ranks 2 test_kokkos_integrator
+    --gtest_filter=KokkosIntegrator.KokkosOnAllRanksMatchesPlainOnOne:CommModes/*)
 endif()

@@ -11,10 +11,6 @@ if(POLYDEM_KOKKOS)
   add_test(NAME lammps.pair_kokkos_vs_plain COMMAND test_pair_kokkos)
   polydem_kk_threads_test(lammps.pair_kokkos_vs_plain 4 test_pair_kokkos)
   # both instances on the same 2-rank decomposition (atoms migrate between ranks)
-  add_test(NAME lammps.pair_kokkos_2_ranks
-    COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2
-            $<TARGET_FILE:test_pair_kokkos>
-            --gtest_filter=PairKokkos.DensePackingMatchesPlain:PairKokkos.RestartKeepsContactHistory)
-  set_tests_properties(lammps.pair_kokkos_2_ranks PROPERTIES
-    ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMPI_MCA_rmaps_base_oversubscribe=1")
+  polydem_mpi_test(lammps.pair_kokkos_2_ranks 2 test_pair_kokkos
+    --gtest_filter=PairKokkos.DensePackingMatchesPlain:PairKokkos.RestartKeepsContactHistory)
 endif()

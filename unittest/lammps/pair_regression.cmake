@@ -6,10 +6,7 @@ target_compile_definitions(test_pair_regression PRIVATE
   POLYDEM_TEST_DIR="${CMAKE_CURRENT_SOURCE_DIR}")
 # the /kk cases skip themselves where LAMMPS has no KOKKOS package
 add_test(NAME lammps.pair_regression COMMAND test_pair_regression)
-add_test(NAME lammps.pair_regression_2_ranks
-  COMMAND ${MPIEXEC_EXECUTABLE} --oversubscribe ${MPIEXEC_NUMPROC_FLAG} 2
-          $<TARGET_FILE:test_pair_regression>)
-set_tests_properties(lammps.pair_regression_2_ranks PROPERTIES ENVIRONMENT "${_polydem_mpi_env}")
+polydem_mpi_test(lammps.pair_regression_2_ranks 2 test_pair_regression)
 if(POLYDEM_KOKKOS)
   polydem_kk_threads_test(lammps.pair_regression 5 test_pair_regression)
 endif()
