@@ -4,6 +4,7 @@
 // periodic and subdomain boundaries.
 // Run as: test_ellipsoid_kokkos (1 rank) or mpirun -np 2 test_ellipsoid_kokkos.
 
+#include "polydem_allgather.h"
 #include "polydem_lmp.h"
 
 #include "atom_kokkos.h"
@@ -78,22 +79,7 @@ std::vector<double> gather(Lmp &l, MPI_Comm comm)
     for (double **arr : {a->x, a->v, a->f, a->torque})
       for (int k = 0; k < 3; k++) mine.push_back(arr[i][k]);
   }
-  int np;
-  MPI_Comm_size(comm, &np);
-  int n = (int) mine.size();
-  std::vector<int> counts(np), displs(np);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int p = 0; p < np; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
-                 comm);
-  std::vector<std::vector<double>> recs;
-  for (int i = 0; i < total; i += REC) recs.emplace_back(all.begin() + i, all.begin() + i + REC);
-  std::sort(recs.begin(), recs.end());
-  std::vector<double> out;
-  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
-  return out;
+  return polydem_test::allgather_by_tag(mine, REC, comm);
 }
 
 // max over atoms of |a - b| / max over atoms |b|, field at offset off

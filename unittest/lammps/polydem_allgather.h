@@ -4,6 +4,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace polydem_test {
@@ -20,6 +21,21 @@ inline std::vector<double> allgather(const std::vector<double> &mine, MPI_Comm c
   MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE,
                  comm);
   return all;
+}
+
+// records of `width` values, the first an atom ID: every rank's, on every
+// rank, sorted by ID (so 1 and N ranks compare record by record)
+inline std::vector<double> allgather_by_tag(const std::vector<double> &mine, int width,
+                                            MPI_Comm comm = MPI_COMM_WORLD)
+{
+  const std::vector<double> all = allgather(mine, comm);
+  std::vector<std::vector<double>> recs;
+  for (size_t i = 0; i + width <= all.size(); i += width)
+    recs.emplace_back(all.begin() + i, all.begin() + i + width);
+  std::sort(recs.begin(), recs.end());
+  std::vector<double> out;
+  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
+  return out;
 }
 
 }    // namespace polydem_test

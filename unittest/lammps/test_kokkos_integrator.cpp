@@ -8,6 +8,7 @@
 // Also: restart and data-file round trips under /kk, and /kk on 2 ranks
 // against plain on 1 rank (run under mpirun -np 2).
 
+#include "polydem_allgather.h"
 #include "polydem_lmp.h"
 
 #include "domain.h"
@@ -105,22 +106,7 @@ std::vector<double> gather(Lmp &l, MPI_Comm comm)
     for (int k = 0; k < 3; k++) mine.push_back(a->angmom[i][k]);
     for (int k = 0; k < 3; k++) mine.push_back(a->omega[i][k]);
   }
-  int nprocs;
-  MPI_Comm_size(comm, &nprocs);
-  int n = (int) mine.size();
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  std::vector<std::vector<double>> recs;
-  for (int i = 0; i < total; i += REC) recs.emplace_back(all.begin() + i, all.begin() + i + REC);
-  std::sort(recs.begin(), recs.end());
-  std::vector<double> out;
-  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
-  return out;
+  return polydem_test::allgather_by_tag(mine, REC, comm);
 }
 
 struct Diff {
@@ -197,18 +183,9 @@ long check_ghosts(Lmp &l, bool ghost_vel, long *bad)
     mine.push_back(a->radius[i]);
     mine.push_back(a->rmass[i]);
   }
-  int nprocs;
-  MPI_Comm_size(l.lmp->world, &nprocs);
-  int n = (int) mine.size();
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, l.lmp->world);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, l.lmp->world);
+  const std::vector<double> all = polydem_test::allgather(mine, l.lmp->world);
   std::map<long, const double *> owner;
-  for (int i = 0; i < total; i += R) owner[(long) all[i]] = &all[i];
+  for (size_t i = 0; i < all.size(); i += R) owner[(long) all[i]] = &all[i];
 
   const double prd[3] = {l.lmp->domain->xprd, l.lmp->domain->yprd, l.lmp->domain->zprd};
   long checked = 0;

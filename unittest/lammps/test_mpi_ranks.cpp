@@ -2,6 +2,7 @@
 // cross subdomain and periodic boundaries follow identical trajectories on
 // 1 and on 2 ranks, and the particle count never changes (issue 2, item 3).
 
+#include "polydem_allgather.h"
 #include "polydem_lmp.h"
 
 #include "force.h"
@@ -77,24 +78,7 @@ std::vector<double> gather(Lmp &l, MPI_Comm comm)
     for (int k = 0; k < 4; k++) mine.push_back(kv.second.q[k]);
     for (int k = 0; k < 3; k++) mine.push_back(kv.second.L[k]);
   }
-  int nprocs;
-  MPI_Comm_size(comm, &nprocs);
-  int n = (int) mine.size();
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int p = 0; p < nprocs; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  // sort records by tag
-  const int rec = 11;
-  std::vector<std::vector<double>> recs;
-  for (int i = 0; i < total; i += rec) recs.emplace_back(all.begin() + i, all.begin() + i + rec);
-  std::sort(recs.begin(), recs.end());
-  std::vector<double> out;
-  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
-  return out;
+  return polydem_test::allgather_by_tag(mine, 11, comm);
 }
 
 }    // namespace

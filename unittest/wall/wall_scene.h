@@ -4,6 +4,7 @@
 #ifndef POLYDEM_TEST_WALL_SCENE_H
 #define POLYDEM_TEST_WALL_SCENE_H
 
+#include "polydem_allgather.h"
 #include "polydem_lmp.h"
 #include "wall_meshes.h"
 
@@ -99,22 +100,7 @@ inline std::vector<double> gathered_state(polydem_test::Lmp &l, MPI_Comm comm)
     for (int k = 0; k < 3; k++) mine.push_back(kv.second.x[k]);
     for (int k = 0; k < 3; k++) mine.push_back(kv.second.v[k]);
   }
-  int np;
-  MPI_Comm_size(comm, &np);
-  int n = (int) mine.size();
-  std::vector<int> counts(np), displs(np);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int total = 0;
-  for (int p = 0; p < np; p++) displs[p] = total, total += counts[p];
-  std::vector<double> all(total);
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  std::vector<std::vector<double>> recs;
-  for (int i = 0; i < total; i += 7) recs.emplace_back(all.begin() + i, all.begin() + i + 7);
-  std::sort(recs.begin(), recs.end());
-  std::vector<double> out;
-  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
-  return out;
+  return polydem_test::allgather_by_tag(mine, 7, comm);
 }
 
 }    // namespace wall_test
