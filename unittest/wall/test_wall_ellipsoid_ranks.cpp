@@ -75,13 +75,7 @@ TEST(WallEllipsoidRanks, OneVsTwoRanks)
     if (me == 0) {
       const Result single = run(self, data, stl, args);
       ASSERT_EQ(single.state.size(), multi.state.size());
-      double dx = 0.0, dv = 0.0;
-      for (size_t i = 0; i < single.state.size(); i += 7) {
-        for (int k = 1; k <= 3; k++)
-          dx = std::fmax(dx, std::fabs(single.state[i + k] - multi.state[i + k]));
-        for (int k = 4; k <= 6; k++)
-          dv = std::fmax(dv, std::fabs(single.state[i + k] - multi.state[i + k]));
-      }
+      const auto [dx, dv] = state_diff(single.state, multi.state);
       std::printf("[ ell wall ] %d ranks vs 1%s: max |dx| = %.3g m, max |dv| = %.3g m/s, mesh "
                   "force z %.6g vs %.6g N, %g contacts seen\n",
                   np, args.c_str(), dx, dv, multi.fmesh[2], single.fmesh[2], multi.contacts);

@@ -11,6 +11,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <random>
 #include <string>
@@ -101,6 +102,20 @@ inline std::vector<double> gathered_state(polydem_test::Lmp &l, MPI_Comm comm)
     for (int k = 0; k < 3; k++) mine.push_back(kv.second.v[k]);
   }
   return polydem_test::allgather_by_tag(mine, 7, comm);
+}
+
+// 1 vs N ranks: the largest |dx| and |dv| between two gathered_state()s
+struct StateDiff {
+  double dx = 0.0, dv = 0.0;
+};
+inline StateDiff state_diff(const std::vector<double> &a, const std::vector<double> &b)
+{
+  StateDiff d;
+  for (size_t i = 0; i + 7 <= a.size() && i + 7 <= b.size(); i += 7) {
+    for (int k = 1; k <= 3; k++) d.dx = std::max(d.dx, std::abs(a[i + k] - b[i + k]));
+    for (int k = 4; k <= 6; k++) d.dv = std::max(d.dv, std::abs(a[i + k] - b[i + k]));
+  }
+  return d;
 }
 
 }    // namespace wall_test
