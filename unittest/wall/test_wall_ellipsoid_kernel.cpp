@@ -145,6 +145,37 @@ template <typename T> void plane_case(double tol)
               sizeof(T) == 8 ? "double" : "float", n, worst);
 }
 
+// central differences of the kernel's delta for the ellipsoid (centre c,
+// orientation q, semi-axes ax) on mesh g: along each lab axis (step eps) and
+// for rotations about it (angle phi)
+struct Gradient {
+  Vec3<double> dx, dtheta;
+};
+Gradient depth_gradient(const Vec3<double> &c, const Quat<double> &q, const Vec3<double> &ax,
+                        const MeshGridView<double> &g, double eps, double phi)
+{
+  Gradient out;
+  const Mat3<double> R = quat_to_mat(q);
+  for (int k = 0; k < 3; k++) {
+    Vec3<double> d = make_vec3(0.0, 0.0, 0.0);
+    d[k] = eps;
+    out.dx[k] =
+        (depth_of(posed<double>(c + d, R, ax), g) - depth_of(posed<double>(c - d, R, ax), g)) /
+        (2 * eps);
+    Vec3<double> axis = make_vec3(0.0, 0.0, 0.0);
+    axis[k] = 1.0;
+    auto rot = [&](double a) {
+      const Quat<double> dq = make_quat(std::cos(a / 2), std::sin(a / 2) * axis.x,
+                                        std::sin(a / 2) * axis.y, std::sin(a / 2) * axis.z);
+      return quat_to_mat(qmul(dq, q));
+    };
+    out.dtheta[k] = (depth_of(posed<double>(c, rot(phi), ax), g) -
+                     depth_of(posed<double>(c, rot(-phi), ax), g)) /
+        (2 * phi);
+  }
+  return out;
+}
+
 }    // namespace
 
 TEST(WallEllipsoidKernel, PlaneIsTheSupportDepthDouble) { plane_case<double>(1e-13); }
@@ -171,29 +202,12 @@ TEST(WallEllipsoidKernel, GradientOfTheOverlap)
     WallPatches<double> P;
     wall_ellipsoid_patches(posed<double>(c, R, ax), m.v, std::cos(20.0 * M_PI / 180.0), P);
     ASSERT_EQ(P.n, 1);
-    const double eps = 1e-6 * ax.x;
+    const Gradient gd = depth_gradient(c, q, ax, m.v, 1e-6 * ax.x, 1e-6);
     for (int k = 0; k < 3; k++) {
-      Vec3<double> dx = make_vec3(0.0, 0.0, 0.0);
-      dx[k] = eps;
-      const double g = (depth_of(posed<double>(c + dx, R, ax), m.v) -
-                        depth_of(posed<double>(c - dx, R, ax), m.v)) /
-          (2 * eps);
-      EXPECT_NEAR(g, P.p[0].S[k], 1e-7);
-      worst = std::fmax(worst, std::fabs(g - P.p[0].S[k]));
-      // rotation by +-phi about lab axis k
-      const double phi = 1e-6;
-      Vec3<double> axis = make_vec3(0.0, 0.0, 0.0);
-      axis[k] = 1.0;
-      auto rot = [&](double a) {
-        const Quat<double> dq = make_quat(std::cos(a / 2), std::sin(a / 2) * axis.x,
-                                          std::sin(a / 2) * axis.y, std::sin(a / 2) * axis.z);
-        return quat_to_mat(qmul(dq, q));
-      };
-      const double gr = (depth_of(posed<double>(c, rot(phi), ax), m.v) -
-                         depth_of(posed<double>(c, rot(-phi), ax), m.v)) /
-          (2 * phi);
-      EXPECT_NEAR(gr, P.p[0].M[k], 1e-7 * ax.x);
-      worst = std::fmax(worst, std::fabs(gr - P.p[0].M[k]) / ax.x);
+      EXPECT_NEAR(gd.dx[k], P.p[0].S[k], 1e-7);
+      EXPECT_NEAR(gd.dtheta[k], P.p[0].M[k], 1e-7 * ax.x);
+      worst = std::fmax(worst, std::fabs(gd.dx[k] - P.p[0].S[k]));
+      worst = std::fmax(worst, std::fabs(gd.dtheta[k] - P.p[0].M[k]) / ax.x);
     }
   }
   std::printf("[ ell wall ] gradient: largest |finite difference - (S, M/a)| %.3g\n", worst);
@@ -223,28 +237,12 @@ TEST(WallEllipsoidKernel, GradientAtBorders)
     wall_ellipsoid_patches(posed<double>(c, R, ax), plate.v, std::cos(20.0 * M_PI / 180.0), P);
     if (P.n != 1 || P.p[0].depth < 1e-3 * ax.z) continue;
     (corner ? nvert : nedge)++;
-    const double eps = 1e-7 * ax.x;
+    const Gradient gd = depth_gradient(c, q, ax, plate.v, 1e-7 * ax.x, 1e-7);
     for (int k = 0; k < 3; k++) {
-      Vec3<double> dx = make_vec3(0.0, 0.0, 0.0);
-      dx[k] = eps;
-      const double g = (depth_of(posed<double>(c + dx, R, ax), plate.v) -
-                        depth_of(posed<double>(c - dx, R, ax), plate.v)) /
-          (2 * eps);
-      EXPECT_NEAR(g, P.p[0].S[k], 1e-6) << trial;
-      worst = std::fmax(worst, std::fabs(g - P.p[0].S[k]));
-      const double phi = 1e-7;
-      Vec3<double> axis = make_vec3(0.0, 0.0, 0.0);
-      axis[k] = 1.0;
-      auto rot = [&](double a) {
-        const Quat<double> dq = make_quat(std::cos(a / 2), std::sin(a / 2) * axis.x,
-                                          std::sin(a / 2) * axis.y, std::sin(a / 2) * axis.z);
-        return quat_to_mat(qmul(dq, q));
-      };
-      const double gr = (depth_of(posed<double>(c, rot(phi), ax), plate.v) -
-                         depth_of(posed<double>(c, rot(-phi), ax), plate.v)) /
-          (2 * phi);
-      EXPECT_NEAR(gr, P.p[0].M[k], 1e-6 * ax.x) << trial;
-      worst = std::fmax(worst, std::fabs(gr - P.p[0].M[k]) / ax.x);
+      EXPECT_NEAR(gd.dx[k], P.p[0].S[k], 1e-6) << trial;
+      EXPECT_NEAR(gd.dtheta[k], P.p[0].M[k], 1e-6 * ax.x) << trial;
+      worst = std::fmax(worst, std::fabs(gd.dx[k] - P.p[0].S[k]));
+      worst = std::fmax(worst, std::fabs(gd.dtheta[k] - P.p[0].M[k]) / ax.x);
     }
   }
   std::printf("[ ell wall ] border gradient: %d edge, %d vertex contacts, largest |finite "
