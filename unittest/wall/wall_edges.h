@@ -12,8 +12,11 @@
 #include "fix.h"
 #include "modify.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 namespace wall_test {
 
