@@ -323,6 +323,24 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
                      merged.kept_holes + merged.kept_failed);
   }
 
+  // smooth regions, the patches' keys (after merging: its triangles)
+  {
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (size_t k = 0; k < mesh.tri.size(); k++) {
+      lo[k % 3] = MIN(lo[k % 3], mesh.tri[k]);
+      hi[k % 3] = MAX(hi[k % 3], mesh.tri[k]);
+    }
+    double diag = 0.0;
+    for (int d = 0; d < 3; d++) diag += (hi[d] - lo[d]) * (hi[d] - lo[d]);
+    regions = polydem::mesh_regions(mesh.tri, cosmax, 1e-9 * sqrt(diag));
+    if (comm->me == 0) {
+      int nreg = 0;
+      for (size_t t = 0; t < regions.size(); t++) nreg += regions[t] >> 1 == (int) t;
+      utils::logmesg(lmp, "fix wall/mesh {}: {} smooth regions (patch/angle {})\n", id, nreg,
+                     patch_angle);
+    }
+  }
+
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
   for (int k = 0; k < NCOUNTS; k++) counts_local[k] = counts_reported[k] = 0.0;
   for (double &c : fresh_local) c = 0.0;
@@ -582,6 +600,7 @@ polydem::MeshGridView<double> FixWallMesh::grid_view() const
   g.plane = grid.plane.data();
   g.box = grid.box.data();
   g.tbin = grid.tbin.data();
+  g.region = regions.data();
   return g;
 }
 

@@ -75,6 +75,7 @@ class FixWallMesh : public Fix {
   double binsize;    // user bin edge (0: automatic)
   double merge_tol;  // coplanar merging tolerance / bounding-box diagonal (< 0: off)
   polydem::MergeStats merged;
+  std::vector<int> regions;    // per triangle: smooth region, the patch key (mesh_regions)
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
   double core, patch_angle, cosmax;
   int twosided;                       // keyword sides: both (1, default) or front (0)

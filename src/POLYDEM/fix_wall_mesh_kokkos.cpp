@@ -162,6 +162,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
   upload(d_start, grid.start, "wall/mesh/kk:start");
   upload(d_items, grid.items, "wall/mesh/kk:items");
   upload(d_tbin, grid.tbin, "wall/mesh/kk:tbin");
+  upload(d_region, regions, "wall/mesh/kk:region");
 
   // the law table (FixWallMesh::init) on the device
   d_laws_table = polydem_kk::mirror_law_table<DeviceType>(laws, d_laws);
@@ -309,6 +310,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.sc.grid.plane = d_plane.data();
   k.sc.grid.box = d_box.data();
   k.sc.grid.tbin = d_tbin.data();
+  k.sc.grid.region = d_region.data();
   k.dt = update->dt;
   k.update = stepping ? 1 : 0;
   k.groupbit = groupbit;

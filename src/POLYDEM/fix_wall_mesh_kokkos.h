@@ -54,7 +54,7 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
 
   // mesh and grid (mesh frame)
   Kokkos::View<double *, DeviceType> d_tri, d_plane, d_box;
-  Kokkos::View<int *, DeviceType> d_start, d_items, d_tbin;
+  Kokkos::View<int *, DeviceType> d_start, d_items, d_tbin, d_region;
   // shape templates, flat, and one ShapeView each pointing into them
   int shape_version;
   Kokkos::View<double *, DeviceType> d_sverts, d_splanes;

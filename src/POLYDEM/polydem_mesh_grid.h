@@ -29,6 +29,7 @@ template <typename T> struct MeshGridView {
   const T *plane;       // 4 per triangle: unit normal, offset n . t0
   const T *box;         // 6 per triangle: min xyz, max xyz
   const int *tbin;      // 3 per triangle: its first bin (i, j, k)
+  const int *region = nullptr;    // per triangle: smooth region (mesh_regions, polydem_stl.h), or none
 };
 
 // bin index of coordinate x along direction d, clamped to [0, n-1]; the

@@ -405,3 +405,65 @@ MergeStats merge_coplanar(std::vector<double> &tri, double tol)
 }
 
 }    // namespace polydem
+
+namespace polydem {
+
+std::vector<int> mesh_regions(const std::vector<double> &tri, double cosmax, double tol)
+{
+  const int nt = (int) (tri.size() / 9);
+  std::vector<int> region(nt, -1);
+  if (nt == 0) return region;
+  // unit normals
+  std::vector<V3> nrm(nt);
+  for (int t = 0; t < nt; t++) {
+    const double *p = tri.data() + 9 * (size_t) t;
+    const V3 a = {p[0], p[1], p[2]}, b = {p[3], p[4], p[5]}, c = {p[6], p[7], p[8]};
+    V3 n = crs(sub(b, a), sub(c, a));
+    const double l = std::sqrt(dt(n, n));
+    for (double &x : n) x = l > 0.0 ? x / l : 0.0;
+    nrm[t] = n;
+  }
+  // welded vertex ids, and the triangles at each vertex (CSR)
+  const double q = tol > 0.0 ? tol : 1e-300;
+  std::map<std::array<long long, 3>, int> ids;
+  std::vector<int> vid(3 * (size_t) nt);
+  for (size_t k = 0; k < vid.size(); k++) {
+    std::array<long long, 3> key;
+    for (int d = 0; d < 3; d++) key[d] = std::llround(tri[3 * k + d] / q);
+    vid[k] = ids.emplace(key, (int) ids.size()).first->second;
+  }
+  std::vector<int> start(ids.size() + 1, 0), at(vid.size());
+  for (const int v : vid) start[v + 1]++;
+  for (size_t v = 0; v < ids.size(); v++) start[v + 1] += start[v];
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (size_t k = 0; k < vid.size(); k++) at[fill[vid[k]]++] = (int) (k / 3);
+  // region growing (breadth first) from each unassigned triangle in order
+  const double cmin = cosmax - 1e-12;    // patch angle 0: parallel to round-off
+  std::vector<int> queue;
+  for (int s = 0; s < nt; s++) {
+    if (region[s] >= 0) continue;
+    region[s] = 2 * s;
+    queue.assign(1, s);
+    for (size_t h = 0; h < queue.size(); h++) {
+      const int t = queue[h];
+      for (int c = 0; c < 3; c++) {
+        const int v = vid[3 * (size_t) t + c];
+        for (int k = start[v]; k < start[v + 1]; k++) {
+          const int u = at[k];
+          if (region[u] >= 0) continue;
+          const double cs = dt(nrm[u], nrm[s]);
+          if (cs >= cmin)
+            region[u] = 2 * s;
+          else if (-cs >= cmin)
+            region[u] = 2 * s + 1;
+          else
+            continue;
+          queue.push_back(u);
+        }
+      }
+    }
+  }
+  return region;
+}
+
+}    // namespace polydem

@@ -69,6 +69,18 @@ struct MergeStats {
 };
 MergeStats merge_coplanar(std::vector<double> &tri, double tol);
 
+// Smooth regions of a mesh for the wall's patches: region growing from the
+// lowest-numbered unassigned triangle (the seed) through triangles that
+// share a vertex (vertices are the same point when their coordinates,
+// rounded to multiples of tol, agree) and whose normal is within the patch
+// angle of the seed's (cos >= cosmax), either way round: a triangle whose
+// normal is within the angle of the seed's reversed normal joins reversed
+// (a mesh with mixed vertex orders). Per triangle: 2 x seed + (1 if
+// reversed). Connected coplanar triangles always share a region, so the
+// patches of a flat region do not depend on its triangulation; regions are
+// fixed at load, so a facet never changes patch while it carries overlap.
+std::vector<int> mesh_regions(const std::vector<double> &tri, double cosmax, double tol);
+
 // Uniform grid of cubic bins of edge h over the mesh's bounding box; each
 // triangle is listed in every bin its bounding box overlaps (CSR arrays).
 struct MeshGrid {

@@ -4,8 +4,9 @@
 
    Seed §2.4 (Algorithm VII, Eqs. 10-11) weights a facet's force by the
    clipped section area. Here the facets a particle touches are grouped into
-   patches of near-coplanar normals (|angle| < patch angle to the patch's
-   first facet). Per patch the kernel's per-triangle results are summed:
+   patches, one per smooth region of the mesh (facets connected to the
+   region's seed facet within the patch angle of its normal, fixed at load:
+   mesh_regions, polydem_stl.h). Per patch the kernel's per-triangle results are summed:
      V = sum V_t,  S = sum S_t = -sum n_t A_t,  M = sum M_t
    (polydem_clip.h: prisms of a flat triangulated wall partition the space
    behind it, so V, S, M of a flat patch equal those of the infinite plane
@@ -73,7 +74,7 @@ template <typename T> struct WallForce {
 // ellipsoid patches (polydem_wall_ellipsoid.h) both end here, and
 // wall_contact_forces is the one loop of slot matching, contact_step and
 // history for both.
-// key[k]: the patch's first facet normal as met (lab, from the particle
+// key[k]: the patch's region seed normal as met (lab, from the particle
 // into the wall), which names the contact from step to step (history slot,
 // kept side): the contact normal g.normal tilts where the prism's sides take
 // part (open borders, sharp edges), the facet's normal does not.

@@ -28,17 +28,18 @@
    delta = (1 - r') sigma(n_w), and its exact gradient (ellipsoid_triangle),
    so that the elastic energy is conserved there too. A flat wall gives one contact whatever its
    triangulation: the coplanar triangles under the foot all give it, the
-   others are farther (r' larger), and per patch the smallest r' is kept.
+   others are farther (r' larger, delta smaller: one sigma(n_w)), and per
+   patch the largest delta is kept (on a curved region too: the energy is
+   then the largest of continuous ones).
 
    Each triangle's contact is continuous in the pose, so are their sums; at
    a convex sharp edge (beyond the patch angle) both faces' contacts can see
    the edge (up to twice one contact's force there, as the prisms of
    polyhedra overlap behind a convex edge).
 
-   Patches: the touching triangles are grouped by their normals n_w (within
-   the fix's patch angle of the patch's first triangle, at most
-   WALL_MAX_PATCH; beyond, the closest patch, counted as merged); each patch
-   keeps its closest point and is one contact of the contact layer
+   Patches: the touching triangles are grouped by the mesh's smooth regions
+   (wall_patch_slot, at most WALL_MAX_PATCH; beyond, the closest normal,
+   counted as merged); each patch keeps its deepest point and is one contact of the contact layer
    (wall_ellipsoid_contacts -> wall_contact_forces): measure delta, area 0,
    S_A, M_A the gradient of delta (n_s, (p* - x) x n_s on a face), point damping at the contact point
    p_c = p* - delta n_s (on the force line, in the wall's plane for a face).
@@ -198,15 +199,16 @@ template <typename T> POLYDEM_FN T ellipsoid_cap_fraction(T r)
   return T(0.25) * x * x * (T(3) - x);
 }
 
-// grid visitor: each touching triangle joins the patch of the closest
-// normal (a new one beyond the patch angle), which keeps its smallest r'
+// grid visitor: each touching triangle joins the patch of its smooth region
+// (wall_patch_slot; without regions the closest normal), which keeps its
+// deepest contact (largest delta)
 template <typename T> struct WallEllipsoidAccumulate {
   const WallEllipsoid<T> *e;
   const MeshGridView<T> *g;
   WallPatches<T> *out;
   T cosmax, rb, vol;    // cos(patch angle), bounding radius, ellipsoid volume
   const WallSides<T> *sides;
-  T rbest[WALL_MAX_PATCH];
+  T dbest[WALL_MAX_PATCH];
 
   POLYDEM_FN void operator()(int t)
   {
@@ -221,21 +223,22 @@ template <typename T> struct WallEllipsoidAccumulate {
     out->ntri++;
     const T *pl = g->plane + 4 * t;
     const Vec3<T> nw = T(side) * make_vec3(pl[0], pl[1], pl[2]);
-    T best;
-    int k = wall_closest_patch(*out, nw, best);
-    if (k < 0 || best < cosmax) {
-      if (out->n < WALL_MAX_PATCH) {
-        k = out->n++;
-        out->p[k].nseed = nw;
-        out->p[k].behind = 0;
-        rbest[k] = T(2);    // > any contact's r' (< 1)
-      } else
-        out->nmerged++;    // more orientations than patches: join the closest
+    bool opened;
+    const int k = wall_patch_slot(*out, *g, wall_region_key(*g, t, side), nw, cosmax, opened);
+    if (opened) {
+      out->p[k].behind = 0;
+      dbest[k] = T(-1);    // < any contact's delta (> 0)
     }
     WallPatch<T> &p = out->p[k];
     p.behind |= behind;
-    if (!(r < rbest[k])) return;    // ties: the first (coplanar triangles agree)
-    rbest[k] = r;
+    // The deepest triangle: the patch's energy k delta^2 / 2 is then the
+    // largest of continuous functions of the pose, so continuous. (The
+    // smallest r', as before, is the same on a flat wall, where sigma(n_w)
+    // is one, but between non-coplanar triangles of a curved region the
+    // choice jumped from one delta to another.) Ties: the first (coplanar
+    // triangles agree).
+    if (!(delta > dbest[k])) return;
+    dbest[k] = delta;
     p.volume = vol * ellipsoid_cap_fraction(r);
     p.area = T(0);
     p.S = S;

@@ -30,14 +30,15 @@ constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle 
 // overlap delta (mesh frame), ac the contact point, vc the deepest point,
 // depth delta, tri the triangle of the closest point.
 template <typename T> struct WallPatch {
-  Vec3<T> nseed;    // first facet's normal n_w (mesh frame)
+  Vec3<T> nseed;    // the region's seed normal as met, or the first facet's (mesh frame)
   T volume, area;
   Vec3<T> S, M;     // sums (mesh frame)
   Vec3<T> ac;       // area-weighted sum of section centroids
   Vec3<T> vc;       // volume-weighted sum of volume centroids
-  T depth;          // deepest particle vertex behind the first facet's plane
+  T depth;          // deepest particle vertex behind the first clipped facet's plane
   int behind;       // the particle's centroid is behind a clipped triangle (in its prism)
   int tri;          // ellipsoids: the triangle of the patch's closest point
+  int key;          // wall_region_key of its triangles, -1 without regions
 };
 
 template <typename T> struct WallPatches {
@@ -105,7 +106,7 @@ constexpr int NEAR_REACH = 8;    // query reach r + NEAR_REACH x skin at a build
 constexpr int NEAR_REBUILD = -1;
 constexpr int NEAR_OVERFLOW = -2;
 
-// The patch whose first facet's normal is closest to n (largest cosine,
+// The patch whose nseed is closest to n (largest cosine,
 // returned in best), -1 if there is none yet; the caller opens a new patch
 // if best < cos(patch angle). Polyhedra and ellipsoids (polydem_wall_ellipsoid.h).
 template <typename T>
@@ -121,6 +122,56 @@ POLYDEM_FN int wall_closest_patch(const WallPatches<T> &P, const Vec3<T> &n, T &
     }
   }
   return k;
+}
+
+// The patch key of triangle t met from side (+1 front, -1 back): its smooth
+// region (2 x seed triangle) and whether the region's seed normal is met
+// reversed; -1 if the mesh has no regions. Patches group the triangles of
+// one key, so a triangle never changes patch: the wall energy, the sum of
+// W(V) over patches, is then a function of the pose alone (no jump when a
+// particle's first facet changes, as grouping by the first facet's normal
+// gave on curved meshes).
+template <typename T> POLYDEM_FN int wall_region_key(const MeshGridView<T> &g, int t, int side)
+{
+  if (!g.region || t < 0) return -1;
+  const int r = g.region[t];
+  return (r & ~1) | ((r & 1) ^ (side < 0 ? 1 : 0));
+}
+
+// The patch a clipped triangle of key (normal n as met) joins: the patch of
+// that key, else (no regions) the closest normal within the patch angle,
+// else a new patch (opened: the caller fills its sums), else (all
+// WALL_MAX_PATCH taken) the closest normal, counted in nmerged. A new
+// patch's nseed is its region's seed normal as met (fixed, so the history
+// that follows it by normal matches exactly), or n.
+template <typename T>
+POLYDEM_FN int wall_patch_slot(WallPatches<T> &P, const MeshGridView<T> &g, int key,
+                               const Vec3<T> &n, T cosmax, bool &opened)
+{
+  opened = false;
+  T best;
+  if (key >= 0) {
+    for (int i = 0; i < P.n; ++i)
+      if (P.p[i].key == key) return i;
+  } else {
+    const int k = wall_closest_patch(P, n, best);
+    if (k >= 0 && best >= cosmax) return k;
+  }
+  if (P.n < WALL_MAX_PATCH) {
+    const int k = P.n++;
+    WallPatch<T> &p = P.p[k];
+    p.key = key;
+    if (key >= 0) {
+      const T *pl = g.plane + 4 * (key >> 1);
+      const T sg = (key & 1) ? T(-1) : T(1);
+      p.nseed = make_vec3(sg * pl[0], sg * pl[1], sg * pl[2]);
+    } else
+      p.nseed = n;
+    opened = true;
+    return k;
+  }
+  P.nmerged++;    // more regions or orientations than patches: join the closest
+  return wall_closest_patch(P, n, best);
 }
 
 template <typename T, int MF, int ME> struct WallAccumulate {
@@ -263,7 +314,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
       ws->cside[ws->ncand] = (signed char) side;
       ws->cand[ws->ncand++] = t;
     } else
-      clip_add(tri, t);
+      clip_add(tri, t, wall_region_key(*g, t, side));
   }
 
   // the particle's centroid within the prism of tri (the triangle swept
@@ -318,16 +369,22 @@ template <typename T, int MF, int ME> struct WallAccumulate {
           ng++;
         }
       }
+      // one clip for the group only if its triangles share a patch key
+      const int key = wall_region_key(*g, ws->cand[c], ws->cside[c]);
+      bool onekey = true;
+      for (int k = c + 1; k < ws->ncand && onekey; ++k)
+        if (ws->cflag[k] == 2) onekey = wall_region_key(*g, ws->cand[k], ws->cside[k]) == key;
       Triangle<T> big;
-      if (ng > 1 && !ws->record && covered(tc.v[0], n, big)) {
-        clip_add(big, -1);
+      if (ng > 1 && onekey && !ws->record && covered(tc.v[0], n, big)) {
+        clip_add(big, -1, key);
         for (int k = c; k < ws->ncand; ++k)
           if (ws->cflag[k] == 2) ws->cflag[k] = 1;
       } else {
         for (int k = c; k < ws->ncand; ++k)
           if (ws->cflag[k] == 2) {
             ws->cflag[k] = 1;
-            clip_add(triangle(ws->cand[k], ws->cside[k]), ws->cand[k]);
+            clip_add(triangle(ws->cand[k], ws->cside[k]), ws->cand[k],
+                     wall_region_key(*g, ws->cand[k], ws->cside[k]));
           }
       }
     }
@@ -434,8 +491,9 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     return true;
   }
 
-  // t: the triangle's index, or -1 for a coplanar group's large triangle
-  POLYDEM_FN void clip_add(const Triangle<T> &tri, int t)
+  // t: the triangle's index, or -1 for a coplanar group's large triangle;
+  // key: its patch key (wall_region_key)
+  POLYDEM_FN void clip_add(const Triangle<T> &tri, int t, int key)
   {
     const ClipResult<T> r = polyhedron_triangle(*a, tri, ws->clip, ws->verts);
     if (r.status == STATUS_SEPARATED) return;
@@ -448,24 +506,19 @@ template <typename T, int MF, int ME> struct WallAccumulate {
       return;
     }
     out->ntri++;
-    T best;
-    int k = wall_closest_patch(*out, r.normal, best);
-    if (k < 0 || best < cosmax) {
-      if (out->n < WALL_MAX_PATCH) {
-        k = out->n++;
-        WallPatch<T> &p = out->p[k];
-        const Vec3<T> z = make_vec3(T(0), T(0), T(0));
-        p.nseed = r.normal;
-        p.volume = p.area = T(0);
-        p.depth = T(0);
-        p.behind = 0;
-        for (int i = 0; i < a->view->nverts; ++i) {
-          const T d = dot(r.normal, tri.v[0] - wall_vert(i));
-          p.depth = d > p.depth ? d : p.depth;
-        }
-        p.S = p.M = p.ac = p.vc = z;
-      } else
-        out->nmerged++;    // more facet orientations than patches: join the closest
+    bool opened;
+    const int k = wall_patch_slot(*out, *g, key, r.normal, cosmax, opened);
+    if (opened) {
+      WallPatch<T> &p = out->p[k];
+      const Vec3<T> z = make_vec3(T(0), T(0), T(0));
+      p.volume = p.area = T(0);
+      p.depth = T(0);
+      p.behind = 0;
+      for (int i = 0; i < a->view->nverts; ++i) {
+        const T d = dot(r.normal, tri.v[0] - wall_vert(i));
+        p.depth = d > p.depth ? d : p.depth;
+      }
+      p.S = p.M = p.ac = p.vc = z;
     }
     WallPatch<T> &p = out->p[k];
     // centroid behind the triangle as met, inside its prism (a coplanar

@@ -581,3 +581,86 @@ TEST(MergeCoplanar, RandomHolesFuzz)
   std::printf("[ merge    ] %d of %d plates with holes re-triangulated\n", merged, cases);
   EXPECT_EQ(merged, cases);
 }
+
+// Smooth regions (the wall's patch keys): a flat irregular floor is one
+// region, also with every third triangle's vertex order reversed (those
+// that differ from the seed's, triangle 0, join reversed: odd code); two
+// floors apart are two; each face of a box is one;
+// a faceted tube of 120 sectors at a patch angle of 20 degrees is cut into
+// regions whose every normal is within 20 degrees of the seed's, each region
+// connected, 9 to 19 of them (the first spans both ways from its seed).
+TEST(MeshRegions, SeedAngleConnectivityAndFlips)
+{
+  const double c20 = std::cos(20.0 * M_PI / 180.0);
+  Tris floor = flat(0, 3, -1, 1, 0, 12, 8, true, 0.35, 11);
+  const int nf = (int) floor.size() / 9;
+  std::vector<int> r = mesh_regions(floor, 1.0, 1e-12);    // patch angle 0
+  for (int t = 0; t < nf; t++) EXPECT_EQ(r[t], 0) << t;
+  Tris mixed = floor;
+  for (int t = 0; t < nf; t += 3)
+    for (int k = 0; k < 3; k++) std::swap(mixed[9 * t + 3 + k], mixed[9 * t + 6 + k]);
+  r = mesh_regions(mixed, c20, 1e-12);
+  for (int t = 0; t < nf; t++) EXPECT_EQ(r[t], t % 3 == 0 ? 0 : 1) << t;    // seed 0 reversed
+  Tris two = floor;
+  const Tris far = flat(4, 5, -1, 1, 0, 3, 3);
+  two.insert(two.end(), far.begin(), far.end());
+  r = mesh_regions(two, c20, 1e-12);
+  for (int t = 0; t < (int) two.size() / 9; t++) EXPECT_EQ(r[t], t < nf ? 0 : 2 * nf) << t;
+
+  // box [0,1]^3, two triangles per face, outward
+  Tris box;
+  const int faces[6][4][3] = {{{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}},
+                              {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                              {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}},
+                              {{0, 1, 0}, {0, 1, 1}, {1, 1, 1}, {1, 1, 0}},
+                              {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0}},
+                              {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}}};
+  for (const auto &f : faces)
+    for (const int v : {0, 1, 2, 0, 2, 3})
+      for (int d = 0; d < 3; d++) box.push_back(f[v][d]);
+  r = mesh_regions(box, std::cos(80.0 * M_PI / 180.0), 1e-12);
+  for (int t = 0; t < 12; t++) EXPECT_EQ(r[t], 2 * (t - t % 2)) << t;
+
+  // tube: 120 sectors, 4 rings
+  Tris tube;
+  const int ns = 120, nr = 4;
+  auto P = [&](int s, int q) -> std::array<double, 3> {
+    return {std::cos(2 * M_PI * s / ns), std::sin(2 * M_PI * s / ns), 0.1 * q};
+  };
+  for (int s = 0; s < ns; s++)
+    for (int q = 0; q < nr; q++)
+      for (const auto &p : {P(s, q), P(s + 1, q), P(s + 1, q + 1), P(s, q), P(s + 1, q + 1), P(s, q + 1)})
+        tube.insert(tube.end(), p.begin(), p.end());
+  const int nt = (int) tube.size() / 9;
+  r = mesh_regions(tube, c20, 1e-9);
+  auto normal = [&](int t) {
+    const double *p = tube.data() + 9 * t;
+    const double e1[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
+    const double e2[3] = {p[6] - p[0], p[7] - p[1], p[8] - p[2]};
+    std::array<double, 3> n = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                               e1[0] * e2[1] - e1[1] * e2[0]};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double &x : n) x /= l;
+    return n;
+  };
+  std::set<int> seeds;
+  for (int t = 0; t < nt; t++) {
+    const int s = r[t] >> 1;
+    seeds.insert(s);
+    EXPECT_EQ(r[t] & 1, 0) << t;
+    EXPECT_EQ(r[s], 2 * s) << "seed of " << t;
+    const auto a = normal(t), b = normal(s);
+    EXPECT_GE(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], c20 - 1e-12) << t;
+  }
+  EXPECT_GE((int) seeds.size(), 9);
+  EXPECT_LE((int) seeds.size(), 19);
+  // connected: each region's sectors form one run around the tube
+  for (const int s : seeds) {
+    std::set<int> sectors;
+    for (int t = 0; t < nt; t++)
+      if (r[t] >> 1 == s) sectors.insert(t / (2 * nr));
+    int runs = 0;
+    for (const int k : sectors) runs += sectors.count((k + ns - 1) % ns) ? 0 : 1;
+    EXPECT_EQ(runs, 1) << "region of seed " << s;
+  }
+}

@@ -4,9 +4,10 @@
 // impact's energy over the whole impact. The cases (issue 32, item 1): the
 // top edge of a thin vertical fin, the open border of a half-plate, a box's
 // outer (convex) edge, a concave corner, a ridge of two 30 degree plates, and
-// a grazing slide along an open border, a rod passing beside one; several
+// a grazing slide along an open border, a rod passing beside one, impacts
+// on a faceted rod (a convex curved mesh); several
 // offsets and orientations;
-// fix wall/mesh/kk the same (fin, box edge, ridge and rod at dt 5e-8).
+// fix wall/mesh/kk the same (fin, box edge, ridge, beside and rod at dt 5e-8).
 // Before the prisms' side sections were part of dV/dx (polydem_clip.h) a
 // cube falling onto the fin's edge left it with many times its energy.
 #include "wall_edges.h"
@@ -59,6 +60,13 @@ std::vector<Case> cases()
   // crossing turned the overhang into an overlap from below, out of nothing.
   out.push_back({"beside", rod_shape(), half_plate(), {0.0025, 0.0, 0.0005}, {0, 0, -1},
                  "quat 0 1 0 45"});
+  // onto a rod of 48 facets (7.5 degrees each, radius 3 mm): the contact
+  // spreads over more facets than the patch angle (20 degrees). Before
+  // patches were the mesh's smooth regions (fixed at load), a facet's patch
+  // followed the first facet met, changed while it carried overlap, and W(V)
+  // jumped (+2.7e-2 and +1.9e-2 of the energy in these two impacts).
+  out.push_back({"rod", "cube", rod(0.003, 48), {0.0, 0.0, 0.0085}, {0, 0, -1}, tilt});
+  out.push_back({"rod", "cube", rod(0.003, 48), {0.001, 0.0, 0.0085}, {0, 0, -1}, tilt2});
   // ellipsoids (semi-axes 4, 2.5, 1.5 mm; pair_style ellipsoid's linear law)
   const std::string ell = "ellipsoid 0.004 0.0025 0.0015";
   for (const std::string &q : {tilt, tilt2}) {
@@ -69,6 +77,10 @@ std::vector<Case> cases()
     out.push_back({"corner", ell, corner(), {0.006, 0.0, 0.006}, {-0.7, 0.1, -0.7}, q});
     out.push_back({"ridge", ell, ridge(), {0.0005, 0.0, 0.008}, {0, 0, -1}, q});
   }
+  // the rod: each patch keeps its deepest triangle (before, the smallest r',
+  // which on non-coplanar facets is not the deepest: delta jumped, 2e-2)
+  for (const std::string &q : {tilt, tilt2})
+    out.push_back({"rod", ell, rod(0.003, 48), {0.001, 0.0, 0.0073}, {0, 0, -1}, q});
   out.push_back({"beside", "ellipsoid 0.006 0.001 0.001", half_plate(), {0.0025, 0.0, 0.0005},
                  {0, 0, -1}, "quat 0 1 0 45"});
   return out;
@@ -84,7 +96,8 @@ TEST(WallEdges, ElasticImpactsKeepTheEnergy)
     const double dev = energy_drift(c, {}, touched);
     // /kk: the same kernels, the same energy (the fin, box edge and ridge cases)
     if (polydem_test::has_kokkos() && c.dt > 2e-8 &&
-        (c.name == "fin" || c.name == "boxedge" || c.name == "ridge" || c.name == "beside")) {
+        (c.name == "fin" || c.name == "boxedge" || c.name == "ridge" || c.name == "beside" ||
+         c.name == "rod")) {
       double touched_kk;
       const double dev_kk =
           energy_drift(c, polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"}),

@@ -28,9 +28,11 @@ using wall_test::Tris;
 
 namespace {
 
-// a mesh and its grid as kernel data of type T (storage kept here)
+// a mesh, its grid and its smooth regions at the tests' patch angle (20
+// degrees) as kernel data of type T (storage kept here)
 template <typename T> struct Mesh {
   std::vector<T> tri, plane, box;
+  std::vector<int> region;
   MeshGrid g;
   MeshGridView<T> v;
   explicit Mesh(const Tris &t, double h = 0.05)
@@ -51,6 +53,8 @@ template <typename T> struct Mesh {
     v.plane = plane.data();
     v.box = box.data();
     v.tbin = g.tbin.data();
+    region = mesh_regions(t, std::cos(20.0 * M_PI / 180.0), 1e-12);
+    v.region = region.data();
   }
 };
 

@@ -1,5 +1,6 @@
 // The open and sharp mesh edges of issue 32 (a thin fin, a half-plate, a box's
-// outer edge, a concave corner, a ridge of two 30 degree plates) and the
+// outer edge, a concave corner, a ridge of two 30 degree plates, a faceted
+// rod) and the
 // elastic impact run that measures the largest |E / E_0 - 1| of one particle
 // on them (E = translation + rotation + the wall's elastic energy W(V), all
 // global, so a run on several MPI ranks measures the same).
@@ -77,6 +78,19 @@ inline Tris ridge()
   const double c = std::cos(M_PI / 6) * 2 * W, s = std::sin(M_PI / 6) * 2 * W;
   quad(t, {0, -W, 0}, {0, W, 0}, {-c, W, -s}, {-c, -W, -s});
   quad(t, {0, -W, 0}, {c, -W, -s}, {c, W, -s}, {0, W, 0});
+  return t;
+}
+
+// a faceted rod along y: radius R, nseg facets around, facing out (a convex
+// curved mesh: no two facets coplanar), facet 0 starting at the top
+inline Tris rod(double R, int nseg)
+{
+  Tris t;
+  auto p = [&](int k, double y) -> P3 {
+    const double a = 2 * M_PI * k / nseg;
+    return {R * std::sin(a), y, R * std::cos(a)};
+  };
+  for (int k = 0; k < nseg; k++) quad(t, p(k, -W), p(k, W), p(k + 1, W), p(k + 1, -W));
   return t;
 }
 
