@@ -11,7 +11,6 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
-#include "fix_wall_mesh.h"
 #include "force.h"
 #include "group.h"
 #include "math_const.h"
@@ -454,25 +453,9 @@ void FixInsertPolyhedron::init()
                idregion);
   if (domain->triclinic) error->all(FLERR, "{}: triclinic boxes are not supported", me);
 
-  // ellipsoids where only polyhedra are allowed
-  walls.clear();
-  for (int i = 0; i < modify->nfix; i++) {
-    auto w = dynamic_cast<FixWallMesh *>(modify->fix[i]);
-    if (w) walls.push_back(w);
-  }
-  for (const auto &k : kinds) {
-    if (!avec->shape(k.ishape).is_ellipsoid()) continue;
-    if (force->pair && utils::strmatch(force->pair_style, "^polyhedron"))
-      error->all(FLERR, "{}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
-                 "polyhedra only", me, k.id);
-  }
-  if (force->pair && utils::strmatch(force->pair_style, "^ellipsoid"))
-    for (const auto &k : kinds)
-      if (!avec->shape(k.ishape).is_ellipsoid())
-        error->all(FLERR,
-                   "{}: shape '{}' is a polyhedron, but pair_style ellipsoid takes "
-                   "ellipsoids only",
-                   me, k.id);
+  // the obstacles every candidate must clear (the pair styles refuse the
+  // kinds of shape they do not take: ParticleSource::candidates)
+  walls = InsertionObstacle::all(lmp);
 
   region->prematch();
   region_volume = estimate_region_volume();
@@ -1065,29 +1048,18 @@ void FixInsertPolyhedron::post_run()
                    100.0 * time_run / std::max(1e-30, MPI_Wtime() - time_start));
 }
 
-double FixInsertPolyhedron::max_insert_radius(LAMMPS *lmp)
+double FixInsertPolyhedron::max_insert_radius() const
 {
-  double r = 0.0;
-  for (int i = 0; i < lmp->modify->nfix; i++) {
-    auto f = dynamic_cast<FixInsertPolyhedron *>(lmp->modify->fix[i]);
-    if (f) r = std::max(r, f->rmax_insert);
-  }
-  return r;
+  return rmax_insert;
 }
 
-std::vector<FixInsertPolyhedron::Candidate> FixInsertPolyhedron::candidates(LAMMPS *lmp)
+void FixInsertPolyhedron::add_candidates(std::vector<Candidate> &out) const
 {
-  std::vector<Candidate> out;
-  for (int i = 0; i < lmp->modify->nfix; i++) {
-    auto f = dynamic_cast<FixInsertPolyhedron *>(lmp->modify->fix[i]);
-    if (!f) continue;
-    for (const auto &k : f->kinds) {
-      const double s = k.scale.min();
-      out.push_back({k.ishape, s, k.density * f->avec->shape(k.ishape).volume() * s * s * s,
-                     f->itype, 1 | f->groupbit});
-    }
+  for (const auto &k : kinds) {
+    const double s = k.scale.min();
+    out.push_back({k.ishape, s, k.density * avec->shape(k.ishape).volume() * s * s * s, itype,
+                   1 | groupbit, id});
   }
-  return out;
 }
 
 double FixInsertPolyhedron::compute_scalar()

@@ -18,6 +18,7 @@ FixStyle(insert/polyhedron,FixInsertPolyhedron);
 #define LMP_FIX_INSERT_POLYHEDRON_H
 
 #include "fix.h"
+#include "poly_roles.h"
 
 #include "polydem_insert_space.h"
 
@@ -27,7 +28,7 @@ FixStyle(insert/polyhedron,FixInsertPolyhedron);
 
 namespace LAMMPS_NS {
 
-class FixInsertPolyhedron : public Fix {
+class FixInsertPolyhedron : public Fix, public ParticleSource {
  public:
   FixInsertPolyhedron(class LAMMPS *, int, char **);
   int setmask() override;
@@ -39,18 +40,11 @@ class FixInsertPolyhedron : public Fix {
   double compute_vector(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
-  // largest bounding radius any fix insert/polyhedron may insert (0: none);
-  // the pair styles size their cutoff with it, as with atoms present
-  static double max_insert_radius(class LAMMPS *);
-  // the smallest particle of each kind every fix insert/polyhedron may
-  // insert (template, scale, mass, type): the pair styles' time-step checks
-  struct Candidate {
-    int ishape;
-    double scale, mass;
-    int type;
-    int mask;    // the group bits the inserted atoms get
-  };
-  static std::vector<Candidate> candidates(class LAMMPS *);
+  // ParticleSource: the largest bounding radius it may insert (the pair
+  // styles size their cutoff with it, as with atoms present) and the
+  // smallest particle of each kind (the time-step and material checks)
+  double max_insert_radius() const override;
+  void add_candidates(std::vector<Candidate> &out) const override;
 
   enum { MODE_RATE, MODE_PACK };
   enum { RATE_NONE, RATE_NUMBER, RATE_MASS, RATE_PER };
@@ -106,7 +100,7 @@ class FixInsertPolyhedron : public Fix {
   double rmax_insert;            // largest bounding radius of a candidate
   double mean_mass;              // mean particle mass of the mixture
   double mean_volume;            // and its mean particle volume
-  std::vector<class FixWallMesh *> walls;
+  std::vector<InsertionObstacle *> walls;    // fix wall/mesh and any other obstacle
   std::vector<polydem::ShapeView<double>> views;    // of every template (polyhedra)
   std::vector<double> inradius;                     // of every template at unit scale
   double slo[3], shi[3];    // box of the region now, within the simulation box

@@ -7,7 +7,6 @@
 #include "atom.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_insert_polyhedron.h"
 #include "force.h"
 #include "math_const.h"
 #include "memory.h"
@@ -386,7 +385,7 @@ void FixWallMesh::init()
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) nkind[avec->shape(atom->pshape[i]).is_ellipsoid() ? 1 : 0]++;
   if (comm->me == 0)
-    for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+    for (const auto &c : ParticleSource::candidates(lmp))
       if (c.mask & groupbit) nkind[avec->shape(c.ishape).is_ellipsoid() ? 1 : 0]++;
   MPI_Allreduce(MPI_IN_PLACE, nkind, 2, MPI_INT, MPI_SUM, world);
   // material: polyhedra E, nu (pair_style polyhedron), ellipsoids k_n and
@@ -479,7 +478,7 @@ void FixWallMesh::check_mesh_step()
     if (atom->mask[i] & groupbit)
       rin = MIN(rin, avec->shape(atom->pshape[i]).inradius() * atom->pscale[i]);
   if (comm->me == 0)
-    for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+    for (const auto &c : ParticleSource::candidates(lmp))
       if (c.mask & groupbit) rin = MIN(rin, avec->shape(c.ishape).inradius() * c.scale);
   MPI_Allreduce(MPI_IN_PLACE, &rin, 1, MPI_DOUBLE, MPI_MIN, world);
   const double step = speed * update->dt;
@@ -520,7 +519,7 @@ void FixWallMesh::check_timestep()
   // and the smallest particle of each kind an insertion fix will add here
   // (counted on rank 0 only: every rank sees the same candidates)
   if (comm->me == 0)
-    for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+    for (const auto &c : ParticleSource::candidates(lmp))
       if (c.mask & groupbit) consider(c.type, c.ishape, c.scale, c.mass);
   MPI_Allreduce(MPI_IN_PLACE, &dtmin, 1, MPI_DOUBLE, MPI_MIN, world);
   MPI_Allreduce(MPI_IN_PLACE, &tcmin, 1, MPI_DOUBLE, MPI_MIN, world);

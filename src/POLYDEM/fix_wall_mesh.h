@@ -16,6 +16,7 @@ FixStyle(wall/mesh,FixWallMesh);
 #define LMP_FIX_WALL_MESH_H
 
 #include "fix.h"
+#include "poly_roles.h"
 
 #include "polydem_contact_pipeline.h"
 #include "polydem_insert.h"
@@ -28,7 +29,7 @@ FixStyle(wall/mesh,FixWallMesh);
 
 namespace LAMMPS_NS {
 
-class FixWallMesh : public Fix {
+class FixWallMesh : public Fix, public InsertionObstacle {
  public:
   FixWallMesh(class LAMMPS *, int, char **);
   ~FixWallMesh() override;
@@ -61,7 +62,7 @@ class FixWallMesh : public Fix {
   // current pose and has no contact with it (a polyhedron no contact
   // volume, an ellipsoid no closest point; e.g. behind a one-sided wall)
   bool insertion_clear(const polydem::InsertBody<double> &b, const polydem::Quat<double> &q,
-                       double gap);
+                       double gap) override;
 
   enum { MOVE_NONE, MOVE_TRANSLATE, MOVE_ROTATE, MOVE_WIGGLE };
   // vector: force on the mesh (3), torque on the mesh about its axis point

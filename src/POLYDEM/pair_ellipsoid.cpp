@@ -5,10 +5,10 @@
 #include "pair_ellipsoid.h"
 
 #include "atom.h"
+#include "poly_roles.h"
 #include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_insert_polyhedron.h"
 #include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
@@ -204,6 +204,11 @@ void PairEllipsoid::init_style()
       if (first < 0) first = atom->pshape[i];
       npoly++;
     }
+  // and those an insertion fix will add
+  for (const auto &c : ParticleSource::candidates(lmp))
+    if (!avec->shape(c.ishape).is_ellipsoid())
+      error->all(FLERR, "fix {}: shape '{}' is a polyhedron, but pair_style ellipsoid takes "
+                 "ellipsoids only", c.source, avec->shape_id(c.ishape));
   int all;
   MPI_Allreduce(&npoly, &all, 1, MPI_INT, MPI_SUM, world);
   if (all) {
@@ -279,7 +284,7 @@ double PairEllipsoid::init_one(int i, int j)
   e.damping = polydem::damping_law(restitution[i][j], 1);
   law_entries[i * nt + j] = law_entries[j * nt + i] = e;
   // particles present, and those an insertion fix may add later
-  double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
+  double rmax = ParticleSource::max_radius(lmp);
   for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
   double all;
   MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);

@@ -5,10 +5,10 @@
 #include "pair_polyhedron.h"
 
 #include "atom.h"
+#include "poly_roles.h"
 #include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_insert_polyhedron.h"
 #include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
@@ -226,6 +226,11 @@ void PairPolyhedron::init_style()
   MPI_Allreduce(MPI_IN_PLACE, &nell, 1, MPI_INT, MPI_SUM, world);
   if (nell) error->all(FLERR, "pair_style polyhedron: {} atoms have an ellipsoid shape; "
                        "use pair_style ellipsoid (mixed contacts are not supported)", nell);
+  // and those an insertion fix will add
+  for (const auto &c : ParticleSource::candidates(lmp))
+    if (avec->shape(c.ishape).is_ellipsoid())
+      error->all(FLERR, "fix {}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
+                 "polyhedra only", c.source, avec->shape_id(c.ishape));
 
   polydem_compat::request_size_list(neighbor, this, instance_me, true);
 
@@ -287,7 +292,7 @@ double PairPolyhedron::init_one(int i, int j)
   fill(j, i);
 
   // particles present, and those an insertion fix may add later
-  double rmax = FixInsertPolyhedron::max_insert_radius(lmp);
+  double rmax = ParticleSource::max_radius(lmp);
   for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
   double all;
   MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
@@ -320,7 +325,7 @@ void PairPolyhedron::check_timestep()
   for (int i = 0; i < atom->nlocal; i++)
     consider(atom->pshape[i], atom->pscale[i], atom->rmass[i], atom->type[i]);
   // and the smallest of each kind an insertion fix will add
-  for (const auto &c : FixInsertPolyhedron::candidates(lmp))
+  for (const auto &c : ParticleSource::candidates(lmp))
     if (!avec->shape(c.ishape).is_ellipsoid()) consider(c.ishape, c.scale, c.mass, c.type);
   double all[2];
   MPI_Allreduce(tc, all, 2, MPI_DOUBLE, MPI_MIN, world);

@@ -566,6 +566,14 @@ TEST(Insert, BadInputIsRefusedClearly)
     EXPECT_TRUE(has(l.error_of("run 0"), "is an ellipsoid, but pair_style polyhedron"));
   }
   {
+    // and the other way round (the pair styles refuse, through ParticleSource)
+    Lmp l;
+    l.cmds(box);
+    l.cmds({"comm_modify vel yes", f + "10 1 density 1 region box shape d 1 scale 0.001 per 1",
+            "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5"});
+    EXPECT_TRUE(has(l.error_of("run 0"), "shape 'd' is a polyhedron, but pair_style ellipsoid"));
+  }
+  {
     // a target fraction beyond reach: a warning, and what was placed stays
     Lmp l;
     l.cmds(box);
