@@ -74,15 +74,21 @@ template <typename T> struct WallForce {
 // ellipsoid patches (polydem_wall_ellipsoid.h) both end here, and
 // wall_contact_forces is the one loop of slot matching, contact_step and
 // history for both.
-// key[k]: the patch's region seed normal as met (lab, from the particle
+// key[k]: the patch's first facet normal as met (lab, from the particle
 // into the wall), which names the contact from step to step (history slot,
 // kept side): the contact normal g.normal tilts where the prism's sides take
 // part (open borders, sharp edges), the facet's normal does not.
+// kpoint[k]: a vertex of that facet (lab): the kept side's plane is the
+// facet's own (key, kpoint), whose distance from the centroid is continuous;
+// the contact point, an area-weighted mean over the patch's sections, can
+// jump off the facets' planes where a section ends (an open border) on a
+// curved patch, and the plane through it then claimed no triangle.
 template <typename T> struct WallContacts {
   int n;
   int on[WALL_MAX_PATCH];
   ContactGeometry<T> g[WALL_MAX_PATCH];
   Vec3<T> key[WALL_MAX_PATCH];
+  Vec3<T> kpoint[WALL_MAX_PATCH];
 };
 
 // Polyhedron patches: V, S = -sum n_t A_t, M summed over the patch's
@@ -108,6 +114,7 @@ POLYDEM_FN WallContacts<T> wall_patch_contacts(const WallPatches<T> &P, const Me
     g.M_B = make_vec3(T(0), T(0), T(0));
     g.normal = (T(1) / an) * g.S_A;    // from the particle into the wall
     C.key[k] = -matvec(mp.R, q.nseed);
+    C.kpoint[k] = xw + matvec(mp.R, q.p0 - mp.o);
     const Vec3<T> cm = q.area > T(0) ? (T(1) / q.area) * q.ac : (T(1) / q.volume) * q.vc;
     g.centroid = xw + matvec(mp.R, cm - mp.o);
     g.gradient_damping = 0;
@@ -186,7 +193,7 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
     h[0] = key.x;
     h[1] = key.y;
     h[2] = key.z;
-    h[3] = dot(key, g.centroid - x);
+    h[3] = dot(key, C.kpoint[k] - x);
     for (int i = 0; i < CONTACT_HIST; ++i) h[4 + i] = shear[i];
     out.f += cf.F_A;
     out.fpatch[k] = cf.F_A;

@@ -226,6 +226,8 @@ template <typename T> struct WallEllipsoidAccumulate {
     bool opened;
     const int k = wall_patch_slot(*out, *g, wall_region_key(*g, t, side), nw, cosmax, opened);
     if (opened) {
+      const T *q = g->tri + 9 * t;
+      out->p[k].p0 = make_vec3(q[0], q[1], q[2]);
       out->p[k].behind = 0;
       dbest[k] = T(-1);    // < any contact's delta (> 0)
     }
@@ -288,6 +290,7 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
     g.S_A = matvec(mp.R, q.S);
     g.normal = (T(1) / norm(g.S_A)) * g.S_A;    // from the particle into the wall
     C.key[k] = -matvec(mp.R, q.nseed);
+    C.kpoint[k] = xw + matvec(mp.R, q.p0 - mp.o);
     g.M_A = matvec(mp.R, q.M);
     g.M_B = make_vec3(T(0), T(0), T(0));
     g.centroid = xw + matvec(mp.R, q.ac - mp.o);

@@ -30,7 +30,8 @@ constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle 
 // overlap delta (mesh frame), ac the contact point, vc the deepest point,
 // depth delta, tri the triangle of the closest point.
 template <typename T> struct WallPatch {
-  Vec3<T> nseed;    // the region's seed normal as met, or the first facet's (mesh frame)
+  Vec3<T> nseed;    // first facet's normal n_w (mesh frame)
+  Vec3<T> p0;       // a vertex of the first facet: with nseed, the contact's plane (kept side)
   T volume, area;
   Vec3<T> S, M;     // sums (mesh frame)
   Vec3<T> ac;       // area-weighted sum of section centroids
@@ -142,8 +143,10 @@ template <typename T> POLYDEM_FN int wall_region_key(const MeshGridView<T> &g, i
 // that key, else (no regions) the closest normal within the patch angle,
 // else a new patch (opened: the caller fills its sums), else (all
 // WALL_MAX_PATCH taken) the closest normal, counted in nmerged. A new
-// patch's nseed is its region's seed normal as met (fixed, so the history
-// that follows it by normal matches exactly), or n.
+// patch's nseed is n, its first facet's normal: with the contact point it
+// names the plane of the contact for the kept side (wall_side), so it must
+// be a facet's own plane, not a region's (whose seed facet may lie far away
+// and 20 degrees off).
 template <typename T>
 POLYDEM_FN int wall_patch_slot(WallPatches<T> &P, const MeshGridView<T> &g, int key,
                                const Vec3<T> &n, T cosmax, bool &opened)
@@ -161,12 +164,7 @@ POLYDEM_FN int wall_patch_slot(WallPatches<T> &P, const MeshGridView<T> &g, int 
     const int k = P.n++;
     WallPatch<T> &p = P.p[k];
     p.key = key;
-    if (key >= 0) {
-      const T *pl = g.plane + 4 * (key >> 1);
-      const T sg = (key & 1) ? T(-1) : T(1);
-      p.nseed = make_vec3(sg * pl[0], sg * pl[1], sg * pl[2]);
-    } else
-      p.nseed = n;
+    p.nseed = n;
     opened = true;
     return k;
   }
@@ -511,6 +509,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     if (opened) {
       WallPatch<T> &p = out->p[k];
       const Vec3<T> z = make_vec3(T(0), T(0), T(0));
+      p.p0 = tri.v[0];
       p.volume = p.area = T(0);
       p.depth = T(0);
       p.behind = 0;

@@ -22,9 +22,9 @@ constexpr int WALL_MAX_PATCH = 4;    // contacts per particle and mesh
 
 // Which side of a triangle acts on a particle (two-sided walls). The side
 // is where the centroid is when the contact begins, kept while it lasts:
-// a contact kept from the previous step (normal n_c from the particle into
-// the wall, e_c = n_c . (p_c - x) the distance from the centroid x to its
-// plane through the section centroid p_c) claims a triangle whose plane,
+// a contact kept from the previous step (normal n_c of its first facet, from
+// the particle into the wall, e_c = n_c . (p_c - x) the distance from the
+// centroid x to that facet's plane, p_c a vertex of it) claims a triangle whose plane,
 // met on side s (normal -s n_t into the wall, distance e = s h, h the
 // centroid's height above the front), agrees with it: normals within 45
 // degrees, planes within WALL_SIDE_TOL x the bounding radius (the closest
