@@ -88,7 +88,7 @@ ax2.plot(t, -d[:, h.index("f_floor[3]")], color="C2", lw=0.8, label="load on the
 ax2.set_ylabel("vertical load on the floor (N)", color="C2")
 ax2.axhline(mass * 9.81, color="C2", ls=":", lw=0.8)
 ax2.text(0.01, mass * 9.81 * 1.03, "weight of the grains", fontsize=8, color="C2")
-ax.legend(loc="center left", fontsize=8)
+ax.legend(loc="upper left", bbox_to_anchor=(0.1, 0.88), fontsize=8)
 fig.tight_layout()
 fig.savefig("hopper_discharge.png")
 print("wrote hopper_discharge.png")
