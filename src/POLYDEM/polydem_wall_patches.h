@@ -143,10 +143,10 @@ template <typename T> POLYDEM_FN int wall_region_key(const MeshGridView<T> &g, i
 // that key, else (no regions) the closest normal within the patch angle,
 // else a new patch (opened: the caller fills its sums), else (all
 // WALL_MAX_PATCH taken) the closest normal, counted in nmerged. A new
-// patch's nseed is n, its first facet's normal: with the contact point it
-// names the plane of the contact for the kept side (wall_side), so it must
-// be a facet's own plane, not a region's (whose seed facet may lie far away
-// and 20 degrees off).
+// patch's nseed is n, its first facet's normal: with a vertex of that facet
+// (p0) it names the plane of the contact for the kept side (wall_side), so
+// it must be a facet's own plane, not a region's (whose seed facet may lie
+// far away and 20 degrees off).
 template <typename T>
 POLYDEM_FN int wall_patch_slot(WallPatches<T> &P, const MeshGridView<T> &g, int key,
                                const Vec3<T> &n, T cosmax, bool &opened)
