@@ -6,7 +6,7 @@
 
 #include "error.h"
 #include "group.h"
-#include "pair_polyhedron.h"
+#include "poly_roles.h"
 #include "update.h"
 
 #include "polydem_contact_record.h"
@@ -41,7 +41,7 @@ ComputeContactPolyhedron::~ComputeContactPolyhedron()
 
 void ComputeContactPolyhedron::init()
 {
-  pair = PairPolyhedron::require(lmp, "contact/polyhedron");
+  pair = ContactRecordSource::require(lmp, "contact/polyhedron");
 }
 
 void ComputeContactPolyhedron::compute_vector()

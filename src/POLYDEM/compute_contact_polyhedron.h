@@ -26,7 +26,7 @@ class ComputeContactPolyhedron : public Compute {
   void compute_vector() override;
 
  private:
-  class PairPolyhedron *pair;
+  class ContactRecordSource *pair;    // pair polyhedron (poly_roles.h)
 };
 
 }    // namespace LAMMPS_NS

@@ -6,7 +6,7 @@
 
 #include "error.h"
 #include "memory.h"
-#include "pair_polyhedron.h"
+#include "poly_roles.h"
 #include "update.h"
 
 #include "polydem_contact_record.h"
@@ -63,7 +63,7 @@ ComputeContactPolyhedronLocal::~ComputeContactPolyhedronLocal()
 
 void ComputeContactPolyhedronLocal::init()
 {
-  pair = PairPolyhedron::require(lmp, "contact/polyhedron/local");
+  pair = ContactRecordSource::require(lmp, "contact/polyhedron/local");
 }
 
 /* ----------------------------------------------------------------------

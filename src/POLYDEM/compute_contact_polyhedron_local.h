@@ -30,7 +30,7 @@ class ComputeContactPolyhedronLocal : public Compute {
  private:
   std::vector<int> field;    // record field (polydem_contact_record.h) per column
   int nmax;
-  class PairPolyhedron *pair;
+  class ContactRecordSource *pair;    // pair polyhedron (poly_roles.h)
 };
 
 }    // namespace LAMMPS_NS

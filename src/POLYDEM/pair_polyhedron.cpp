@@ -433,14 +433,6 @@ bool PairPolyhedron::store_contacts_now()
   return due;
 }
 
-PairPolyhedron *PairPolyhedron::require(LAMMPS *lmp, const char *who)
-{
-  auto *p = dynamic_cast<PairPolyhedron *>(lmp->force->pair);
-  if (!p)
-    lmp->error->all(FLERR, "compute {} requires pair_style polyhedron or polyhedron/kk", who);
-  return p;
-}
-
 const double *PairPolyhedron::contact_records(int &n, const char *who)
 {
   if (contact_step != update->ntimestep)

@@ -16,6 +16,7 @@ PairStyle(polyhedron,PairPolyhedron);
 #define LMP_PAIR_POLYHEDRON_H
 
 #include "pair.h"
+#include "poly_roles.h"
 #include "polydem_lammps_compat.h"
 #include "polydem_law_table.h"
 
@@ -28,7 +29,7 @@ template <typename T, int MF> struct OverlapWorkspace;
 
 namespace LAMMPS_NS {
 
-class PairPolyhedron : public Pair {
+class PairPolyhedron : public Pair, public ContactRecordSource {
  public:
   PairPolyhedron(class LAMMPS *);
   ~PairPolyhedron() override;
@@ -53,9 +54,7 @@ class PairPolyhedron : public Pair {
   // the current step, each contact once over all ranks, for the contact
   // computes. Stored only on the steps such a compute is due (Compute
   // timeflag/matchstep, as for compute pe); errors naming 'who' otherwise.
-  const double *contact_records(int &n, const char *who);
-  // the pair polyhedron (plain or /kk) of this LAMMPS, else an error naming 'who'
-  static PairPolyhedron *require(class LAMMPS *lmp, const char *who);
+  const double *contact_records(int &n, const char *who) override;
 
  protected:
   double *youngs, *poisson;    // per type

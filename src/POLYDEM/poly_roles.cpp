@@ -4,9 +4,12 @@
 
 #include "poly_roles.h"
 
+#include "error.h"
 #include "fix.h"
+#include "force.h"
 #include "lammps.h"
 #include "modify.h"
+#include "pair.h"
 
 #include <algorithm>
 
@@ -40,4 +43,12 @@ std::vector<ParticleSource::Candidate> ParticleSource::candidates(LAMMPS *lmp)
     if (s) s->add_candidates(out);
   }
   return out;
+}
+
+ContactRecordSource *ContactRecordSource::require(LAMMPS *lmp, const char *who)
+{
+  auto *p = dynamic_cast<ContactRecordSource *>(lmp->force->pair);
+  if (!p)
+    lmp->error->all(FLERR, "compute {} requires pair_style polyhedron or polyhedron/kk", who);
+  return p;
 }

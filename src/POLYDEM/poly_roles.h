@@ -8,6 +8,8 @@
    - ParticleSource: a fix that creates particles during a run (fix
      insert/polyhedron); pair styles and walls size their cutoffs and check
      the time step and material with the particles to come.
+   - ContactRecordSource: a pair style that records its contacts (pair
+     polyhedron, plain and /kk) for the contact computes.
 ------------------------------------------------------------------------- */
 
 #ifndef LMP_POLY_ROLES_H
@@ -50,6 +52,17 @@ class ParticleSource {
   // over every fix with this role
   static double max_radius(LAMMPS *);
   static std::vector<Candidate> candidates(LAMMPS *);
+};
+
+class ContactRecordSource {
+ public:
+  virtual ~ContactRecordSource() = default;
+  // the per-contact records (polydem_contact_record.h) of the current
+  // step's force evaluation; an error naming compute 'who' if there are none
+  virtual const double *contact_records(int &n, const char *who) = 0;
+  // the pair style of this LAMMPS if it has the role, else an error naming
+  // compute 'who'
+  static ContactRecordSource *require(LAMMPS *, const char *who);
 };
 
 }    // namespace LAMMPS_NS
