@@ -23,15 +23,21 @@ namespace LAMMPS_NS {
 
 class LAMMPS;
 
+// The roles' destructors are protected and not virtual: a role is never
+// deleted through it, and a virtual one would have to repeat the exception
+// specification of the style's own base (Fix and Pair are noexcept(false)
+// in some LAMMPS versions).
 class InsertionObstacle {
  public:
-  virtual ~InsertionObstacle() = default;
   // true if body b (lab frame, orientation q) is certified farther than gap
   // from the obstacle at its current pose and has no contact with it
   virtual bool insertion_clear(const polydem::InsertBody<double> &b,
                                const polydem::Quat<double> &q, double gap) = 0;
   // every fix with this role, in the order of modify
   static std::vector<InsertionObstacle *> all(LAMMPS *);
+
+ protected:
+  ~InsertionObstacle() = default;
 };
 
 class ParticleSource {
@@ -44,7 +50,6 @@ class ParticleSource {
     int mask;             // the group bits the created atoms get
     const char *source;   // the fix's ID (messages)
   };
-  virtual ~ParticleSource() = default;
   // largest bounding radius of a particle it may create (0: none)
   virtual double max_insert_radius() const = 0;
   virtual void add_candidates(std::vector<Candidate> &out) const = 0;
@@ -52,17 +57,22 @@ class ParticleSource {
   // over every fix with this role
   static double max_radius(LAMMPS *);
   static std::vector<Candidate> candidates(LAMMPS *);
+
+ protected:
+  ~ParticleSource() = default;
 };
 
 class ContactRecordSource {
  public:
-  virtual ~ContactRecordSource() = default;
   // the per-contact records (polydem_contact_record.h) of the current
   // step's force evaluation; an error naming compute 'who' if there are none
   virtual const double *contact_records(int &n, const char *who) = 0;
   // the pair style of this LAMMPS if it has the role, else an error naming
   // compute 'who'
   static ContactRecordSource *require(LAMMPS *, const char *who);
+
+ protected:
+  ~ContactRecordSource() = default;
 };
 
 }    // namespace LAMMPS_NS
