@@ -305,15 +305,19 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       error->warning(FLERR, "fix wall/mesh: {}: {} duplicate triangles dropped", file,
                      mesh.nduplicate);
   }
-  // coplanar merging (same on every rank: deterministic)
-  if (merge_tol >= 0.0) {
+  // the mesh's bounding-box diagonal: the tolerances below are relative to it
+  double diag = 0.0;
+  {
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     for (size_t k = 0; k < mesh.tri.size(); k++) {
       lo[k % 3] = MIN(lo[k % 3], mesh.tri[k]);
       hi[k % 3] = MAX(hi[k % 3], mesh.tri[k]);
     }
-    const double diag = sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                             (hi[2] - lo[2]) * (hi[2] - lo[2]));
+    for (int d = 0; d < 3; d++) diag += (hi[d] - lo[d]) * (hi[d] - lo[d]);
+    diag = sqrt(diag);
+  }
+  // coplanar merging (same on every rank: deterministic)
+  if (merge_tol >= 0.0) {
     merged = polydem::merge_coplanar(mesh.tri, merge_tol * diag);
     if (comm->me == 0 && merged.after != merged.before)
       utils::logmesg(lmp, "fix wall/mesh {}: {} coplanar regions re-triangulated, {} -> {} "
@@ -322,16 +326,10 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
                      merged.kept_holes + merged.kept_failed);
   }
 
-  // smooth regions, the patches' keys (after merging: its triangles)
+  // smooth regions, the patches' keys (after merging: its triangles; merging
+  // keeps the outline's vertices, so the bounding box too)
   {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (size_t k = 0; k < mesh.tri.size(); k++) {
-      lo[k % 3] = MIN(lo[k % 3], mesh.tri[k]);
-      hi[k % 3] = MAX(hi[k % 3], mesh.tri[k]);
-    }
-    double diag = 0.0;
-    for (int d = 0; d < 3; d++) diag += (hi[d] - lo[d]) * (hi[d] - lo[d]);
-    regions = polydem::mesh_regions(mesh.tri, cosmax, 1e-9 * sqrt(diag));
+    regions = polydem::mesh_regions(mesh.tri, cosmax, 1e-9 * diag);
     if (comm->me == 0) {
       int nreg = 0;
       for (size_t t = 0; t < regions.size(); t++) nreg += regions[t] >> 1 == (int) t;
