@@ -13,8 +13,11 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 using namespace polydem;
@@ -284,4 +287,33 @@ BENCHMARK_CAPTURE(overlap_wsmax, cylinder42, cyl_pairs());
 BENCHMARK_CAPTURE(gjk_overlap_ws22, cylinder42, cyl_pairs());
 BENCHMARK_CAPTURE(overlap_ws22, cylinder42_tetra_start, cyl_pairs_tetra());
 
-BENCHMARK_MAIN();
+// Fixed work for instruction counts (repeatable where wall time is not):
+//   valgrind --tool=callgrind --toggle-collect='*fixed_loop*' bench_kernels --fixed 4
+// runs GJK, then the overlap, over each pair set `reps` times; instructions
+// per call = the inclusive count of gjk_intersect / polyhedron_overlap
+// divided by 512 x reps.
+__attribute__((noinline)) double fixed_loop(PairSet &ps, int reps)
+{
+  static OverlapWorkspace<double, 22> ws;
+  double sum = 0;
+  for (int r = 0; r < reps; ++r)
+    for (size_t i = 0; i < ps.a.size(); ++i) sum += gjk_intersect(ps.a[i], ps.b[i]).iterations;
+  for (int r = 0; r < reps; ++r)
+    for (size_t i = 0; i < ps.a.size(); ++i) sum += polyhedron_overlap(ps.a[i], ps.b[i], ws).volume;
+  return sum;
+}
+
+int main(int argc, char **argv)
+{
+  if (argc == 3 && std::string(argv[1]) == "--fixed") {
+    const int reps = std::atoi(argv[2]);
+    PairSet &d = dodeca_pairs(), &c = cyl_pairs();
+    std::printf("dodecahedron %.17g\ncylinder42 %.17g\n", fixed_loop(d, reps), fixed_loop(c, reps));
+    return 0;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

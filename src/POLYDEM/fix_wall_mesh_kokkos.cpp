@@ -222,6 +222,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
     dv.face_verts = d_sface_verts.data() + off[3];
     dv.edges = d_sedges.data() + off[4];
     dv.dual = nullptr;    // host memory; the clip kernel does not use the dual seed
+    dv.vadj = nullptr;    // host memory; the support search scans instead
     h_shapes(t) = dv;
     for (int k = 0; k < 5; k++) off[k] += add[k];
   }

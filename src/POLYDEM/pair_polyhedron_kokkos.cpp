@@ -290,7 +290,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
     nfs += sv.nfaces + 1;
     nfv += sv.face_start[sv.nfaces];
     ne += 2 * sv.nedges;
-    nd += polydem::dual_seed_ints(sv);
+    nd += polydem::dual_seed_ints(sv) + polydem::vertex_adjacency_ints(sv);
     max_faces = std::max(max_faces, sv.nfaces);
   }
   d_sverts = Kokkos::View<double *, DeviceType>("polyhedron/kk:verts", nv);
@@ -316,8 +316,11 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
     for (int k = 0; k <= sv.nfaces; k++) h_fs(nfs + k) = sv.face_start[k];
     for (int k = 0; k < nface_verts; k++) h_fv(nfv + k) = sv.face_verts[k];
     for (int k = 0; k < 2 * sv.nedges; k++) h_edges(ne + k) = sv.edges[k];
+    // the dual seed and the vertex adjacency share one int array
     const int ndual = polydem::dual_seed_ints(sv);
+    const int nadj = polydem::vertex_adjacency_ints(sv);
     for (int k = 0; k < ndual; k++) h_dual(nd + k) = sv.dual[k];
+    for (int k = 0; k < nadj; k++) h_dual(nd + ndual + k) = sv.vadj[k];
     polydem::ShapeView<double> dv = sv;    // counts, radius, volume, inertia
     dv.verts = d_sverts.data() + nv;
     dv.planes = d_splanes.data() + np;
@@ -325,13 +328,14 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes
     dv.face_verts = d_sface_verts.data() + nfv;
     dv.edges = d_sedges.data() + ne;
     dv.dual = ndual > 0 ? d_sdual.data() + nd : nullptr;
+    dv.vadj = nadj > 0 ? d_sdual.data() + nd + ndual : nullptr;
     h_shapes(t) = dv;
     nv += 3 * sv.nverts;
     np += 4 * sv.nfaces;
     nfs += sv.nfaces + 1;
     nfv += nface_verts;
     ne += 2 * sv.nedges;
-    nd += ndual;
+    nd += ndual + nadj;
   }
   Kokkos::deep_copy(d_sverts, h_verts);
   Kokkos::deep_copy(d_splanes, h_planes);

@@ -98,7 +98,8 @@ namespace hull_detail {
 }    // namespace hull_detail
 
 template <typename T, int MP>
-POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first);
+POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first,
+                                bool preset = false);
 
 // Build the intersection of planes 4..nplanes-1 (already in w.pl / w.owner)
 // inside a bounding tetrahedron of in-radius H [length] about x_o.
@@ -157,8 +158,11 @@ POLYDEM_FN int dual_hull_build(DualHullWorkspace<T, MP> &w, T H, T tol)
 // 0..ntslots-1 alive, with tc, tadj, P; planes below first already in it).
 // Used after the bounding tetrahedron (dual_hull_build) or after a seed
 // polyhedron copied from a template's dual triangulation (polydem_overlap.h).
+// preset: conflict[l] (l >= first) already holds the triangle of the hull
+// vertex furthest beyond plane l (e.g. from a support search), so the
+// initial conflicts need no scan of every triangle; -1 falls back to the scan.
 template <typename T, int MP>
-POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first)
+POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, bool preset)
 {
   using hull_detail::viol;
   constexpr int NB = DUAL_HULL_BOUND_PLANES;
@@ -168,6 +172,13 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first)
   for (int p = 0; p < MP; ++p) w.new_by_start[p] = w.new_by_end[p] = -1;
   // initial conflicts (seed Algorithm IV)
   for (int l = first; l < np; ++l) {
+    const int t0 = preset ? w.conflict[l] : -1;
+    if (t0 >= 0 && t0 < w.ntslots) {
+      const T v = viol(w, l, w.P[t0]);
+      w.conflict[l] = v > tol ? (short) t0 : (short) -1;
+      w.cviol[l] = v > tol ? v : tol;
+      continue;
+    }
     w.conflict[l] = -1;
     w.cviol[l] = tol;
     for (int t = 0; t < w.ntslots; ++t) {

@@ -13,6 +13,7 @@
      dual[0] = ntri,  then per triangle t (7 ints at 1 + 7 t):
      face[3], neighbour[3] (across edge face[e] -> face[e+1]), vertex.
    Host only (std containers); the result is plain data for the device.
+   Also the vertex adjacency that the support search climbs along.
 ------------------------------------------------------------------------- */
 
 #ifndef POLYDEM_DUAL_SEED_H
@@ -97,6 +98,30 @@ inline std::vector<int> build_dual_seed(int nverts, int nfaces, const double *pl
       q[3 + e] = it->second;
     }
   out[0] = nt;
+  return out;
+}
+
+// Vertex adjacency of a convex template for the support search's hill climb
+// (polydem_gjk.h): vadj[v] .. vadj[v+1]-1 index v's neighbours within the
+// same array (vadj[0] = nverts + 1, vadj[nverts] = total length). Empty if
+// some vertex has no edge (not a closed polyhedron).
+inline std::vector<int> build_vertex_adjacency(int nverts, int nedges, const int *edges)
+{
+  if (nverts < 4) return {};
+  std::vector<std::vector<int>> nb(nverts);
+  for (int e = 0; e < nedges; ++e) {
+    const int u = edges[2 * e], w = edges[2 * e + 1];
+    if (u < 0 || w < 0 || u >= nverts || w >= nverts || u == w) return {};
+    nb[u].push_back(w);
+    nb[w].push_back(u);
+  }
+  std::vector<int> out(nverts + 1, 0);
+  out[0] = nverts + 1;
+  for (int v = 0; v < nverts; ++v) {
+    if (nb[v].empty()) return {};
+    out.insert(out.end(), nb[v].begin(), nb[v].end());
+    out[v + 1] = (int) out.size();
+  }
   return out;
 }
 

@@ -38,25 +38,66 @@ template <typename T> POLYDEM_FN T posed_radius(const PosedShape<T> &a)
   return a.s * a.view->radius;
 }
 
-// Seed Eq. 2: lab-frame vertex of A maximising dir . p (dir need not be unit).
-// Brute force over the template's vertices: at <= MAX_TEMPLATE_VERTS this is
-// branch-light and as fast as hill climbing on GPUs.
+// Index of the template vertex maximising db . v (db in the body frame).
+// With the view's vertex adjacency: hill climbing along the edges from the
+// vertex `start` (a vertex that is not a maximiser of a linear function on a
+// convex polytope has a neighbour with a strictly larger value, so the
+// climb ends at a maximiser; at most nverts moves). Without it: a scan of
+// every vertex (start ignored). Ties keep the first vertex reached.
+template <typename T>
+POLYDEM_FN int support_index(const ShapeView<T> &s, const Vec3<T> &db, int start = 0)
+{
+  const T *v = s.verts;
+  const int nv = s.nverts;
+  int best = s.vadj != nullptr && start >= 0 && start < nv ? start : 0;
+  T bestd = v[3 * best] * db.x + v[3 * best + 1] * db.y + v[3 * best + 2] * db.z;
+  if (s.vadj == nullptr) {
+    for (int i = 1; i < nv; ++i) {
+      const T d = v[3 * i] * db.x + v[3 * i + 1] * db.y + v[3 * i + 2] * db.z;
+      if (d > bestd) {
+        bestd = d;
+        best = i;
+      }
+    }
+    return best;
+  }
+  const int *adj = s.vadj;
+  for (int moves = 0; moves < nv; ++moves) {
+    const int cur = best;
+    for (int k = adj[cur]; k < adj[cur + 1]; ++k) {
+      const int i = adj[k];
+      const T d = v[3 * i] * db.x + v[3 * i + 1] * db.y + v[3 * i + 2] * db.z;
+      if (d > bestd) {
+        bestd = d;
+        best = i;
+      }
+    }
+    if (best == cur) break;
+  }
+  return best;
+}
+
+// Lab-frame position of template vertex i of the posed shape a
+template <typename T> POLYDEM_FN Vec3<T> posed_vertex(const PosedShape<T> &a, int i)
+{
+  const T *v = a.view->verts + 3 * i;
+  return a.x + a.s * matvec(a.R, make_vec3(v[0], v[1], v[2]));
+}
+
+// Seed Eq. 2: lab-frame vertex of A maximising dir . p (dir need not be unit),
+// found by support_index from the vertex `start`; `start` receives the index
+// found, so that a sequence of nearby directions (GJK) climbs only a little.
+template <typename T>
+POLYDEM_FN Vec3<T> support_point(const PosedShape<T> &a, const Vec3<T> &dir, int &start)
+{
+  start = support_index(*a.view, matTvec(a.R, dir), start);
+  return posed_vertex(a, start);
+}
+
 template <typename T> POLYDEM_FN Vec3<T> support_point(const PosedShape<T> &a, const Vec3<T> &dir)
 {
-  const Vec3<T> db = matTvec(a.R, dir);
-  const T *v = a.view->verts;
-  int best = 0;
-  T bestd = v[0] * db.x + v[1] * db.y + v[2] * db.z;
-  const int nv = a.view->nverts;
-  for (int i = 1; i < nv; ++i) {
-    const T d = v[3 * i] * db.x + v[3 * i + 1] * db.y + v[3 * i + 2] * db.z;
-    if (d > bestd) {
-      bestd = d;
-      best = i;
-    }
-  }
-  const Vec3<T> pb = make_vec3(v[3 * best], v[3 * best + 1], v[3 * best + 2]);
-  return a.x + a.s * matvec(a.R, pb);
+  int start = 0;
+  return support_point(a, dir, start);
 }
 
 // Broad phase (seed 2.2): true if the bounding spheres overlap or touch.
@@ -249,8 +290,18 @@ POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T
   // seed Algorithm I line 1: start from the centroid difference
   Vec3<T> v = a.x - b.x;
   if (norm2(v) <= tol * tol) v = make_vec3(T(1), T(0), T(0));
-  v = support_point(a, -v) - support_point(b, v);
+  int ia = 0, ib = 0;    // support vertices, each search starting from the last
+  const Vec3<T> v0 = v;
+  v = support_point(a, -v, ia) - support_point(b, v, ib);
   w[n++] = v;
+  // the centre line itself separates with a gap larger than tol: apart (the
+  // common case of near neighbours in a loose bed, decided by two supports)
+  if (dot(v0, v) > tol * norm(v0)) {
+    res.status = STATUS_SEPARATED;
+    res.distance = norm(v);
+    res.iterations = 1;
+    return res;
+  }
   for (int it = 0; it < GJK_MAX_ITER; ++it) {
     res.iterations = it + 1;
     const T vv = norm2(v);
@@ -259,7 +310,7 @@ POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T
       return res;
     }
     // new support point of A - B in direction -v (seed Eq. 3)
-    const Vec3<T> sp = support_point(a, -v) - support_point(b, v);
+    const Vec3<T> sp = support_point(a, -v, ia) - support_point(b, v, ib);
     const T vw = dot(v, sp);
     const T vn = sqrt(vv);
     // separating plane found with a gap larger than tol (seed Algorithm I line 7)

@@ -85,23 +85,21 @@ namespace overlap_detail {
       pl[4 * f + 3] = a.s * q[3] + dot(n, xo);
     }
   }
-  // false if the posed shape o lies inside n . (p - xs) <= h - tol: the plane
-  // cannot bound the overlap with o and may be dropped
+  // -1 if the posed shape o lies inside n . (p - xs) <= h - tol: the plane
+  // cannot bound the overlap with o and may be dropped; else the index of
+  // o's vertex furthest along n (its support, searched from `start`)
   template <typename T>
-  POLYDEM_FN bool plane_cuts(const PosedShape<T> &o, const T *q, const Vec3<T> &xs, T tol)
+  POLYDEM_FN int plane_cuts(const PosedShape<T> &o, const T *q, const Vec3<T> &xs, T tol,
+                            int start)
   {
     const Vec3<T> n = make_vec3(q[0], q[1], q[2]);
     const T c = dot(n, o.x - xs);
     const T lim = q[3] - tol;
-    if (c + posed_radius(o) <= lim) return false;    // bounding sphere inside
+    if (c + posed_radius(o) <= lim) return -1;    // bounding sphere inside
     const Vec3<T> nb = matTvec(o.R, n);
-    const T *v = o.view->verts;
-    T m = nb.x * v[0] + nb.y * v[1] + nb.z * v[2];
-    for (int i = 1; i < o.view->nverts; ++i) {
-      const T d = nb.x * v[3 * i] + nb.y * v[3 * i + 1] + nb.z * v[3 * i + 2];
-      m = d > m ? d : m;
-    }
-    return c + o.s * m > lim;
+    const int i = support_index(*o.view, nb, start);
+    const T *v = o.view->verts + 3 * i;
+    return c + o.s * (nb.x * v[0] + nb.y * v[1] + nb.z * v[2]) > lim ? i : -1;
   }
 }    // namespace overlap_detail
 
@@ -153,31 +151,41 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   overlap_detail::posed_planes(a, xs, pl);
   overlap_detail::posed_planes(b, xs, pl + 4 * fa);
   // drop the planes of B that do not cut A: A n B' = A n B exactly. (Dropping
-  // on both sides at once would not be exact: B' is larger than B.)
+  // on both sides at once would not be exact: B' is larger than B.) The
+  // support vertex of A along each kept plane of B is its furthest point
+  // beyond it, the plane's first conflict on the seeded hull (kept in
+  // w.conflict until the hull starts). The support searches start from A's
+  // vertex furthest from B or nearest to it, whichever side the plane faces.
+  const Vec3<T> dab = a.x - b.x;
+  const Vec3<T> dab_b = matTvec(a.R, dab);
+  const int far_a = support_index(*a.view, dab_b), near_a = support_index(*a.view, -dab_b);
   int ka = 0, kb = 0;
   for (int i = 0; i < fa + fb; ++i) {
     const T *q = pl + 4 * i;
-    if (i >= fa && !overlap_detail::plane_cuts(a, q, xs, tol)) continue;
+    int sup = -1;
+    if (i >= fa) {
+      const int start = q[0] * dab.x + q[1] * dab.y + q[2] * dab.z > T(0) ? far_a : near_a;
+      sup = overlap_detail::plane_cuts(a, q, xs, tol, start);
+      if (sup < 0) continue;
+    }
     T *d = pl + 4 * (ka + kb);    // compaction: d <= q
     d[0] = q[0];
     d[1] = q[1];
     d[2] = q[2];
     d[3] = q[3];
+    w.conflict[NB + ka + kb] = (short) sup;
     if (i < fa)
       ++ka;
     else
       ++kb;
-  }
-  if (ka + kb < 4) {    // cannot bound a solid: the shapes are apart
-    overlap_result_zero(res, STATUS_SEPARATED);
-    return res;
   }
   // Start of the hull: A itself when its template carries a dual
   // triangulation (then only B's planes are inserted, and no interior point
   // is needed to build), else a bounding tetrahedron about the Chebyshev
   // centre of both half-space systems (polarisation point, seed Eq. 4).
   const int *seed = a.view->dual;
-  const bool seeded = seed != nullptr && seed[0] >= 4 && seed[0] <= w.MAXT;
+  const bool seeded =
+      seed != nullptr && seed[0] >= 4 && seed[0] <= w.MAXT && a.view->nverts <= w.MAXT;
   Vec3<T> xc = make_vec3(T(0), T(0), T(0));
   T r = T(0);
   if (!seeded) {
@@ -198,13 +206,15 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   int np = NB;
   for (int i = 0; i < ka + kb; ++i) {
     T *q = pl + 4 * i;
-    const T h = offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), xc);
+    const T h = seeded ? q[3] : offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), xc);
     unsigned char own = i < ka ? OWNER_A : OWNER_B;
     if (i >= ka) {
       bool merged = false;
       for (int j = NB; j < NB + ka && !merged; ++j) {
         const T *p = w.pl + 4 * j;
-        const T dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+        const T dx = p[0] - q[0];
+        if (fabs(dx) > T(16) * eps) continue;    // the common case, decided by one component
+        const T dy = p[1] - q[1], dz = p[2] - q[2];
         if (dx * dx + dy * dy + dz * dz <= T(256) * eps * eps && fabs(p[3] - h) <= tol) {
           w.owner[j] = OWNER_BOTH;
           merged = true;
@@ -218,28 +228,41 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
     d[2] = q[2];
     d[3] = h;
     w.owner[np] = own;
+    w.conflict[np] = w.conflict[NB + i];    // np <= NB + i
     ++np;
   }
   w.nplanes = np;
   int st;
   if (seeded) {
-    // A's planes are NB..NB+fa-1 in face order, its vertices the seed's
+    // A's planes are NB..NB+fa-1 in face order, its vertices the seed's;
+    // each vertex is posed once (w.stack maps vertex -> its first triangle:
+    // a polyhedron has nverts <= 2 nfaces - 4 < MAXT)
     const int nt = seed[0];
     const Vec3<T> xa = a.x - x0;
+    short *vt = w.stack;
+    for (int i = 0; i < a.view->nverts; ++i) vt[i] = -1;
     for (int t = 0; t < nt; ++t) {
       const int *q = seed + 1 + DUAL_SEED_STRIDE_K * t;
       for (int e = 0; e < 3; ++e) {
         w.tc[t][e] = (short) (NB + q[e]);
         w.tadj[t][e] = (short) q[3 + e];
       }
-      const T *v = a.view->verts + 3 * q[6];
-      w.P[t] = xa + a.s * matvec(a.R, make_vec3(v[0], v[1], v[2]));
+      const int iv = q[6];
+      if (vt[iv] >= 0) {
+        w.P[t] = w.P[vt[iv]];
+      } else {
+        const T *v = a.view->verts + 3 * iv;
+        w.P[t] = xa + a.s * matvec(a.R, make_vec3(v[0], v[1], v[2]));
+        vt[iv] = (short) t;
+      }
       w.tstate[t] = 1;
       w.tstamp[t] = -1;
     }
     w.ntslots = nt;
     for (int l = NB; l < NB + fa; ++l) w.conflict[l] = -2;
-    st = dual_hull_expand(w, tol, NB + fa);
+    // B's first conflicts: the triangles of their support vertices
+    for (int l = NB + fa; l < np; ++l) w.conflict[l] = vt[w.conflict[l]];
+    st = dual_hull_expand(w, tol, NB + fa, true);
   } else {
     // bounding tetrahedron around A (the overlap lies inside A)
     const T H = T(1.5) * (norm(a.x - x0) + posed_radius(a)) + L;
@@ -265,7 +288,14 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
       }
     c = (T(1) / T(nc > 0 ? nc : 1)) * c;
     for (int t = 0; t < w.ntslots; ++t) w.P[t] -= c;
+    // move the planes of the overlap's faces (only those are integrated;
+    // w.hz_new marks them)
+    for (int l = NB; l < np; ++l) w.hz_new[l] = 0;
+    for (int t = 0; t < w.ntslots; ++t)
+      if (w.tstate[t] == 1)
+        for (int e = 0; e < 3; ++e) w.hz_new[w.tc[t][e]] = 1;
     for (int l = NB; l < np; ++l) {
+      if (!w.hz_new[l]) continue;
       T *q = w.pl + 4 * l;
       q[3] = offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), c);
     }

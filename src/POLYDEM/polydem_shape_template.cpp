@@ -945,6 +945,7 @@ void PolyShapeTemplate::make_float_copy()
 {
   dual_ =
       build_dual_seed(nverts(), nfaces(), planes_.data(), face_start_.data(), face_verts_.data());
+  vadj_ = build_vertex_adjacency(nverts(), nedges(), edges_.data());
   verts_f_.assign(verts_.begin(), verts_.end());
   planes_f_.assign(planes_.begin(), planes_.end());
 }
@@ -983,7 +984,8 @@ double PolyShapeTemplate::max_face_area() const
 template <typename T>
 static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, const int *fs,
                               const int *fv, const int *ed, double r, double vol,
-                              const std::array<double, 3> &mom, const int *dual)
+                              const std::array<double, 3> &mom, const int *dual,
+                              const int *vadj)
 {
   ShapeView<T> s;
   s.nverts = nv;
@@ -998,6 +1000,7 @@ static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, c
   s.volume = (T) vol;
   for (int i = 0; i < 3; ++i) s.inertia[i] = (T) mom[i];
   s.dual = dual;
+  s.vadj = vadj;
   return s;
 }
 
@@ -1005,14 +1008,16 @@ ShapeView<double> PolyShapeTemplate::view() const
 {
   return make_view<double>(nverts(), nfaces(), nedges(), verts_.data(), planes_.data(),
                            face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
-                           moments_, dual_.empty() ? nullptr : dual_.data());
+                           moments_, dual_.empty() ? nullptr : dual_.data(),
+                           vadj_.empty() ? nullptr : vadj_.data());
 }
 
 ShapeView<float> PolyShapeTemplate::view_float() const
 {
   return make_view<float>(nverts(), nfaces(), nedges(), verts_f_.data(), planes_f_.data(),
                           face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
-                          moments_, dual_.empty() ? nullptr : dual_.data());
+                          moments_, dual_.empty() ? nullptr : dual_.data(),
+                           vadj_.empty() ? nullptr : vadj_.data());
 }
 
 // rotation matrix -> unit quaternion (Shepperd's method: largest pivot)

@@ -135,6 +135,7 @@ class PolyShapeTemplate {
   std::vector<double> verts_, planes_;
   std::vector<int> face_start_, face_verts_, edges_;
   std::vector<int> dual_;    // dual triangulation (polydem_dual_seed.h)
+  std::vector<int> vadj_;    // vertex adjacency (polydem_dual_seed.h)
   std::vector<float> verts_f_, planes_f_;
 
   bool ellipsoid_ = false;

@@ -37,12 +37,22 @@ template <typename T> struct ShapeView {
   // dual triangulation (polydem_dual_seed.h), or null: the overlap kernel
   // then starts from a bounding tetrahedron instead of from this shape
   const int *dual = nullptr;
+  // vertex adjacency (build_vertex_adjacency), or null: the support search
+  // then scans every vertex instead of climbing along the edges.
+  // vadj[v]..vadj[v+1]-1 index the neighbours of v within vadj itself.
+  const int *vadj = nullptr;
 };
 
 // ints in a view's dual triangulation array (0 if it has none)
 template <typename T> POLYDEM_FN int dual_seed_ints(const ShapeView<T> &v)
 {
   return v.dual ? 1 + DUAL_SEED_STRIDE_K * v.dual[0] : 0;
+}
+
+// ints in a view's vertex adjacency array (0 if it has none)
+template <typename T> POLYDEM_FN int vertex_adjacency_ints(const ShapeView<T> &v)
+{
+  return v.vadj ? v.vadj[v.nverts] : 0;
 }
 
 // Pose of one particle: position, orientation, scale.

@@ -207,7 +207,7 @@ template <typename T> struct DeviceTemplates {
       nfs += s.nfaces + 1;
       nfv += s.face_start[s.nfaces];
       ne += 2 * s.nedges;
-      nd += dual_seed_ints(s);
+      nd += dual_seed_ints(s) + vertex_adjacency_ints(s);
     }
     h.verts = Kokkos::View<T *, HostM>("verts", nv);
     h.planes = Kokkos::View<T *, HostM>("planes", np);
@@ -239,8 +239,9 @@ template <typename T> struct DeviceTemplates {
       for (int k = 0; k <= s.nfaces; ++k) h.face_start(ofs + k) = s.face_start[k];
       for (int k = 0; k < s.face_start[s.nfaces]; ++k) h.face_verts(ofv + k) = s.face_verts[k];
       for (int k = 0; k < 2 * s.nedges; ++k) h.edges(oe + k) = s.edges[k];
-      const int nds = dual_seed_ints(s);
+      const int nds = dual_seed_ints(s), nadj = vertex_adjacency_ints(s);
       for (int k = 0; k < nds; ++k) h.dual(od + k) = s.dual[k];
+      for (int k = 0; k < nadj; ++k) h.dual(od + nds + k) = s.vadj[k];    // adjacency after the seed
       hv.verts = h.verts.data() + ov;
       dv.verts = d.verts.data() + ov;
       hv.planes = h.planes.data() + op;
@@ -253,6 +254,8 @@ template <typename T> struct DeviceTemplates {
       dv.edges = d.edges.data() + oe;
       hv.dual = nds ? h.dual.data() + od : nullptr;
       dv.dual = nds ? d.dual.data() + od : nullptr;
+      hv.vadj = nadj ? h.dual.data() + od + nds : nullptr;
+      dv.vadj = nadj ? d.dual.data() + od + nds : nullptr;
       h.views(i) = hv;
       dviews(i) = dv;
       ov += 3 * s.nverts;
@@ -260,7 +263,7 @@ template <typename T> struct DeviceTemplates {
       ofs += s.nfaces + 1;
       ofv += s.face_start[s.nfaces];
       oe += 2 * s.nedges;
-      od += nds;
+      od += nds + nadj;
     }
     Kokkos::deep_copy(d.verts, h.verts);
     Kokkos::deep_copy(d.planes, h.planes);

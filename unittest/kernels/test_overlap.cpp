@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -502,6 +503,53 @@ bool separable(const std::vector<Vec3<double>> &A, const std::vector<Vec3<double
 }
 
 }    // namespace
+
+// The support search climbs along the template's edges (ShapeView::vadj)
+// from any start vertex; on every pool shape (cube, dodecahedron, cylinder,
+// 300 random hulls of 4-64 points, the shipped templates) and random, face-
+// normal and edge-normal directions (ties) it reaches the scan's maximum
+// to 1e-14 of the radius, and it never needs more moves than vertices.
+TEST(KernelGjk, SupportClimbEqualsScan)
+{
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> g(0.0, 1.0);
+  int ncase = 0, nclimb = 0;
+  for (size_t k = 0; k < pool().d.size(); ++k) {
+    const ShapeView<double> &v = pool().d[k]->view;
+    ASSERT_NE(v.vadj, nullptr) << k;
+    ShapeView<double> scan = v;
+    scan.vadj = nullptr;
+    std::vector<Vec3<double>> dirs;
+    for (int i = 0; i < 40; ++i) dirs.push_back(make_vec3(g(rng), g(rng), g(rng)));
+    for (int f = 0; f < v.nfaces; ++f)    // a whole face ties
+      dirs.push_back(make_vec3(v.planes[4 * f], v.planes[4 * f + 1], v.planes[4 * f + 2]));
+    std::map<std::pair<int, int>, std::vector<int>> edge_faces;
+    for (int f = 0; f < v.nfaces; ++f)
+      for (int i = v.face_start[f]; i < v.face_start[f + 1]; ++i) {
+        const int a = v.face_verts[i];
+        const int b = v.face_verts[i + 1 < v.face_start[f + 1] ? i + 1 : v.face_start[f]];
+        edge_faces[{std::min(a, b), std::max(a, b)}].push_back(f);
+      }
+    for (const auto &ef : edge_faces) {    // an edge ties: the sum of its two faces' normals
+      if (ef.second.size() != 2) continue;
+      const double *n1 = v.planes + 4 * ef.second[0], *n2 = v.planes + 4 * ef.second[1];
+      dirs.push_back(make_vec3(n1[0] + n2[0], n1[1] + n2[1], n1[2] + n2[2]));
+    }
+    for (const auto &d : dirs) {
+      const int is = support_index(scan, d);
+      const double best = dot(d, make_vec3(v.verts[3 * is], v.verts[3 * is + 1], v.verts[3 * is + 2]));
+      const int start = (int) (rng() % (unsigned) v.nverts);
+      const int ic = support_index(v, d, start);
+      const double got = dot(d, make_vec3(v.verts[3 * ic], v.verts[3 * ic + 1], v.verts[3 * ic + 2]));
+      EXPECT_LE(best - got, 1e-14 * norm(d) * v.radius) << "shape " << k << " start " << start;
+      ++ncase;
+      nclimb += ic != start;
+    }
+  }
+  std::printf("[ gjk      ] support climb vs scan: %d directions on %zu shapes (%d moved)\n",
+              ncase, pool().d.size(), nclimb);
+  EXPECT_GT(ncase, 10000);
+}
 
 // Certified distance lower bound used by the wall near lists: on random
 // separated point clouds it never exceeds the brute-force hull distance

@@ -139,6 +139,7 @@ ShapeData make_shape(const std::vector<std::array<double, 3>> &in)
     }
   s.dual = polydem::build_dual_seed(s.nverts(), nf, s.planes.data(), s.face_start.data(),
                                     s.face_verts.data());
+  s.vadj = polydem::build_vertex_adjacency(s.nverts(), (int) s.edges.size() / 2, s.edges.data());
   return s;
 }
 

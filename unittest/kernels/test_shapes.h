@@ -18,6 +18,7 @@ struct ShapeData {
   std::vector<double> verts, planes;    // 3*nv, 4*nf
   std::vector<int> face_start, face_verts, edges;
   std::vector<int> dual;    // polydem_dual_seed.h
+  std::vector<int> vadj;    // vertex adjacency (polydem_dual_seed.h)
   double radius = 0, volume = 0;
   int nverts() const { return (int) verts.size() / 3; }
   int nfaces() const { return (int) planes.size() / 4; }
@@ -49,6 +50,7 @@ template <typename T> TypedShape<T> *typed(const ShapeData &s)
   v.volume = (T) s.volume;
   v.inertia[0] = v.inertia[1] = v.inertia[2] = T(0);
   v.dual = s.dual.empty() ? nullptr : s.dual.data();
+  v.vadj = s.vadj.empty() ? nullptr : s.vadj.data();
   return t;
 }
 
