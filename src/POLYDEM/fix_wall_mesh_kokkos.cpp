@@ -180,18 +180,19 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
   const PolyShapeLibrary *av = avec;
   const int n = av->ntemplates();
   if (n == 0) error->all(FLERR, "fix wall/mesh/kk: no shape defined (polyhedron_shape)");
-  int size[5] = {0, 0, 0, 0, 0};    // verts, planes, face_start, face_verts, edges
+  int size[6] = {0, 0, 0, 0, 0, 0};    // verts, planes, face_start, face_verts, edges, vadj
   for (int t = 0; t < n; t++) {
     const auto sv = av->shape(t).view();
-    const int add[5] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
-                        2 * sv.nedges};
-    for (int k = 0; k < 5; k++) size[k] += add[k];
+    const int add[6] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
+                        2 * sv.nedges, polydem::vertex_adjacency_ints(sv)};
+    for (int k = 0; k < 6; k++) size[k] += add[k];
   }
   d_sverts = Kokkos::View<double *, DeviceType>("wall/mesh/kk:verts", size[0]);
   d_splanes = Kokkos::View<double *, DeviceType>("wall/mesh/kk:planes", size[1]);
   d_sface_start = Kokkos::View<int *, DeviceType>("wall/mesh/kk:face_start", size[2]);
   d_sface_verts = Kokkos::View<int *, DeviceType>("wall/mesh/kk:face_verts", size[3]);
   d_sedges = Kokkos::View<int *, DeviceType>("wall/mesh/kk:edges", size[4]);
+  d_svadj = Kokkos::View<int *, DeviceType>("wall/mesh/kk:vadj", size[5]);
   d_shapes = Kokkos::View<polydem::ShapeView<double> *, DeviceType>("wall/mesh/kk:shapes", n);
   d_axes = Kokkos::View<double *[3], DeviceType>("wall/mesh/kk:axes", n);
   auto h_axes = Kokkos::create_mirror_view(d_axes);
@@ -204,17 +205,19 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
   auto h_fs = Kokkos::create_mirror_view(d_sface_start);
   auto h_fv = Kokkos::create_mirror_view(d_sface_verts);
   auto h_edges = Kokkos::create_mirror_view(d_sedges);
+  auto h_vadj = Kokkos::create_mirror_view(d_svadj);
   auto h_shapes = Kokkos::create_mirror_view(d_shapes);
-  int off[5] = {0, 0, 0, 0, 0};
+  int off[6] = {0, 0, 0, 0, 0, 0};
   for (int t = 0; t < n; t++) {
     const auto sv = av->shape(t).view();
-    const int add[5] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
-                        2 * sv.nedges};
+    const int add[6] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
+                        2 * sv.nedges, polydem::vertex_adjacency_ints(sv)};
     for (int k = 0; k < add[0]; k++) h_verts(off[0] + k) = sv.verts[k];
     for (int k = 0; k < add[1]; k++) h_planes(off[1] + k) = sv.planes[k];
     for (int k = 0; k < add[2]; k++) h_fs(off[2] + k) = sv.face_start[k];
     for (int k = 0; k < add[3]; k++) h_fv(off[3] + k) = sv.face_verts[k];
     for (int k = 0; k < add[4]; k++) h_edges(off[4] + k) = sv.edges[k];
+    for (int k = 0; k < add[5]; k++) h_vadj(off[5] + k) = sv.vadj[k];
     polydem::ShapeView<double> dv = sv;    // counts, radius, volume, inertia
     dv.verts = d_sverts.data() + off[0];
     dv.planes = d_splanes.data() + off[1];
@@ -222,15 +225,16 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
     dv.face_verts = d_sface_verts.data() + off[3];
     dv.edges = d_sedges.data() + off[4];
     dv.dual = nullptr;    // host memory; the clip kernel does not use the dual seed
-    dv.vadj = nullptr;    // host memory; the support search scans instead
+    dv.vadj = add[5] > 0 ? d_svadj.data() + off[5] : nullptr;
     h_shapes(t) = dv;
-    for (int k = 0; k < 5; k++) off[k] += add[k];
+    for (int k = 0; k < 6; k++) off[k] += add[k];
   }
   Kokkos::deep_copy(d_sverts, h_verts);
   Kokkos::deep_copy(d_splanes, h_planes);
   Kokkos::deep_copy(d_sface_start, h_fs);
   Kokkos::deep_copy(d_sface_verts, h_fv);
   Kokkos::deep_copy(d_sedges, h_edges);
+  Kokkos::deep_copy(d_svadj, h_vadj);
   Kokkos::deep_copy(d_shapes, h_shapes);
   shape_version = avec->shape_version();
 }

@@ -58,7 +58,7 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   // shape templates, flat, and one ShapeView each pointing into them
   int shape_version;
   Kokkos::View<double *, DeviceType> d_sverts, d_splanes;
-  Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges;
+  Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges, d_svadj;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
   // semi-axes per template at unit scale (0: a polyhedron), as pair ellipsoid/kk
   Kokkos::View<double *[3], DeviceType> d_axes;

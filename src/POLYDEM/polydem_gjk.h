@@ -38,20 +38,21 @@ template <typename T> POLYDEM_FN T posed_radius(const PosedShape<T> &a)
   return a.s * a.view->radius;
 }
 
-// Index of the template vertex maximising db . v (db in the body frame).
-// With the view's vertex adjacency: hill climbing along the edges from the
-// vertex `start` (a vertex that is not a maximiser of a linear function on a
-// convex polytope has a neighbour with a strictly larger value, so the
-// climb ends at a maximiser; at most nverts moves). Without it: a scan of
-// every vertex (start ignored). Ties keep the first vertex reached.
+// Index of the point of P (np points, xyz) maximising d . p. With an
+// adjacency (vadj layout of ShapeView: the edges of the convex polytope
+// whose vertices the points are, in any affine image): hill climbing along
+// the edges from the point `start` (a vertex that is not a maximiser of a
+// linear function on a convex polytope has a neighbour with a strictly
+// larger value, so the climb ends at a maximiser; at most np moves).
+// Without it: a scan of every point (start ignored). Ties keep the first
+// point reached.
 template <typename T>
-POLYDEM_FN int support_index(const ShapeView<T> &s, const Vec3<T> &db, int start = 0)
+POLYDEM_FN int support_index_points(const T *v, int nv, const int *adj, const Vec3<T> &db,
+                                    int start = 0)
 {
-  const T *v = s.verts;
-  const int nv = s.nverts;
-  int best = s.vadj != nullptr && start >= 0 && start < nv ? start : 0;
+  int best = adj != nullptr && start >= 0 && start < nv ? start : 0;
   T bestd = v[3 * best] * db.x + v[3 * best + 1] * db.y + v[3 * best + 2] * db.z;
-  if (s.vadj == nullptr) {
+  if (adj == nullptr) {
     for (int i = 1; i < nv; ++i) {
       const T d = v[3 * i] * db.x + v[3 * i + 1] * db.y + v[3 * i + 2] * db.z;
       if (d > bestd) {
@@ -61,7 +62,6 @@ POLYDEM_FN int support_index(const ShapeView<T> &s, const Vec3<T> &db, int start
     }
     return best;
   }
-  const int *adj = s.vadj;
   for (int moves = 0; moves < nv; ++moves) {
     const int cur = best;
     for (int k = adj[cur]; k < adj[cur + 1]; ++k) {
@@ -75,6 +75,14 @@ POLYDEM_FN int support_index(const ShapeView<T> &s, const Vec3<T> &db, int start
     if (best == cur) break;
   }
   return best;
+}
+
+// Index of the template vertex maximising db . v (db in the body frame),
+// climbing along the view's vertex adjacency where it has one
+template <typename T>
+POLYDEM_FN int support_index(const ShapeView<T> &s, const Vec3<T> &db, int start = 0)
+{
+  return support_index_points(s.verts, s.nverts, s.vadj, db, start);
 }
 
 // Lab-frame position of template vertex i of the posed shape a
@@ -344,22 +352,23 @@ POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T
 // Support functor of a point set (na points, xyz): the point maximising d . p.
 template <typename T> POLYDEM_FN Vec3<T> support_of_points(const T *P, int np, const Vec3<T> &d)
 {
-  int best = 0;
-  T bd = P[0] * d.x + P[1] * d.y + P[2] * d.z;
-  for (int i = 1; i < np; ++i) {
-    const T e = P[3 * i] * d.x + P[3 * i + 1] * d.y + P[3 * i + 2] * d.z;
-    if (e > bd) {
-      bd = e;
-      best = i;
-    }
-  }
+  const int best = support_index_points(P, np, (const int *) nullptr, d);
   return make_vec3(P[3 * best], P[3 * best + 1], P[3 * best + 2]);
 }
 
+// The same as a functor; with adj (the points are a posed template's
+// vertices in template order, adj its vadj) the search climbs from the point
+// the previous call found.
 template <typename T> struct PointsSupport {
   const T *P;
   int np;
-  POLYDEM_FN Vec3<T> operator()(const Vec3<T> &d) const { return support_of_points(P, np, d); }
+  const int *adj = nullptr;
+  mutable int start = 0;
+  POLYDEM_FN Vec3<T> operator()(const Vec3<T> &d) const
+  {
+    start = support_index_points(P, np, adj, d, start);
+    return make_vec3(P[3 * start], P[3 * start + 1], P[3 * start + 2]);
+  }
 };
 
 // Certified bounds lb <= d <= ub of the distance d between two convex sets
@@ -413,13 +422,16 @@ POLYDEM_FN T gjk_gap_lower_bound(const SA &sa, const SB &sb, Vec3<T> v, T tol, T
   return lb;
 }
 
-// The same for the convex hulls of the point sets A (na points) and B (nb).
+// The same for the convex hulls of the point sets A (na points) and B (nb);
+// adja: A's vertex adjacency if A is a posed template's vertex set.
 template <typename T>
-POLYDEM_FN T hull_gap_lower_bound(const T *A, int na, const T *B, int nb, T tol, T stop)
+POLYDEM_FN T hull_gap_lower_bound(const T *A, int na, const T *B, int nb, T tol, T stop,
+                                  const int *adja = nullptr)
 {
   PointsSupport<T> sa, sb;
   sa.P = A;
   sa.np = na;
+  sa.adj = adja;
   sb.P = B;
   sb.np = nb;
   return gjk_gap_lower_bound(sa, sb, make_vec3(A[0] - B[0], A[1] - B[1], A[2] - B[2]), tol, stop);

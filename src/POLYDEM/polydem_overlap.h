@@ -88,9 +88,10 @@ namespace overlap_detail {
   // -1 if the posed shape o lies inside n . (p - xs) <= h - tol: the plane
   // cannot bound the overlap with o and may be dropped; else the index of
   // o's vertex furthest along n (its support, searched from `start`)
+  // (ext: o's extent along n beyond the plane, n . (p_sup - xs) - h)
   template <typename T>
   POLYDEM_FN int plane_cuts(const PosedShape<T> &o, const T *q, const Vec3<T> &xs, T tol,
-                            int start)
+                            int start, T &ext)
   {
     const Vec3<T> n = make_vec3(q[0], q[1], q[2]);
     const T c = dot(n, o.x - xs);
@@ -99,7 +100,9 @@ namespace overlap_detail {
     const Vec3<T> nb = matTvec(o.R, n);
     const int i = support_index(*o.view, nb, start);
     const T *v = o.view->verts + 3 * i;
-    return c + o.s * (nb.x * v[0] + nb.y * v[1] + nb.z * v[2]) > lim ? i : -1;
+    const T m = c + o.s * (nb.x * v[0] + nb.y * v[1] + nb.z * v[2]);
+    ext = m - q[3];
+    return m > lim ? i : -1;
   }
 }    // namespace overlap_detail
 
@@ -163,11 +166,13 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   for (int i = 0; i < fa + fb; ++i) {
     const T *q = pl + 4 * i;
     int sup = -1;
+    T ext = T(0);
     if (i >= fa) {
       const int start = q[0] * dab.x + q[1] * dab.y + q[2] * dab.z > T(0) ? far_a : near_a;
-      sup = overlap_detail::plane_cuts(a, q, xs, tol, start);
+      sup = overlap_detail::plane_cuts(a, q, xs, tol, start, ext);
       if (sup < 0) continue;
     }
+    w.cviol[NB + ka + kb] = ext;
     T *d = pl + 4 * (ka + kb);    // compaction: d <= q
     d[0] = q[0];
     d[1] = q[1];
@@ -208,7 +213,11 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
     T *q = pl + 4 * i;
     const T h = seeded ? q[3] : offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), xc);
     unsigned char own = i < ka ? OWNER_A : OWNER_B;
-    if (i >= ka) {
+    // a plane of B can coincide with one of A only if A reaches just to it
+    // (A's face on that plane: its extent equals h up to the offsets' tol
+    // and the normals' 16 eps): the others skip the search
+    const T ext = w.cviol[NB + i];
+    if (i >= ka && fabs(ext) <= tol + T(64) * eps * L) {
       bool merged = false;
       for (int j = NB; j < NB + ka && !merged; ++j) {
         const T *p = w.pl + 4 * j;

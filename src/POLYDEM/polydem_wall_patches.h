@@ -557,19 +557,19 @@ template <typename T, int MF, int ME> struct WallAccumulate {
 // wall_sides_crossed), so its bound is |h_c| - WALL_SIDE_TOL r.
 template <typename T, int MF, int ME>
 POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace<T, MF, ME> &ws,
-                            int nv, const Vec3<T> &c, T r, T reach, T stop, int both)
+                            int nv, const Vec3<T> &c, T r, T reach, T stop, int both,
+                            const int *vadj, int &vstart)
 {
   const T *pc = g.plane + 4 * t;
   const T hc = pc[0] * c.x + pc[1] * c.y + pc[2] * c.z - pc[3];
   const T sd = both && hc < T(0) ? T(-1) : T(1);
   const T pl[4] = {sd * pc[0], sd * pc[1], sd * pc[2], sd * pc[3]};
   const T other = both ? sd * hc - T(WALL_SIDE_TOL) * r : T(1e300);
-  T hmin = T(1e300);
-  for (int i = 0; i < nv; ++i) {
-    const T h = pl[0] * ws.verts[3 * i] + pl[1] * ws.verts[3 * i + 1] +
-        pl[2] * ws.verts[3 * i + 2] - pl[3];
-    hmin = h < hmin ? h : hmin;
-  }
+  // the vertex nearest the plane: a support search along -n (climbing the
+  // template's edges from the previous triangle's answer, where vadj is set)
+  vstart = support_index_points(ws.verts, nv, vadj, make_vec3(-pl[0], -pl[1], -pl[2]), vstart);
+  const T *vm = ws.verts + 3 * vstart;
+  const T hmin = pl[0] * vm[0] + pl[1] * vm[1] + pl[2] * vm[2] - pl[3];
   if (hmin > T(0)) return hmin < other ? hmin : other;
   const T depth = reach - sd * hc;
   T B[18];
@@ -579,7 +579,7 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
       B[3 * v + k] = q[3 * v + k];
       B[9 + 3 * v + k] = q[3 * v + k] - depth * pl[k];
     }
-  const T gap = hull_gap_lower_bound(ws.verts, nv, B, 6, T(1e-12) * reach, stop);
+  const T gap = hull_gap_lower_bound(ws.verts, nv, B, 6, T(1e-12) * reach, stop, vadj);
   return gap < other ? gap : other;
 }
 
@@ -596,6 +596,8 @@ template <typename T, int MF, int ME> struct WallNearBuild {
   Vec3<T> c;
   T r, reach, skin, valid;
   int nv, n, both;
+  const int *vadj;    // the template's vertex adjacency, or null (support scans)
+  int vstart;         // the last support vertex
   POLYDEM_FN void operator()(int t)
   {
     const T *q = g->tri + 9 * t;
@@ -606,7 +608,7 @@ template <typename T, int MF, int ME> struct WallNearBuild {
       valid = ds < valid ? ds : valid;
       return;
     }
-    T gap = wall_prism_gap(*g, t, *ws, nv, c, r, reach, valid, both);
+    T gap = wall_prism_gap(*g, t, *ws, nv, c, r, reach, valid, both, vadj, vstart);
     if (!(gap == gap)) gap = T(0);    // no bound: always examined
     gap = ds > gap ? ds : gap;
     if (gap > skin) {
@@ -669,6 +671,8 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     b.near = &near;
     b.c = a.x;
     b.nv = a.view->nverts;
+    b.vadj = a.view->vadj;
+    b.vstart = 0;
     b.both = acc.sides && acc.sides->both;
     b.r = r;
     b.skin = near.skin;
