@@ -74,9 +74,16 @@ template <class DeviceType>
 class FixNeighHistoryPolyhedronKokkos :
     public polydem_history::RestartBetweenRuns<FixNeighHistoryKokkos<DeviceType>> {
  public:
+  // Restart files name it NEIGH_HISTORY, as the plain styles' fix: its
+  // per-atom record is theirs (unpack_restart below), and Modify hands a
+  // file's record only to a fix of the same ID and style, so under its
+  // registered name a /kk run read from a plain run's restart file started
+  // without its contact history.
   FixNeighHistoryPolyhedronKokkos(LAMMPS *lmp, int narg, char **arg) :
       polydem_history::RestartBetweenRuns<FixNeighHistoryKokkos<DeviceType>>(lmp, narg, arg)
   {
+    delete[] this->style;
+    this->style = utils::strdup("NEIGH_HISTORY");
   }
   // The base class writes the partner arrays on the device in pre_exchange
   // and reads them there in post_neighbor without marking or syncing its

@@ -8,6 +8,7 @@
 #   polydem-gpu-kit/
 #     run.sh      the kit's one command (tools/gpu/run.sh)
 #     polydem/    this repository at HEAD (git archive) + the meshes the checks use
+#                 (tools/gpu/data: floor10k.stl, examples/silo's silo.stl, lid.stl)
 #     lammps/     the LAMMPS source POLYDEM builds against (29 Sep 2021, Debian's
 #                 source package): top-level src/ files, KOKKOS, ASPHERE,
 #                 GRANULAR, STUBS (MPI stubs), fmt, cmake/
@@ -18,10 +19,38 @@
 #
 # Run where the packages are reachable (the build machine): it uses the caches of
 # the normal build (LAMMPS source, Kokkos source) and fetches what is missing.
+#
+# bundle.sh --prebuilt DIR [--cuda-only | --cpu-only] [--jobs N]
+#
+# Builds here instead (CUDA nvcc needs no GPU) and writes into DIR a ready
+# run (tools/gpu/prebuild.sh): the executables (lmp with KOKKOS + POLYDEM +
+# MPI stubs, the kernel check) for CUDA and for Kokkos OpenMP, the shared
+# libraries a bare x86-64 Linux may lack, the inputs, meshes and shapes, the
+# plain styles' reference logs (computed here) and run.sh; then checks it in
+# a bare environment (check_bare.sh). On a GPU node:
+# `bash DIR/run.sh OUT --limit 300`; without a GPU: `bash DIR/run.sh OUT --cpu`.
+# The build folders stay in the cache (POLYDEM_CACHE_DIR/gpu-prebuilt), so a
+# second bundle recompiles only what changed. DIR must not exist or be empty.
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 repo=$(cd "$here/../.." && pwd)
-out=$(realpath -m "${1:-polydem-gpu-kit.tar.gz}")
+prebuilt="" pmodes=(cuda cpu) pjobs=$(nproc) out=""
+while [ $# -gt 0 ]; do
+  case $1 in
+    --prebuilt) prebuilt=$(realpath -m "$2"); shift ;;
+    --cuda-only) pmodes=(cuda) ;;
+    --cpu-only) pmodes=(cpu) ;;
+    --jobs) pjobs=$2; shift ;;
+    -*) echo "bundle.sh: unknown option $1" >&2; exit 2 ;;
+    *) out=$(realpath -m "$1") ;;
+  esac
+  shift
+done
+[ -z "$prebuilt" ] && [ -z "$out" ] && out=$(realpath -m polydem-gpu-kit.tar.gz)
+if [ -n "$prebuilt" ] && [ -e "$prebuilt" ] && [ -n "$(ls -A "$prebuilt")" ]; then
+  echo "bundle.sh: $prebuilt exists and is not empty" >&2
+  exit 2
+fi
 cache=${POLYDEM_CACHE_DIR:-$HOME/.cache/polydem}
 log() { echo "bundle: $*" >&2; }
 
@@ -40,7 +69,7 @@ mkdir -p "$kit/polydem/tools/gpu/data"
 (cd "$repo/bench/wall_mesh" &&
   { [ -f floor10k.stl ] || python3 make_floor.py floor10k.stl 71; } &&
   cp floor10k.stl "$kit/polydem/tools/gpu/data/")
-(cd "$repo/bench/wall_mesh" && python3 make_silo.py "$kit/polydem/tools/gpu/data/silo10k.stl" 80 40 22 > /dev/null)
+(cd "$kit/polydem/tools/gpu/data" && python3 "$repo/examples/silo/make_silo.py" silo.stl lid.stl > /dev/null)
 
 # --- LAMMPS ----------------------------------------------------------------------
 lmp_ver=20220106.git7586adbb6a+ds1-2
@@ -94,6 +123,16 @@ done
   echo "gmp      $(dpkg-query -W -f='${Version}' libgmp10 2> /dev/null) (libgmp.so.10)"
   echo "mpfr     $(dpkg-query -W -f='${Version}' libmpfr6 2> /dev/null) (libmpfr.so.6)"
 } > "$kit/MANIFEST"
+
+if [ -n "$prebuilt" ]; then
+  t0=$(date +%s)
+  bash "$here/prebuild.sh" "$kit" "$cache/gpu-prebuilt" "$prebuilt" "$pjobs" "${pmodes[@]}"
+  size=$(du -sm "$prebuilt" | cut -f1)
+  log "prebuilt run ${pmodes[*]} in $prebuilt: $size MiB, $(($(date +%s) - t0)) s"
+  [ "$size" -le 60 ] || { log "larger than 60 MiB"; exit 1; }
+  echo "$prebuilt"
+  exit 0
+fi
 
 log "writing $out"
 tar -C "$work" -czf "$out" polydem-gpu-kit

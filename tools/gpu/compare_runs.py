@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """/kk against plain, measured against the run's own sensitivity.
 
-    compare_runs.py plain.log perturbed.log kk.log [--factor 100] [--floor 1e-10]
+    compare_runs.py plain.log perturbed.log kk.log [--factor 100] [--floor 1e-10] [--common]
 
 plain.log and kk.log are the same input run by the plain and the /kk styles;
 perturbed.log is the plain run with every atom moved at random by ~1e-12 of
@@ -11,7 +11,9 @@ measures how far round-off alone may carry it by then. The /kk run passes if
 for every thermo value its difference d_kk <= max(factor * d_p, floor)
 (relative). Rows where d_p > 1e-3 (chaos saturated: no evidence either way)
 are reported and not judged; at least one judged row after the first must
-remain. Exit 0 pass, 1 fail, 2 malformed logs. Standard library only.
+remain. --common judges the rows the three logs have in common (a run cut
+short against the full run's logs: the first tables, each to the shortest).
+Exit 0 pass, 1 fail, 2 malformed logs. Standard library only.
 """
 import argparse
 import sys
@@ -52,12 +54,19 @@ def main():
     ap.add_argument("kk")
     ap.add_argument("--factor", type=float, default=100.0)
     ap.add_argument("--floor", type=float, default=1e-10)
+    ap.add_argument("--common", action="store_true")
     a = ap.parse_args()
     try:
         tp, tq, tk = tables(a.plain), tables(a.perturbed), tables(a.kk)
     except OSError as e:
         print(f"compare_runs: {e}")
         return 2
+    if a.common:
+        nt = min(len(tp), len(tq), len(tk))
+        tp, tq, tk = tp[:nt], tq[:nt], tk[:nt]
+        for p, q, k in zip(tp, tq, tk):
+            nr = min(len(p["rows"]), len(q["rows"]), len(k["rows"]))
+            p["rows"], q["rows"], k["rows"] = p["rows"][:nr], q["rows"][:nr], k["rows"][:nr]
     if not tp or len(tp) != len(tq) or len(tp) != len(tk):
         print(f"compare_runs: thermo tables differ in number ({len(tp)}, {len(tq)}, {len(tk)})")
         return 2

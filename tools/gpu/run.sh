@@ -1,33 +1,41 @@
 #!/bin/bash
-# run.sh OUTDIR [--cpu] [--build-only] [--jobs N] [--limit SECONDS] [--threads N]
+# run.sh OUTDIR [--cpu] [--build-only] [--references] [--jobs N] [--limit SECONDS] [--threads N]
 #
-# The GPU run kit's one command (issue 19), run from an unpacked kit
-# (tools/gpu/bundle.sh):
+# The GPU run kit's one command, run from an unpacked kit (tools/gpu/bundle.sh)
+# or from a prebuilt run (tools/gpu/bundle.sh --prebuilt DIR):
 #
 #   tar xzf polydem-gpu-kit.tar.gz && bash polydem-gpu-kit/run.sh /path/to/out
+#   bash DIR/run.sh /path/to/out --limit 300            # prebuilt: nothing to build
 #
-# On a node with an NVIDIA GPU, nvcc (CUDA >= 11; 13 tested for compiling),
-# CMake >= 3.16, a C++17 compiler and python3 (no MPI, no network) it builds
-# Kokkos 3.4.01 for CUDA (sm_80 code + PTX: Kokkos 3.4 cannot name Hopper,
-# the driver JIT-compiles the PTX for sm_90) and LAMMPS + POLYDEM with the
-# KOKKOS package and LAMMPS's MPI stubs, then runs, in this order:
+# From the kit, on a node with an NVIDIA GPU, nvcc (CUDA >= 11; 13 tested),
+# CMake >= 3.16, a C++17 compiler and python3 (no MPI, no network), it first
+# builds Kokkos 3.4.01 for CUDA (sm_80 code + PTX: Kokkos 3.4 cannot name
+# Hopper, the driver JIT-compiles the PTX for sm_90) and LAMMPS + POLYDEM with
+# the KOKKOS package and LAMMPS's MPI stubs. A prebuilt run needs only the
+# NVIDIA driver and python3. Then, in this order:
 #   kernels   the header-only kernels on the device against the host
-#   kk_pair, kk_wall, kk_ellipsoid
-#             /kk on the GPU against the plain styles on the CPU, judged
-#             against the run's own sensitivity (compare_runs.py)
-#   example   the main example (examples/hopper) with -sf kk
+#   kk_pair, kk_wall, kk_ellipsoid, kk_insert, kk_restart
+#             /kk on the GPU against the plain styles, judged against the
+#             run's own sensitivity (compare_runs.py); a prebuilt run carries
+#             the plain reference logs (ref/), the kit computes them
+#   example   the main example (examples/hopper) with -sf kk against its
+#             reference log (log.hopper), judged the same way
 #   memcheck, racecheck
 #             compute-sanitizer on a small pair and wall case (if present)
-#   bench_*   dense dodecahedra at N = 1e5 and 1e6, the silo: particle-steps/s
+#   bench_*   dense dodecahedra at N = 1e5 and 1e6 and a 2e5-grain slice of
+#             the silo: particle-steps/s and peak GPU memory
 # and writes OUTDIR/summary.txt (one line per step: PASS / FAIL / SKIP,
-# seconds, figures) and each step's log. It stops starting steps when the
-# time limit (default 570 s, including the build) would be passed, and says
-# which it skipped.
+# seconds, figures) and OUTDIR/logs.tar.gz (every step's log). It stops
+# starting steps when the time limit (default 570 s, including any build)
+# would be passed, and says which it skipped; a step that overruns its own
+# limit is killed.
 #
 #   --cpu         the same on the CPU: Kokkos OpenMP + Serial, -k on t N
-#                 (no compute-sanitizer); this is how the kit is verified
-#                 on a machine without a GPU
+#                 (no compute-sanitizer, smaller benchmarks); this is how the
+#                 kit is verified on a machine without a GPU
 #   --build-only  build (and, with CUDA, link) and stop
+#   --references  run only the plain styles' reference logs into OUTDIR
+#                 (bundle.sh --prebuilt does this for ref/)
 #   --jobs N      parallel compiles (default: all cores)
 #   --threads N   OpenMP threads of --cpu runs (default 2)
 #   --limit S     time limit in seconds (default 570)
@@ -35,8 +43,10 @@
 #              NVCC, CXX (host compiler), POLYDEM_CUDA_ARCH (default 80).
 set -uo pipefail
 kit=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-if [ ! -d "$kit/polydem" ] || [ ! -d "$kit/lammps" ] || [ ! -d "$kit/kokkos" ]; then
-  echo "run.sh: $kit is not an unpacked GPU run kit (make one with tools/gpu/bundle.sh)" >&2
+prebuilt=0
+[ -d "$kit/polydem" ] && { [ -x "$kit/bin/lmp" ] || [ -x "$kit/bin-cpu/lmp" ]; } && prebuilt=1
+if [ $prebuilt = 0 ] && { [ ! -d "$kit/polydem" ] || [ ! -d "$kit/lammps" ] || [ ! -d "$kit/kokkos" ]; }; then
+  echo "run.sh: $kit is neither an unpacked GPU run kit nor a prebuilt run (tools/gpu/bundle.sh)" >&2
   exit 2
 fi
 if [ $# -lt 1 ]; then
@@ -45,11 +55,12 @@ if [ $# -lt 1 ]; then
 fi
 out=$(mkdir -p "$1" && cd "$1" && pwd)
 shift
-mode=cuda build_only=0 jobs=$(nproc) threads=2 limit=570
+mode=cuda build_only=0 references=0 jobs=$(nproc) threads=2 limit=570
 while [ $# -gt 0 ]; do
   case $1 in
     --cpu) mode=cpu ;;
     --build-only) build_only=1 ;;
+    --references) references=1 ;;
     --jobs) jobs=$2; shift ;;
     --threads) threads=$2; shift ;;
     --limit) limit=$2; shift ;;
@@ -58,7 +69,11 @@ while [ $# -gt 0 ]; do
   shift
 done
 t_start=$(date +%s)
-work=${POLYDEM_KIT_WORK:-$kit/work}
+if [ $prebuilt = 1 ]; then
+  work=${POLYDEM_KIT_WORK:-${TMPDIR:-/tmp}/polydem-run.$$}
+else
+  work=${POLYDEM_KIT_WORK:-$kit/work}
+fi
 mkdir -p "$work"
 src=$kit/polydem
 summary=$out/summary.txt
@@ -123,12 +138,18 @@ step_figure() {
   case $1 in
     kernels) echo ": $(grep -h '^kernels' "$f" | sed 's/ relative (.*): / -> /' | paste -sd ';')" ;;
     kk_*) grep -h '^compare_runs' "$f" | sed 's/^compare_runs:/:/' | tail -n1 ;;
-    bench_* | example) grep -h '^BENCH' "$f" | sed 's/^BENCH/:/' | tail -n1 ;;
+    example) echo "$(grep -h '^compare_runs' "$f" | sed 's/^compare_runs:/:/' | tail -n1)$(grep -h '^BENCH' "$f" | sed 's/^BENCH/;/' | tail -n1)" ;;
+    bench_*) grep -h '^BENCH' "$f" | sed 's/^BENCH/:/' | tail -n1 ;;
   esac
 }
 
+
 {
-  echo "POLYDEM GPU run kit: $(head -n2 "$kit/MANIFEST" | tail -n1)"
+  if [ $prebuilt = 1 ]; then
+    echo "POLYDEM prebuilt run: $(sed -n 2p "$kit/MANIFEST"); $(grep '^prebuilt' "$kit/MANIFEST" | paste -sd ';')"
+  else
+    echo "POLYDEM GPU run kit: $(head -n2 "$kit/MANIFEST" | tail -n1)"
+  fi
   echo "mode $mode, $(nproc) cores, limit $limit s, $(date -u +%Y-%m-%dT%H:%M:%SZ)"
   if [ $mode = cuda ]; then
     command -v nvidia-smi > /dev/null && nvidia-smi --query-gpu=name,memory.total,driver_version \
@@ -136,143 +157,259 @@ step_figure() {
   fi
 } | tee -a "$summary"
 
-# --- compilers -------------------------------------------------------------------
-gen=()
-command -v ninja > /dev/null && gen=(-G Ninja)
-launcher=()
-command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-arch=${POLYDEM_CUDA_ARCH:-80}
-case $arch in
-  70) arch_opt=Kokkos_ARCH_VOLTA70 ;; 75) arch_opt=Kokkos_ARCH_TURING75 ;;
-  80) arch_opt=Kokkos_ARCH_AMPERE80 ;; 86) arch_opt=Kokkos_ARCH_AMPERE86 ;;
-  *) echo "run.sh: POLYDEM_CUDA_ARCH=$arch not known to Kokkos 3.4 (70 75 80 86)" >&2; exit 2 ;;
-esac
 if [ $mode = cuda ]; then
-  if [ -n "${NVCC:-}" ]; then
-    PATH="$(dirname "$NVCC"):$PATH"
-  elif ! command -v nvcc > /dev/null && [ -x /usr/local/cuda/bin/nvcc ]; then
-    PATH="/usr/local/cuda/bin:$PATH"
-  fi
-  export PATH
-  if ! command -v nvcc > /dev/null; then
-    note "FAIL  nvcc not found (set NVCC, or use --cpu)"
-    exit 1
-  fi
-  note "nvcc  $(nvcc --version | sed -n 's/.*release \([0-9.]*\).*/\1/p') ($(command -v nvcc)), code sm_$arch + compute_$arch PTX"
-  export NVCC_WRAPPER_DEFAULT_COMPILER=${CXX:-g++}
-  kk_cfg=(-DCMAKE_CXX_COMPILER="$kit/kokkos/bin/nvcc_wrapper" -DCMAKE_CXX_FLAGS="-arch=sm_$arch"
-    -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -D"$arch_opt"=ON -DKokkos_ENABLE_SERIAL=ON)
   kkargs=(-k on g 1 -sf kk -pk kokkos newton off)
 else
-  kk_cfg=(-DCMAKE_CXX_COMPILER="${CXX:-g++}" -DKokkos_ENABLE_OPENMP=ON -DKokkos_ENABLE_SERIAL=ON)
   kkargs=(-k on t "$threads" -sf kk -pk kokkos newton off)
 fi
 
-# --- 1. Kokkos ----------------------------------------------------------------------
-kprefix=$work/kokkos-$mode
-build_kokkos() {
-  cmake -S "$kit/kokkos" -B "$work/kokkos-$mode-build" "${gen[@]}" "${launcher[@]}" \
-    -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$kprefix" -DCMAKE_CXX_STANDARD=17 \
-    -DCMAKE_CXX_EXTENSIONS=OFF -DCMAKE_POSITION_INDEPENDENT_CODE=ON -DKokkos_ENABLE_TESTS=OFF \
-    -DKokkos_ENABLE_EXAMPLES=OFF "${kk_cfg[@]}" &&
-    cmake --build "$work/kokkos-$mode-build" -j "$jobs" &&
-    cmake --install "$work/kokkos-$mode-build"
-}
-step kokkos 60 100000 build_kokkos || { note "stopped: no Kokkos"; exit 1; }
-kconfig=$(dirname "$(find "$kprefix" -name KokkosConfig.cmake | head -n1)")
-
-# --- 2. LAMMPS + POLYDEM -----------------------------------------------------------------
-build=$work/build-$mode
-lmp_cfg=(-DLAMMPS_SOURCE_DIR="$kit/lammps" -DKokkos_DIR="$kconfig" -DBUILD_MPI=OFF
-  -DPOLYDEM_ENABLE_TESTS=OFF -DPOLYDEM_BUILD_BENCH=OFF -DPOLYDEM_CUDA_CHECK=OFF
-  -DPOLYDEM_CGAL_PREFIX="$kit/deps" -DCMAKE_BUILD_TYPE=Release -DPOLYDEM_CACHE_DIR="$work/cache")
-if [ $mode = cuda ]; then
-  lmp_cfg+=(-DCMAKE_CXX_COMPILER="$kprefix/bin/nvcc_wrapper" -DCMAKE_CXX_FLAGS="-arch=sm_$arch")
+if [ $prebuilt = 1 ]; then
+  # --- the prebuilt executables ------------------------------------------------------
+  bin=$kit/bin
+  [ $mode = cpu ] && bin=$kit/bin-cpu
+  if [ $references = 1 ]; then    # the plain styles: either build, the CPU one first
+    bin=$kit/bin-cpu
+    [ -x "$bin/lmp" ] || bin=$kit/bin
+  fi
+  if [ ! -x "$bin/lmp" ]; then
+    note "FAIL  $bin/lmp missing: this prebuilt run has no $mode build (bundle.sh --prebuilt)"
+    exit 1
+  fi
+  # where this node's glibc is older than the one they were linked against,
+  # run them with the bundled glibc and its loader
+  prefix=()
+  need=$(cat "$kit/lib/glibc/REQUIRED" 2> /dev/null || echo 0)
+  have=$(getconf GNU_LIBC_VERSION 2> /dev/null | awk '{print $2}')
+  if [ -n "$have" ] && [ "$(printf '%s\n%s\n' "$need" "$have" | sort -V | head -n1)" != "$need" ]; then
+    prefix=("$kit/lib/glibc/ld-linux-x86-64.so.2" --library-path "$kit/lib/glibc:$kit/lib")
+    note "glibc $have here, $need needed: the bundled glibc runs the executables"
+  fi
+  lmp=("${prefix[@]}" "$bin/lmp")
+  kernels_exe=("${prefix[@]}" "$bin/polydem_kernels_device")
 else
-  lmp_cfg+=(-DCMAKE_CXX_COMPILER="${CXX:-g++}" -DBUILD_OMP=ON)
-fi
-build_lammps() {
-  cmake -S "$src" -B "$build" "${gen[@]}" "${lmp_cfg[@]}" &&
-    cmake --build "$build" -j "$jobs" --target lmp
-}
-step lammps 120 100000 build_lammps || { note "stopped: no lmp"; exit 1; }
-lmp=$build/lmp
+  # --- compilers -------------------------------------------------------------------
+  gen=()
+  command -v ninja > /dev/null && gen=(-G Ninja)
+  launcher=()
+  command -v ccache > /dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  arch=${POLYDEM_CUDA_ARCH:-80}
+  case $arch in
+    70) arch_opt=Kokkos_ARCH_VOLTA70 ;; 75) arch_opt=Kokkos_ARCH_TURING75 ;;
+    80) arch_opt=Kokkos_ARCH_AMPERE80 ;; 86) arch_opt=Kokkos_ARCH_AMPERE86 ;;
+    *) echo "run.sh: POLYDEM_CUDA_ARCH=$arch not known to Kokkos 3.4 (70 75 80 86)" >&2; exit 2 ;;
+  esac
+  if [ $mode = cuda ]; then
+    if [ -n "${NVCC:-}" ]; then
+      PATH="$(dirname "$NVCC"):$PATH"
+    elif ! command -v nvcc > /dev/null && [ -x /usr/local/cuda/bin/nvcc ]; then
+      PATH="/usr/local/cuda/bin:$PATH"
+    fi
+    export PATH
+    if ! command -v nvcc > /dev/null; then
+      note "FAIL  nvcc not found (set NVCC, or use --cpu)"
+      exit 1
+    fi
+    note "nvcc  $(nvcc --version | sed -n 's/.*release \([0-9.]*\).*/\1/p') ($(command -v nvcc)), code sm_$arch + compute_$arch PTX"
+    export NVCC_WRAPPER_DEFAULT_COMPILER=${CXX:-g++}
+    kk_cfg=(-DCMAKE_CXX_COMPILER="$kit/kokkos/bin/nvcc_wrapper" -DCMAKE_CXX_FLAGS="-arch=sm_$arch"
+      -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -D"$arch_opt"=ON -DKokkos_ENABLE_SERIAL=ON)
+  else
+    kk_cfg=(-DCMAKE_CXX_COMPILER="${CXX:-g++}" -DKokkos_ENABLE_OPENMP=ON -DKokkos_ENABLE_SERIAL=ON)
+  fi
 
-# the kernel check program (unittest/cuda/kernels_cuda.cpp)
-klib=$(dirname "$(find "$kprefix" -name 'libkokkoscore*' | head -n1)")
-build_kernels() {
-  local cxx=("${CXX:-g++}" -fopenmp) dev=()
-  [ $mode = cuda ] && cxx=("$kprefix/bin/nvcc_wrapper") && dev=(-arch="sm_$arch" -expt-extended-lambda)
-  "${cxx[@]}" -std=c++17 -O2 "${dev[@]}" -DPOLYDEM_USE_KOKKOS -DPOLYDEM_KERNELS_MAIN \
-    -I"$src/src/POLYDEM" -isystem "$kprefix/include" "$src/unittest/cuda/kernels_cuda.cpp" \
-    -o "$build/polydem_kernels_device" "$build/libpolydem_shapes.a" -L"$klib" -lkokkoscore \
-    "$kit/deps/lib/libmpfr.so" "$kit/deps/lib/libgmp.so" -ldl -lpthread
-}
-step kernels_build 30 240 build_kernels
-if [ $build_only = 1 ]; then
-  note "built in $(elapsed) s (--build-only)"
-  exit 0
+  # --- 1. Kokkos ----------------------------------------------------------------------
+  kprefix=$work/kokkos-$mode
+  build_kokkos() {
+    cmake -S "$kit/kokkos" -B "$work/kokkos-$mode-build" "${gen[@]}" "${launcher[@]}" \
+      -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$kprefix" -DCMAKE_CXX_STANDARD=17 \
+      -DCMAKE_CXX_EXTENSIONS=OFF -DCMAKE_POSITION_INDEPENDENT_CODE=ON -DKokkos_ENABLE_TESTS=OFF \
+      -DKokkos_ENABLE_EXAMPLES=OFF "${kk_cfg[@]}" &&
+      cmake --build "$work/kokkos-$mode-build" -j "$jobs" &&
+      cmake --install "$work/kokkos-$mode-build"
+  }
+  step kokkos 60 100000 build_kokkos || { note "stopped: no Kokkos"; exit 1; }
+  kconfig=$(dirname "$(find "$kprefix" -name KokkosConfig.cmake | head -n1)")
+
+  # --- 2. LAMMPS + POLYDEM -----------------------------------------------------------------
+  build=$work/build-$mode
+  lmp_cfg=(-DLAMMPS_SOURCE_DIR="$kit/lammps" -DKokkos_DIR="$kconfig" -DBUILD_MPI=OFF
+    -DPOLYDEM_ENABLE_TESTS=OFF -DPOLYDEM_BUILD_BENCH=OFF -DPOLYDEM_CUDA_CHECK=OFF
+    -DPOLYDEM_CGAL_PREFIX="$kit/deps" -DCMAKE_BUILD_TYPE=Release -DPOLYDEM_CACHE_DIR="$work/cache"
+    -DCMAKE_BUILD_RPATH='$ORIGIN/../lib')    # a prebuilt run's lib/ (bundle.sh --prebuilt)
+  if [ $mode = cuda ]; then
+    lmp_cfg+=(-DCMAKE_CXX_COMPILER="$kprefix/bin/nvcc_wrapper" -DCMAKE_CXX_FLAGS="-arch=sm_$arch")
+  else
+    lmp_cfg+=(-DCMAKE_CXX_COMPILER="${CXX:-g++}" -DBUILD_OMP=ON)
+  fi
+  build_lammps() {
+    cmake -S "$src" -B "$build" "${gen[@]}" "${lmp_cfg[@]}" &&
+      cmake --build "$build" -j "$jobs" --target lmp
+  }
+  step lammps 120 100000 build_lammps || { note "stopped: no lmp"; exit 1; }
+  lmp=("$build/lmp")
+
+  # the kernel check program (unittest/cuda/kernels_cuda.cpp)
+  klib=$(dirname "$(find "$kprefix" -name 'libkokkoscore*' | head -n1)")
+  build_kernels() {
+    local cxx=("${CXX:-g++}" -fopenmp) dev=()
+    [ $mode = cuda ] && cxx=("$kprefix/bin/nvcc_wrapper") && dev=(-arch="sm_$arch" -expt-extended-lambda)
+    "${cxx[@]}" -std=c++17 -O2 "${dev[@]}" -DPOLYDEM_USE_KOKKOS -DPOLYDEM_KERNELS_MAIN \
+      -I"$src/src/POLYDEM" -isystem "$kprefix/include" "$src/unittest/cuda/kernels_cuda.cpp" \
+      -o "$build/polydem_kernels_device" "$build/libpolydem_shapes.a" -L"$klib" -lkokkoscore \
+      "$kit/deps/lib/libmpfr.so" "$kit/deps/lib/libgmp.so" -ldl -lpthread -Wl,-rpath,'$ORIGIN/../lib'
+  }
+  step kernels_build 30 240 build_kernels
+  kernels_exe=("$build/polydem_kernels_device")
+  if [ $build_only = 1 ]; then
+    note "built in $(elapsed) s (--build-only)"
+    exit 0
+  fi
 fi
 
 # --- 3. checks ----------------------------------------------------------------------------
 pot=$src/potentials
 data=$src/tools/gpu/data
+inputs=$src/tools/gpu/inputs
+ref=$kit/ref
+scratch=$work/runs
+mkdir -p "$scratch"
+
+# every log into one archive at the end (at most a few files come back)
+pack_logs() {
+  (cd "$out" && ls | grep -v -e '^summary.txt$' -e '^logs.tar.gz$' > "$work/logs.list"
+    if [ -s "$work/logs.list" ]; then
+      tar -czf logs.tar.gz -T "$work/logs.list" && xargs rm -f < "$work/logs.list"
+    fi)
+  [ $prebuilt = 1 ] && [ -z "${POLYDEM_KIT_WORK:-}" ] && rm -rf "$work"
+}
+
+# the cases /kk is judged on: NAME INPUT VARS... (the same in every mode, so
+# one set of reference logs serves the GPU and the --cpu runs)
+kk_cases() {
+  "$1" pair "$src/bench/in.dodeca_dense" -var nx 8 -var ny 8 -var nz 8 -var steps 50 -var every 10
+  "$1" wall "$src/bench/wall_mesh/in.floor" -var mesh "$data/floor10k.stl" -var steps1 1000 \
+    -var steps2 500 -var every 250
+  "$1" ellipsoid "$src/bench/in.ellipsoid_cundall" -var nside 6 -var pre 200 -var steps 200 -var every 100
+  "$1" insert "$inputs/in.kk_insert" -var mesh "$data/floor10k.stl"
+  "$1" restart "$inputs/in.kk_restart" -var phase read -var restart "$ref/kk.restart"
+}
+
+if [ $references = 1 ]; then
+  # the plain styles' logs: each case plain and perturbed; the restart file
+  # the restart case reads; the main example perturbed (its plain log is
+  # examples/hopper/log.hopper, 2 MPI ranks: a 1-rank run differs from it by
+  # round-off, the perturbation a /kk run brings too)
+  ref=$out
+  reference() {
+    local name=$1 input=$2
+    shift 2
+    local t0=$(date +%s)
+    (cd "$scratch" &&
+      "${lmp[@]}" -in "$input" -var pot "$pot" "$@" -log "$out/$name.plain" -screen none &&
+      "${lmp[@]}" -in "$input" -var pot "$pot" "$@" -var perturb 1e-12 -log "$out/$name.perturbed" \
+        -screen none) || { echo "reference $name failed"; return 1; }
+    echo "reference $name ($(($(date +%s) - t0)) s)"
+  }
+  (cd "$scratch" && "${lmp[@]}" -in "$inputs/in.kk_restart" -var pot "$pot" -var phase write \
+    -var restart "$out/kk.restart" -log none -screen none) || { echo "restart file failed"; exit 1; }
+  kk_cases reference || exit 1
+  t0=$(date +%s)
+  (cd "$scratch" && rm -rf hopper && cp -r "$src/examples/hopper" . && cd hopper &&
+    "${lmp[@]}" -in in.hopper -var pot "$pot" -log "$out/hopper.perturbed" -screen none) ||
+    { echo "reference hopper failed"; exit 1; }
+  echo "reference hopper ($(($(date +%s) - t0)) s)"
+  rm -f "$summary"
+  [ $prebuilt = 1 ] && [ -z "${POLYDEM_KIT_WORK:-}" ] && rm -rf "$work"
+  exit 0
+fi
+
 shapes=()
 for s in cube tetrahedron octahedron dodecahedron icosahedron mineral18 cylinder42; do
   shapes+=("$pot/$s.shape")
 done
 kargs=()
 [ $mode = cpu ] && kargs=(--kokkos-threads="$threads")
-step kernels 20 120 "$build/polydem_kernels_device" "${shapes[@]}" -n 4096 "${kargs[@]}"
+step kernels 20 120 "${kernels_exe[@]}" "${shapes[@]}" -n 4096 "${kargs[@]}"
 
-scratch=$work/runs
-mkdir -p "$scratch"
-# kk_case NAME INPUT VARS...: plain, plain perturbed, /kk; compare_runs.py
+# kk_case NAME INPUT VARS...: /kk against the plain and perturbed plain logs
+# (ref/, or run here where there is no ref/), compare_runs.py
 kk_case() {
   local name=$1 input=$2
   shift 2
   (
     cd "$scratch" || exit 1
-    "$lmp" -in "$input" -var pot "$pot" "$@" -log "$name.plain" -screen none &&
-      "$lmp" -in "$input" -var pot "$pot" "$@" -var perturb 1e-12 -log "$name.perturbed" -screen none &&
-      "$lmp" "${kkargs[@]}" -in "$input" -var pot "$pot" "$@" -log "$name.kk" -screen none &&
+    if [ -f "$ref/$name.plain" ] && [ -f "$ref/$name.perturbed" ]; then
+      cp "$ref/$name.plain" "$ref/$name.perturbed" .
+    else
+      if [ "$name" = restart ] && [ ! -f "$ref/kk.restart" ]; then
+        ref=$scratch
+        "${lmp[@]}" -in "$inputs/in.kk_restart" -var pot "$pot" -var phase write \
+          -var restart "$ref/kk.restart" -log none -screen none || exit 1
+      fi
+      "${lmp[@]}" -in "$input" -var pot "$pot" "$@" -log "$name.plain" -screen none &&
+        "${lmp[@]}" -in "$input" -var pot "$pot" "$@" -var perturb 1e-12 -log "$name.perturbed" \
+          -screen none || exit 1
+    fi
+    "${lmp[@]}" "${kkargs[@]}" -in "$input" -var pot "$pot" "$@" -log "$name.kk" -screen none &&
       python3 "$src/tools/gpu/compare_runs.py" "$name.plain" "$name.perturbed" "$name.kk"
     rc=$?
     cp "$name".plain "$name".perturbed "$name".kk "$out/" 2> /dev/null
     exit $rc
   )
 }
-step kk_pair 30 120 kk_case pair "$src/bench/in.dodeca_dense" -var nx 8 -var ny 8 -var nz 8 -var steps 50 \
-  -var every 10
-step kk_wall 30 120 kk_case wall "$src/bench/wall_mesh/in.floor" -var mesh "$data/floor10k.stl" \
-  -var steps1 1000 -var steps2 500 -var every 250
-step kk_ellipsoid 30 120 kk_case ellipsoid "$src/bench/in.ellipsoid_cundall" -var nside 6 \
-  -var pre 200 -var steps 200 -var every 100
+kk_step() {    # NAME INPUT VARS...
+  local name=$1
+  step "kk_$name" 20 120 kk_case "$@"
+}
+kk_cases kk_step
 
 # particle-steps per second of a log's last run
 rate() {
   awk '/^Loop time of/ {t = $4; n = $9; N = $12} END {if (t > 0) printf "%.4g", n * N / t}' "$1"
 }
-# the main example; --cpu: the discharge cut to 5,000 steps (a CPU node
-# with two threads needs about ten minutes for the whole example)
+# peak GPU memory while a command runs (nvidia-smi sampled every 0.2 s)
+with_gpu_memory() {
+  local mem=$scratch/gpumem.$$ w=""
+  if [ $mode = cuda ] && command -v nvidia-smi > /dev/null; then
+    nvidia-smi --query-gpu=memory.used --format=csv,noheader,nounits -lms 200 > "$mem" 2> /dev/null &
+    w=$!
+  fi
+  "$@"
+  local rc=$?
+  if [ -n "$w" ]; then
+    kill "$w" 2> /dev/null
+    wait "$w" 2> /dev/null
+    echo "GPUMEM $(sort -n "$mem" | tail -n1) MiB"
+  fi
+  return $rc
+}
+# the main example with -sf kk against log.hopper (the plain styles, 2 ranks)
+# and its perturbed twin (ref/hopper.perturbed, 1 rank), row by row while the
+# perturbed run has not yet saturated; --cpu: the discharge cut to 5,000
+# steps (its rows are the first rows of the full run's)
 example_vars=()
 [ $mode = cpu ] && example_vars=(-var tdis 5000)
 example() {
   (cd "$scratch" && rm -rf hopper && cp -r "$src/examples/hopper" . && cd hopper &&
-    "$lmp" "${kkargs[@]}" -in in.hopper -var pot "$pot" "${example_vars[@]}" -log log.kk \
-      -screen none &&
-    cp log.kk "$out/log.hopper.kk" &&
-    echo "BENCH $(rate log.kk) particle-steps/s (last run)")
+    "${lmp[@]}" "${kkargs[@]}" -in in.hopper -var pot "$pot" "${example_vars[@]}" -log log.kk \
+      -screen none || exit 1
+    cp log.kk "$out/log.hopper.kk"
+    echo "BENCH $(rate log.kk) particle-steps/s (last run)"
+    if [ -f "$ref/hopper.perturbed" ]; then
+      python3 "$src/tools/gpu/compare_runs.py" log.hopper "$ref/hopper.perturbed" log.kk --common
+    else
+      echo "compare_runs: no perturbed reference (ref/hopper.perturbed): not judged"
+    fi)
 }
 step example 60 240 example
 
 sanitize() {    # TOOL
   command -v compute-sanitizer > /dev/null || { echo "compute-sanitizer not found"; return 3; }
   (cd "$scratch" &&
-    compute-sanitizer --tool "$1" --error-exitcode 1 "$lmp" "${kkargs[@]}" \
+    compute-sanitizer --tool "$1" --error-exitcode 1 "${lmp[@]}" "${kkargs[@]}" \
       -in "$src/bench/in.dodeca_dense" -var pot "$pot" -var nx 3 -var ny 3 -var nz 3 -var steps 5 \
       -log none -screen none &&
-    compute-sanitizer --tool "$1" --error-exitcode 1 "$lmp" "${kkargs[@]}" \
+    compute-sanitizer --tool "$1" --error-exitcode 1 "${lmp[@]}" "${kkargs[@]}" \
       -in "$src/bench/wall_mesh/in.floor" -var pot "$pot" -var mesh "$data/floor10k.stl" \
       -var steps1 5 -var steps2 5 -var every 5 -log none -screen none)
 }
@@ -284,24 +421,27 @@ else
 fi
 
 bench_dense() {    # N per side
-  (cd "$scratch" && "$lmp" "${kkargs[@]}" -in "$src/bench/in.dodeca_dense" -var pot "$pot" \
-    -var nx "$1" -var ny "$1" -var nz "$1" -var steps 100 -log "dense$1.log" -screen none &&
-    cp "dense$1.log" "$out/" && echo "BENCH $(rate "dense$1.log") particle-steps/s, N = $(($1 * $1 * $1)), 100 steps")
+  (cd "$scratch" && with_gpu_memory "${lmp[@]}" "${kkargs[@]}" -in "$src/bench/in.dodeca_dense" \
+    -var pot "$pot" -var nx "$1" -var ny "$1" -var nz "$1" -var steps 100 -log "dense$1.log" \
+    -screen none > "dense$1.mem" && cp "dense$1.log" "$out/" &&
+    echo "BENCH $(rate "dense$1.log") particle-steps/s, N = $(($1 * $1 * $1)), 100 steps$(sed 's/^GPUMEM/, peak GPU memory/' "dense$1.mem")")
 }
-bench_silo() {
-  (cd "$scratch" && "$lmp" "${kkargs[@]}" -in "$src/bench/wall_mesh/in.silo" -var pot "$pot" \
-    -var mesh "$data/silo10k.stl" -log silo.log -screen none &&
-    cp silo.log "$out/" && echo "BENCH $(rate silo.log) particle-steps/s, silo 9,840 triangles (last 1000 steps)")
+bench_silo() {    # grains steps
+  (cd "$scratch" && with_gpu_memory "${lmp[@]}" "${kkargs[@]}" -in "$inputs/in.silo_slice" \
+    -var pot "$pot" -var mesh "$data" -var n "$1" -var steps "$2" -log silo.log -screen none \
+    > silo.mem && cp silo.log "$out/" &&
+    echo "BENCH $(rate silo.log) particle-steps/s, silo slice of $(awk '/^Loop time/ {print $12}' silo.log) grains, $2 steps, $(awk '/^ *Step/ {getline; c = $5} END {print c}' silo.log) contacts per grain at the start$(sed 's/^GPUMEM/, peak GPU memory/' silo.mem)")
 }
 if [ $mode = cuda ]; then
   step bench_dense_1e5 30 120 bench_dense 46
-  step bench_silo 30 150 bench_silo
+  step bench_silo_2e5 60 180 bench_silo 200000 200
   step bench_dense_1e6 90 240 bench_dense 100
-else    # the CPU path checks the benchmarks' plumbing at N = 8,000
-  step bench_dense_8e3 30 120 bench_dense 20
-  step bench_silo 30 150 bench_silo
+else    # the CPU path checks the benchmarks' plumbing at small N
+  step bench_dense_8e3 10 60 bench_dense 20
+  step bench_silo_2e3 10 60 bench_silo 2000 20
 fi
 
 fails=$(grep -c '^FAIL' "$summary")
 note "done in $(elapsed) s: $(grep -c '^PASS' "$summary") passed, $fails failed, $(grep -c '^SKIP' "$summary") skipped"
+pack_logs
 [ "$fails" -eq 0 ]

@@ -27,11 +27,14 @@ struct RestartResult {
 
 // extra: LAMMPS command-line arguments (e.g. -k on -sf kk ...); host: makes
 // the host arrays current (AtomKokkos::sync for /kk runs); newton: pair
-// setting of the first run (the restart file keeps it)
+// setting of the first run (the restart file keeps it); extra_read: the
+// arguments of the run read from the file, if not extra (a plain run's file
+// continued by /kk)
 inline RestartResult pair_restart_case(const std::vector<std::string> &extra,
                                        const std::string &rfile,
                                        const std::function<void(Lmp &)> &host,
-                                       const std::string &newton = "on")
+                                       const std::string &newton = "on",
+                                       const std::vector<std::string> *extra_read = nullptr)
 {
   auto num = [](double x) {
     char buf[32];
@@ -71,7 +74,7 @@ inline RestartResult pair_restart_case(const std::vector<std::string> &extra,
     state(l, r.ref);
   }
   {
-    Lmp l(extra);
+    Lmp l(extra_read ? *extra_read : extra);
     l.cmds({"read_restart " + rfile, "comm_modify vel yes", "group top type 2",
             "neighbor 0.001 bin", "neigh_modify exclude type 1 1", "fix 1 top nve/polyhedron",
             tilt, "timestep 1e-5", "run 1000"});

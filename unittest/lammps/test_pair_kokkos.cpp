@@ -362,6 +362,28 @@ TEST(PairKokkos, RestartKeepsContactHistory)
                 worst / lnorm);
 }
 
+// A plain run's restart file continued by /kk keeps the contact history:
+// the stick-slip history of RestartKeepsContactHistory decides where the cube
+// ends, so the /kk continuation must equal the uninterrupted plain run as
+// closely as /kk equals plain there (1e-12 serially; threads: 1e-7 |L|).
+TEST(PairKokkos, PlainRestartFileContinuedByKokkos)
+{
+  auto sync = [](Lmp &l) {
+    if (l.lmp->kokkos) ((LAMMPS_NS::AtomKokkos *) l.lmp->atom)->sync(LAMMPS_NS::Host, ALL_MASK);
+  };
+  const std::vector<std::string> kk_args = KK;
+  const auto mixed = polydem_test::pair_restart_case(
+      {}, ::testing::TempDir() + "polydem_pair_plain_to_kk.bin", sync, "off", &kk_args);
+  const bool threads = polydem_test::kk_threads() > 1;
+  const double lnorm = std::sqrt(mixed.ref[3] * mixed.ref[3] + mixed.ref[4] * mixed.ref[4] +
+                                 mixed.ref[5] * mixed.ref[5]);
+  for (int k = 0; k < 3; k++) {
+    EXPECT_NEAR(mixed.got[k], mixed.ref[k], 1e-12 * 0.3) << "position " << k;
+    const double tol = threads ? 1e-7 * lnorm : 1e-12 * (std::fabs(mixed.ref[3 + k]) + 1e-30);
+    EXPECT_NEAR(mixed.got[3 + k], mixed.ref[3 + k], tol) << "angular momentum " << k;
+  }
+}
+
 // The *_threads entries (POLYDEM_KK_THREADS=N, issue 19) must really run N
 // threads: Kokkos's concurrency is N, and a parallel_for hands its work to N
 // distinct threads (UniqueToken ids; each id is held by one thread at a time,
