@@ -139,9 +139,19 @@ foreach(e ${_entries})
   endif()
 endforeach()
 file(MAKE_DIRECTORY ${POLYDEM_STAGE}/src/KOKKOS ${POLYDEM_STAGE}/src/POLYDEM)
+# POLYDEM_KOKKOS_OTHER_PAIRS=OFF leaves out the KOKKOS package's pair styles of
+# other fields (LJ, Coulomb, table, granular Hooke, ...; pair hybrid stays):
+# with CUDA they are two thirds of lmp's device code (the GPU kit's prebuilt
+# run, tools/gpu/, must fit in 60 MiB) and of its build time
+option(POLYDEM_KOKKOS_OTHER_PAIRS "Build the KOKKOS package's pair styles of other fields" ON)
 file(GLOB _entries RELATIVE ${_lammps_pristine}/src/KOKKOS ${_lammps_pristine}/src/KOKKOS/*)
 foreach(e ${_entries})
-  polydem_link(${_lammps_pristine}/src/KOKKOS/${e} ${POLYDEM_STAGE}/src/KOKKOS/${e})
+  if(NOT POLYDEM_KOKKOS_OTHER_PAIRS AND e MATCHES "^pair_.*_kokkos\\.(h|cpp)$" AND
+     NOT e MATCHES "^pair_hybrid")
+    file(REMOVE ${POLYDEM_STAGE}/src/KOKKOS/${e})
+  else()
+    polydem_link(${_lammps_pristine}/src/KOKKOS/${e} ${POLYDEM_STAGE}/src/KOKKOS/${e})
+  endif()
 endforeach()
 
 # our package: *_kokkos.* files go to KOKKOS (LAMMPS pairs them with their base

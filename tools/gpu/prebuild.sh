@@ -65,10 +65,10 @@ PY
   cp "$build/lmp" "$build/polydem_kernels_device" "$bin/"
   strip "$bin/lmp" "$bin/polydem_kernels_device"
   echo "prebuilt $mode: $(date -u +%Y-%m-%dT%H:%M:%SZ), $(nproc) cores, $(($(date +%s) - t0)) s to build" >> "$dir/MANIFEST"
-  # every shared library they load, but the CUDA driver (the node's); glibc's
-  # own apart
+  # every shared library they load (the CUDA runtime too: Kokkos 3.4 links
+  # it shared), but the CUDA driver (the node's); glibc's own apart
   for exe in "$bin"/*; do
-    LD_LIBRARY_PATH="$stable/kit/deps/lib" ldd "$exe"
+    LD_LIBRARY_PATH="$stable/kit/deps/lib:/usr/local/cuda/lib:/usr/local/cuda/lib64" ldd "$exe"
   done | awk '$2 == "=>" && $3 ~ /^\// {print $1, $3} $1 ~ /^\/.*ld-linux/ {print "ld-linux-x86-64.so.2", $1}' |
     sort -u | while read -r name path; do
       case $name in
