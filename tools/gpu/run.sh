@@ -239,7 +239,11 @@ else
     -DPOLYDEM_ENABLE_TESTS=OFF -DPOLYDEM_BUILD_BENCH=OFF -DPOLYDEM_CUDA_CHECK=OFF
     -DPOLYDEM_KOKKOS_OTHER_PAIRS=OFF
     -DPOLYDEM_CGAL_PREFIX="$kit/deps" -DCMAKE_BUILD_TYPE=Release -DPOLYDEM_CACHE_DIR="$work/cache"
-    -DCMAKE_BUILD_WITH_INSTALL_RPATH=ON -DCMAKE_INSTALL_RPATH='$ORIGIN/../lib')    # only a prebuilt run's lib/ (bundle.sh --prebuilt); here LD_LIBRARY_PATH
+    -DCMAKE_BUILD_WITH_INSTALL_RPATH=ON -DCMAKE_INSTALL_RPATH='$ORIGIN/../lib'
+    -DCMAKE_EXE_LINKER_FLAGS=-Wl,--disable-new-dtags)
+  # RPATH, not RUNPATH, $ORIGIN/../lib only: a prebuilt run's lib/ (bundle.sh
+  # --prebuilt), for the libraries' own dependencies too (libpng's libz); in
+  # the kit, LD_LIBRARY_PATH finds deps/lib
   if [ $mode = cuda ]; then
     lmp_cfg+=(-DCMAKE_CXX_COMPILER="$kprefix/bin/nvcc_wrapper" -DCMAKE_CXX_FLAGS="-arch=sm_$arch")
   else
@@ -260,7 +264,7 @@ else
     "${cxx[@]}" -std=c++17 -O2 "${dev[@]}" -DPOLYDEM_USE_KOKKOS -DPOLYDEM_KERNELS_MAIN \
       -I"$src/src/POLYDEM" -isystem "$kprefix/include" "$src/unittest/cuda/kernels_cuda.cpp" \
       -o "$build/polydem_kernels_device" "$build/libpolydem_shapes.a" -L"$klib" -lkokkoscore \
-      "$kit/deps/lib/libmpfr.so" "$kit/deps/lib/libgmp.so" -ldl -lpthread -Wl,-rpath,'$ORIGIN/../lib'
+      "$kit/deps/lib/libmpfr.so" "$kit/deps/lib/libgmp.so" -ldl -lpthread -Wl,--disable-new-dtags -Wl,-rpath,'$ORIGIN/../lib'
   }
   step kernels_build 30 240 build_kernels
   kernels_exe=("$build/polydem_kernels_device")
