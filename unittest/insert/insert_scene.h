@@ -82,15 +82,7 @@ inline std::vector<double> gather_state(Lmp &l, MPI_Comm comm)
     mine.insert(mine.end(), kv.second.q, kv.second.q + 4);
     mine.insert(mine.end(), kv.second.v, kv.second.v + 3);
   }
-  const int rec = 13;
-  const std::vector<double> all = polydem_test::allgather(mine, comm);
-  const int total = (int) all.size();
-  std::vector<std::vector<double>> recs;
-  for (int i = 0; i + rec <= total; i += rec) recs.emplace_back(all.begin() + i, all.begin() + i + rec);
-  std::sort(recs.begin(), recs.end());
-  std::vector<double> out;
-  for (auto &r : recs) out.insert(out.end(), r.begin(), r.end());
-  return out;
+  return polydem_test::allgather_by_tag(mine, 13, comm);
 }
 
 }    // namespace insert_test
