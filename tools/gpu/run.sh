@@ -285,9 +285,10 @@ fi
 pot=$src/potentials
 data=$src/tools/gpu/data
 inputs=$src/tools/gpu/inputs
-ref=$kit/ref
 scratch=$work/runs
 mkdir -p "$scratch"
+ref=$kit/ref    # a prebuilt run's reference logs; the kit makes its own here
+[ -d "$ref" ] || { ref=$scratch/ref && mkdir -p "$ref"; }
 
 # every log into one archive at the end (at most a few files come back)
 pack_logs() {
@@ -357,7 +358,6 @@ kk_case() {
       cp "$ref/$name.plain" "$ref/$name.perturbed" .
     else
       if [ "$name" = restart ] && [ ! -f "$ref/kk.restart" ]; then
-        ref=$scratch
         "${lmp[@]}" -in "$inputs/in.kk_restart" -var pot "$pot" -var phase write \
           -var restart "$ref/kk.restart" -log none -screen none || exit 1
       fi
