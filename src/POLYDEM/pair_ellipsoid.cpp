@@ -66,7 +66,6 @@ PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
   nextra = 2;
   pvector = new double[nextra];
   pvector[0] = pvector[1] = 0.0;
-  nondefault_history_transfer = 0;
 
   // placeholder so that a history fix (friction) keeps its place in the fix list
   history_id = 0;

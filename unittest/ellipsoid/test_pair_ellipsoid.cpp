@@ -378,6 +378,54 @@ TEST(PairEllipsoid, FrictionSlidingImpactOfSpheres)
   EXPECT_NEAR(st[2].v[0], 1.0, 2e-3);
 }
 
+// The friction history survives a change of the atom that holds the pair in
+// the neighbor list. Atom 2 slides along +y (5 m/s, mu = 0.8) on atom 1,
+// their centres 0.0399 apart along x, while atom_modify sort (binsize 0.2)
+// reorders them at every reneighboring: atom 2 starts in a lower sort bin
+// (y < 0.4) and so first in memory, and moves above atom 1's bin during the
+// contact, so the pair passes from atom 2's neighbor list to atom 1's.
+// Reneighboring every step must give the run whose list is built once, to
+// round-off (1e-12 relative): a pair's history is that of its lower-tag atom,
+// copied to the partner unchanged (polydem_contact_law.h). Copied negated
+// (LAMMPS's default transfer), the tangential spring flips sign at the swap
+// and atom 2's final y differs by 2.7e-5 m.
+namespace {
+std::map<long, Lmp::State> sliding_contact(const std::string &neigh)
+{
+  Lmp l;
+  l.cmds(box_cmds());
+  const double r = 0.02, rho = 2000.0, kn = 1e6;
+  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+  const double tc = M_PI * std::sqrt(0.5 * m / kn);
+  l.cmds({"atom_modify sort 1 0.2",
+          "polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
+          "create_atoms 1 single 0.381 0.4005 0.5", "create_atoms 1 single 0.4209 0.3995 0.5",
+          "polyhedron_set group all density " + num(rho), "velocity all set 0 0 0",
+          "set atom 2 vy 5.0", "pair_style ellipsoid", "pair_coeff * * " + num(kn) + " 1.0 0.8",
+          "neighbor 0.03 bin", "neigh_modify binsize 0.2 " + neigh, "fix 1 all nve/polyhedron",
+          "thermo_style custom step pe", "timestep " + num(tc / 50.0), "run 40"});
+  EXPECT_EQ(l.thermo("pe"), 0.0);    // the contact has ended
+  return l.local_state();
+}
+}    // namespace
+
+TEST(PairEllipsoid, FrictionHistoryFollowsThePairAcrossLists)
+{
+  const auto once = sliding_contact("every 100000 delay 0 check no");
+  const auto every = sliding_contact("every 1 delay 0 check no");
+  std::printf("sliding contact: atom 2 y %.9f, w_z %.6g (list built once); y %.9f, w_z %.6g "
+              "(rebuilt every step)\n", once.at(2).x[1], once.at(2).w[2], every.at(2).x[1],
+              every.at(2).w[2]);
+  EXPECT_GT(std::fabs(once.at(2).w[2]), 1.0);    // friction acted
+  for (long t : {1L, 2L})
+    for (int k = 0; k < 3; k++) {
+      EXPECT_NEAR(every.at(t).x[k], once.at(t).x[k], 1e-12) << "atom " << t << " x" << k;
+      EXPECT_NEAR(every.at(t).v[k], once.at(t).v[k], 1e-12 * 5.0) << "atom " << t << " v" << k;
+      EXPECT_NEAR(every.at(t).w[k], once.at(t).w[k], 1e-12 * std::fabs(once.at(t).w[2]))
+          << "atom " << t << " w" << k;
+    }
+}
+
 // Friction with eccentric contacts: a frictional elastic gas of 64 prolate
 // ellipsoids (xi = 2, mu = 0.5, 'damping contact', e_n = 1) conserves linear
 // momentum and total angular momentum (orbital about the origin plus spin)
