@@ -663,171 +663,131 @@ void AtomVecPolyhedronKokkos::grow_pointers()
   h_f = atomKK->k_f.h_view;
 }
 
-/* ---------------------------------------------------------------------- */
-
-void AtomVecPolyhedronKokkos::sync_host_all()
-{
-  atomKK->sync(Host, STYLE_MASK);
-}
-
-void AtomVecPolyhedronKokkos::modified_host_all()
-{
-  atomKK->modified(Host, STYLE_MASK);
-}
-
 /* ----------------------------------------------------------------------
-   host paths: the generic AtomVec code, on current host data
+   host paths: the generic AtomVec code, on current host data. on_host()
+   syncs the fields of mask to the host, runs the call and, for a call that
+   writes them (WRITES), marks them modified on the host.
 ------------------------------------------------------------------------- */
+
+namespace {
+enum HostAccess { READS, WRITES };
+template <class F>
+auto on_host(AtomKokkos *a, unsigned int mask, HostAccess access, F &&call) -> decltype(call())
+{
+  a->sync(Host, mask);
+  struct Mark {
+    AtomKokkos *a;
+    unsigned int mask;
+    bool on;
+    ~Mark()
+    {
+      if (on) a->modified(Host, mask);
+    }
+  } mark{a, mask, access == WRITES};
+  return call();
+}
+}    // namespace
 
 void AtomVecPolyhedronKokkos::copy(int i, int j, int delflag)
 {
-  atomKK->sync(Host, EXCHANGE_MASK);
-  AtomVec::copy(i, j, delflag);
-  atomKK->modified(Host, EXCHANGE_MASK);
+  on_host(atomKK, EXCHANGE_MASK, WRITES, [&] { AtomVec::copy(i, j, delflag); });
 }
-
 int AtomVecPolyhedronKokkos::pack_comm(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
-  atomKK->sync(Host, COMM_MASK);
-  return AtomVec::pack_comm(n, list, buf, pbc_flag, pbc);
+  return on_host(atomKK, COMM_MASK, READS,
+                 [&] { return AtomVec::pack_comm(n, list, buf, pbc_flag, pbc); });
 }
-
-int AtomVecPolyhedronKokkos::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
-{
-  atomKK->sync(Host, COMM_VEL_MASK);
-  return AtomVec::pack_comm_vel(n, list, buf, pbc_flag, pbc);
-}
-
 void AtomVecPolyhedronKokkos::unpack_comm(int n, int first, double *buf)
 {
-  atomKK->sync(Host, COMM_MASK);
-  AtomVec::unpack_comm(n, first, buf);
-  atomKK->modified(Host, COMM_MASK);
+  on_host(atomKK, COMM_MASK, WRITES, [&] { AtomVec::unpack_comm(n, first, buf); });
 }
-
+int AtomVecPolyhedronKokkos::pack_comm_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  return on_host(atomKK, COMM_VEL_MASK, READS,
+                 [&] { return AtomVec::pack_comm_vel(n, list, buf, pbc_flag, pbc); });
+}
 void AtomVecPolyhedronKokkos::unpack_comm_vel(int n, int first, double *buf)
 {
-  atomKK->sync(Host, COMM_VEL_MASK);
-  AtomVec::unpack_comm_vel(n, first, buf);
-  atomKK->modified(Host, COMM_VEL_MASK);
+  on_host(atomKK, COMM_VEL_MASK, WRITES, [&] { AtomVec::unpack_comm_vel(n, first, buf); });
 }
-
 int AtomVecPolyhedronKokkos::pack_reverse(int n, int first, double *buf)
 {
-  atomKK->sync(Host, REVERSE_MASK);
-  return AtomVec::pack_reverse(n, first, buf);
+  return on_host(atomKK, REVERSE_MASK, READS, [&] { return AtomVec::pack_reverse(n, first, buf); });
 }
-
 void AtomVecPolyhedronKokkos::unpack_reverse(int n, int *list, double *buf)
 {
-  atomKK->sync(Host, REVERSE_MASK);
-  AtomVec::unpack_reverse(n, list, buf);
-  atomKK->modified(Host, REVERSE_MASK);
+  on_host(atomKK, REVERSE_MASK, WRITES, [&] { AtomVec::unpack_reverse(n, list, buf); });
 }
-
 int AtomVecPolyhedronKokkos::pack_border(int n, int *list, double *buf, int pbc_flag, int *pbc)
 {
-  atomKK->sync(Host, BORDER_MASK);
-  return AtomVec::pack_border(n, list, buf, pbc_flag, pbc);
+  return on_host(atomKK, BORDER_MASK, READS,
+                 [&] { return AtomVec::pack_border(n, list, buf, pbc_flag, pbc); });
 }
-
-int AtomVecPolyhedronKokkos::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
-{
-  atomKK->sync(Host, BORDER_VEL_MASK);
-  return AtomVec::pack_border_vel(n, list, buf, pbc_flag, pbc);
-}
-
 void AtomVecPolyhedronKokkos::unpack_border(int n, int first, double *buf)
 {
-  atomKK->sync(Host, BORDER_MASK);
-  AtomVec::unpack_border(n, first, buf);
-  atomKK->modified(Host, BORDER_MASK);
+  on_host(atomKK, BORDER_MASK, WRITES, [&] { AtomVec::unpack_border(n, first, buf); });
 }
-
+int AtomVecPolyhedronKokkos::pack_border_vel(int n, int *list, double *buf, int pbc_flag, int *pbc)
+{
+  return on_host(atomKK, BORDER_VEL_MASK, READS,
+                 [&] { return AtomVec::pack_border_vel(n, list, buf, pbc_flag, pbc); });
+}
 void AtomVecPolyhedronKokkos::unpack_border_vel(int n, int first, double *buf)
 {
-  atomKK->sync(Host, BORDER_VEL_MASK);
-  AtomVec::unpack_border_vel(n, first, buf);
-  atomKK->modified(Host, BORDER_VEL_MASK);
+  on_host(atomKK, BORDER_VEL_MASK, WRITES, [&] { AtomVec::unpack_border_vel(n, first, buf); });
 }
-
 int AtomVecPolyhedronKokkos::pack_exchange(int i, double *buf)
 {
-  atomKK->sync(Host, EXCHANGE_MASK);
-  return AtomVec::pack_exchange(i, buf);
+  return on_host(atomKK, EXCHANGE_MASK, READS, [&] { return AtomVec::pack_exchange(i, buf); });
 }
-
 int AtomVecPolyhedronKokkos::unpack_exchange(double *buf)
 {
-  atomKK->sync(Host, EXCHANGE_MASK);
-  const int m = AtomVec::unpack_exchange(buf);
-  atomKK->modified(Host, EXCHANGE_MASK);
-  return m;
+  return on_host(atomKK, EXCHANGE_MASK, WRITES, [&] { return AtomVec::unpack_exchange(buf); });
 }
-
 int AtomVecPolyhedronKokkos::size_restart()
 {
   return AtomVec::size_restart();
 }
-
 int AtomVecPolyhedronKokkos::pack_restart(int i, double *buf)
 {
-  atomKK->sync(Host, EXCHANGE_MASK);
-  return AtomVec::pack_restart(i, buf);
+  return on_host(atomKK, EXCHANGE_MASK, READS, [&] { return AtomVec::pack_restart(i, buf); });
 }
-
 int AtomVecPolyhedronKokkos::unpack_restart(double *buf)
 {
-  atomKK->sync(Host, EXCHANGE_MASK);
-  const int m = AtomVec::unpack_restart(buf);
-  atomKK->modified(Host, EXCHANGE_MASK);
-  return m;
+  return on_host(atomKK, EXCHANGE_MASK, WRITES, [&] { return AtomVec::unpack_restart(buf); });
 }
-
 void AtomVecPolyhedronKokkos::create_atom(int itype, double *coord)
 {
-  sync_host_all();
-  AtomVec::create_atom(itype, coord);
-  modified_host_all();
+  on_host(atomKK, STYLE_MASK, WRITES, [&] { AtomVec::create_atom(itype, coord); });
 }
-
 void AtomVecPolyhedronKokkos::data_atom(POLYDEM_DATA_ATOM_PARAMS(coord, imagetmp, values, label))
 {
-  sync_host_all();
-  AtomVec::data_atom(POLYDEM_DATA_ATOM_ARGS(coord, imagetmp, values, label));
-  modified_host_all();
+  on_host(atomKK, STYLE_MASK, WRITES,
+          [&] { AtomVec::data_atom(POLYDEM_DATA_ATOM_ARGS(coord, imagetmp, values, label)); });
 }
-
 void AtomVecPolyhedronKokkos::pack_data(double **buf)
 {
-  sync_host_all();
-  AtomVec::pack_data(buf);
+  on_host(atomKK, STYLE_MASK, READS, [&] { AtomVec::pack_data(buf); });
 }
-
 void AtomVecPolyhedronKokkos::write_data(FILE *fp, int n, double **buf)
 {
   AtomVec::write_data(fp, n, buf);
 }
-
 void AtomVecPolyhedronKokkos::data_vel(int ilocal, polydem_compat::data_values values)
 {
-  sync_host_all();
-  AtomVec::data_vel(ilocal, values);
-  shapes.check_data_vel(ilocal);
-  modified_host_all();
+  on_host(atomKK, STYLE_MASK, WRITES, [&] {
+    AtomVec::data_vel(ilocal, values);
+    shapes.check_data_vel(ilocal);
+  });
 }
-
 void AtomVecPolyhedronKokkos::pack_vel(double **buf)
 {
-  sync_host_all();
-  AtomVec::pack_vel(buf);
+  on_host(atomKK, STYLE_MASK, READS, [&] { AtomVec::pack_vel(buf); });
 }
-
 void AtomVecPolyhedronKokkos::write_vel(FILE *fp, int n, double **buf)
 {
   AtomVec::write_vel(fp, n, buf);
 }
-
 double AtomVecPolyhedronKokkos::memory_usage()
 {
   return AtomVec::memory_usage();
@@ -866,8 +826,8 @@ int AtomVecPolyhedronKokkos::property_atom(polydem_compat::property_name name)
 
 void AtomVecPolyhedronKokkos::pack_property_atom(int index, double *buf, int nvalues, int groupbit)
 {
-  sync_host_all();
-  shapes.pack_property_atom(index, buf, nvalues, groupbit);
+  on_host(atomKK, STYLE_MASK, READS,
+          [&] { shapes.pack_property_atom(index, buf, nvalues, groupbit); });
 }
 
 /* ======================================================================

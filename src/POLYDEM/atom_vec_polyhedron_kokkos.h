@@ -155,8 +155,6 @@ class AtomVecPolyhedronKokkos : public AtomVecKokkos {
  private:
   PolyShapeLibrary shapes;
   template <class F> void for_each_dual(unsigned int mask, F f);    // f(DualView) per field
-  void sync_host_all();
-  void modified_host_all();
   // forget the field lists so that ~AtomVec frees nothing: AtomKokkos owns
   // the standard DualViews, this class the POLYDEM ones
   void release_fields() { ngrow = 0; }

@@ -125,7 +125,7 @@ template <class DeviceType> struct WallMeshKernel {
 
 template <class DeviceType>
 FixWallMeshKokkos<DeviceType>::FixWallMeshKokkos(LAMMPS *lmp, int narg, char **arg) :
-    FixWallMesh(lmp, narg, arg), avecKK(nullptr), shape_version(-1), nslots(0)
+    FixWallMesh(lmp, narg, arg), avecKK(nullptr), nslots(0)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -166,7 +166,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
 
   // the law table (FixWallMesh::init) on the device
   d_laws_table = polydem_kk::mirror_law_table<DeviceType>(laws, d_laws);
-  shape_version = -1;
+  shapes.version = -1;
   update_shapes();
 }
 
@@ -176,67 +176,9 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
 
 template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
 {
-  if (shape_version == avec->shape_version()) return;
-  const PolyShapeLibrary *av = avec;
-  const int n = av->ntemplates();
-  if (n == 0) error->all(FLERR, "fix wall/mesh/kk: no shape defined (polyhedron_shape)");
-  int size[6] = {0, 0, 0, 0, 0, 0};    // verts, planes, face_start, face_verts, edges, vadj
-  for (int t = 0; t < n; t++) {
-    const auto sv = av->shape(t).view();
-    const int add[6] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
-                        2 * sv.nedges, polydem::vertex_adjacency_ints(sv)};
-    for (int k = 0; k < 6; k++) size[k] += add[k];
-  }
-  d_sverts = Kokkos::View<double *, DeviceType>("wall/mesh/kk:verts", size[0]);
-  d_splanes = Kokkos::View<double *, DeviceType>("wall/mesh/kk:planes", size[1]);
-  d_sface_start = Kokkos::View<int *, DeviceType>("wall/mesh/kk:face_start", size[2]);
-  d_sface_verts = Kokkos::View<int *, DeviceType>("wall/mesh/kk:face_verts", size[3]);
-  d_sedges = Kokkos::View<int *, DeviceType>("wall/mesh/kk:edges", size[4]);
-  d_svadj = Kokkos::View<int *, DeviceType>("wall/mesh/kk:vadj", size[5]);
-  d_shapes = Kokkos::View<polydem::ShapeView<double> *, DeviceType>("wall/mesh/kk:shapes", n);
-  d_axes = Kokkos::View<double *[3], DeviceType>("wall/mesh/kk:axes", n);
-  auto h_axes = Kokkos::create_mirror_view(d_axes);
-  for (int t = 0; t < n; t++)
-    for (int k = 0; k < 3; k++)
-      h_axes(t, k) = av->shape(t).is_ellipsoid() ? av->shape(t).semi_axes()[k] : 0.0;
-  Kokkos::deep_copy(d_axes, h_axes);
-  auto h_verts = Kokkos::create_mirror_view(d_sverts);
-  auto h_planes = Kokkos::create_mirror_view(d_splanes);
-  auto h_fs = Kokkos::create_mirror_view(d_sface_start);
-  auto h_fv = Kokkos::create_mirror_view(d_sface_verts);
-  auto h_edges = Kokkos::create_mirror_view(d_sedges);
-  auto h_vadj = Kokkos::create_mirror_view(d_svadj);
-  auto h_shapes = Kokkos::create_mirror_view(d_shapes);
-  int off[6] = {0, 0, 0, 0, 0, 0};
-  for (int t = 0; t < n; t++) {
-    const auto sv = av->shape(t).view();
-    const int add[6] = {3 * sv.nverts, 4 * sv.nfaces, sv.nfaces + 1, sv.face_start[sv.nfaces],
-                        2 * sv.nedges, polydem::vertex_adjacency_ints(sv)};
-    for (int k = 0; k < add[0]; k++) h_verts(off[0] + k) = sv.verts[k];
-    for (int k = 0; k < add[1]; k++) h_planes(off[1] + k) = sv.planes[k];
-    for (int k = 0; k < add[2]; k++) h_fs(off[2] + k) = sv.face_start[k];
-    for (int k = 0; k < add[3]; k++) h_fv(off[3] + k) = sv.face_verts[k];
-    for (int k = 0; k < add[4]; k++) h_edges(off[4] + k) = sv.edges[k];
-    for (int k = 0; k < add[5]; k++) h_vadj(off[5] + k) = sv.vadj[k];
-    polydem::ShapeView<double> dv = sv;    // counts, radius, volume, inertia
-    dv.verts = d_sverts.data() + off[0];
-    dv.planes = d_splanes.data() + off[1];
-    dv.face_start = d_sface_start.data() + off[2];
-    dv.face_verts = d_sface_verts.data() + off[3];
-    dv.edges = d_sedges.data() + off[4];
-    dv.dual = nullptr;    // host memory; the clip kernel does not use the dual seed
-    dv.vadj = add[5] > 0 ? d_svadj.data() + off[5] : nullptr;
-    h_shapes(t) = dv;
-    for (int k = 0; k < 6; k++) off[k] += add[k];
-  }
-  Kokkos::deep_copy(d_sverts, h_verts);
-  Kokkos::deep_copy(d_splanes, h_planes);
-  Kokkos::deep_copy(d_sface_start, h_fs);
-  Kokkos::deep_copy(d_sface_verts, h_fv);
-  Kokkos::deep_copy(d_sedges, h_edges);
-  Kokkos::deep_copy(d_svadj, h_vadj);
-  Kokkos::deep_copy(d_shapes, h_shapes);
-  shape_version = avec->shape_version();
+  if (avec->ntemplates() == 0)
+    error->all(FLERR, "fix wall/mesh/kk: no shape defined (polyhedron_shape)");
+  shapes.update(*avec, false, "wall/mesh/kk");    // the clip kernel needs no dual seed
 }
 
 /* ---------------------------------------------------------------------- */
@@ -304,8 +246,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.pshape = avecKK->k_pshape.view<DeviceType>();
   k.quat = avecKK->k_quat.view<DeviceType>();
   k.hist = k_hist.template view<DeviceType>();
-  k.shapes = d_shapes;
-  k.axes = d_axes;
+  k.shapes = shapes.views;
+  k.axes = shapes.axes;
   k.laws = d_laws_table;
   k.workspace = d_workspace;
   k.sc = scene();

@@ -24,6 +24,7 @@ FixStyle(wall/mesh/kk/host,FixWallMeshKokkos<LMPHostType>);
 // clang-format off
 #include "fix_wall_mesh.h"
 // clang-format on
+#include "polydem_shapes_kokkos.h"
 
 namespace LAMMPS_NS {
 
@@ -55,13 +56,8 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   // mesh and grid (mesh frame)
   Kokkos::View<double *, DeviceType> d_tri, d_plane, d_box;
   Kokkos::View<int *, DeviceType> d_start, d_items, d_tbin, d_region;
-  // shape templates, flat, and one ShapeView each pointing into them
-  int shape_version;
-  Kokkos::View<double *, DeviceType> d_sverts, d_splanes;
-  Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges, d_svadj;
-  Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
-  // semi-axes per template at unit scale (0: a polyhedron), as pair ellipsoid/kk
-  Kokkos::View<double *[3], DeviceType> d_axes;
+  // shape templates with their semi-axes (0: a polyhedron), as the pair styles
+  polydem_kk::DeviceShapes<DeviceType> shapes;
   // the law table's entries on the device, and the table pointing there
   Kokkos::View<polydem::LawEntry<double> *, DeviceType> d_laws;
   polydem::LawTable<double> d_laws_table;

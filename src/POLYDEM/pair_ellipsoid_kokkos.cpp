@@ -111,7 +111,7 @@ template <class DeviceType> struct EllContactFunctor {
 
 template <class DeviceType>
 PairEllipsoidKokkos<DeviceType>::PairEllipsoidKokkos(LAMMPS *lmp) :
-    PairEllipsoid(lmp), avecKK(nullptr), shape_version(-1), params_dirty(1)
+    PairEllipsoid(lmp), avecKK(nullptr), params_dirty(1)
 {
   kokkosable = 1;
   atomKK = (AtomKokkos *) atom;
@@ -167,16 +167,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
 
 template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::update_device_data()
 {
-  if (shape_version != avec->shape_version()) {
-    const PolyShapeLibrary *av = avec;
-    const int n = av->ntemplates();
-    d_axes = Kokkos::View<double *[3], DeviceType>("ellipsoid/kk:axes", n > 0 ? n : 1);
-    auto h = Kokkos::create_mirror_view(d_axes);
-    for (int t = 0; t < n; t++)
-      for (int k = 0; k < 3; k++) h(t, k) = av->shape(t).semi_axes()[k];
-    Kokkos::deep_copy(d_axes, h);
-    shape_version = av->shape_version();
-  }
+  shapes.update(*avec, false, "ellipsoid/kk");    // the semi-axes are what it uses
   if (params_dirty) {
     d_laws_table = polydem_kk::mirror_law_table<DeviceType>(laws, d_laws);
     params_dirty = 0;
@@ -220,7 +211,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   fn.ilist = k_list->d_ilist;
   fn.numneigh = k_list->d_numneigh;
   fn.neighbors = k_list->d_neighbors;
-  fn.axes = d_axes;
+  fn.axes = shapes.axes;
   fn.laws = d_laws_table;
   fn.tag = atomKK->k_tag.view<DeviceType>();
   fn.use_history = use_history;

@@ -19,6 +19,7 @@ PairStyle(ellipsoid/kk/host,PairEllipsoidKokkos<LMPHostType>);
 
 #include "kokkos_type.h"
 #include "pair_ellipsoid.h"
+#include "polydem_shapes_kokkos.h"
 
 namespace LAMMPS_NS {
 
@@ -34,8 +35,7 @@ template <class DeviceType> class PairEllipsoidKokkos : public PairEllipsoid {
 
  protected:
   class AtomVecPolyhedronKokkos *avecKK;
-  int shape_version;
-  Kokkos::View<double *[3], DeviceType> d_axes;    // semi-axes per template (unit scale)
+  polydem_kk::DeviceShapes<DeviceType> shapes;    // .axes: semi-axes per template (unit scale)
   // the law table's entries on the device, and the table pointing there
   Kokkos::View<polydem::LawEntry<double> *, DeviceType> d_laws;
   polydem::LawTable<double> d_laws_table;

@@ -185,7 +185,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
 
 template <class DeviceType>
 PairPolyhedronKokkos<DeviceType>::PairPolyhedronKokkos(LAMMPS *lmp) :
-    PairPolyhedron(lmp), avecKK(nullptr), fix_historyKK(nullptr), shape_version(-1), max_faces(0),
+    PairPolyhedron(lmp), avecKK(nullptr), fix_historyKK(nullptr),
     params_dirty(1), npairs(0), nslots(0), store_contacts(0)
 {
   kokkosable = 1;
@@ -266,85 +266,19 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::init_style()
           !std::is_same<DeviceType, LMPDeviceType>::value,
       std::is_same<DeviceType, LMPDeviceType>::value);
 
-  shape_version = -1;
+  shapes.version = -1;
   params_dirty = 1;
 }
 
 /* ----------------------------------------------------------------------
-   flat device copy of all templates (vertices, planes, face loops, edges)
-   and one ShapeView per template whose pointers address that copy
+   all templates on the device, with their dual seeds (polydem_shapes_kokkos.h)
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::update_shapes()
 {
-  if (shape_version == avec->shape_version()) return;
-  const PolyShapeLibrary *av = avec;
-  const int n = av->ntemplates();
-  if (n == 0) error->all(FLERR, "pair_style polyhedron/kk: no shape defined (polyhedron_shape)");
-  int nv = 0, np = 0, nfs = 0, nfv = 0, ne = 0, nd = 0;
-  max_faces = 0;
-  for (int t = 0; t < n; t++) {
-    const auto sv = av->shape(t).view();
-    nv += 3 * sv.nverts;
-    np += 4 * sv.nfaces;
-    nfs += sv.nfaces + 1;
-    nfv += sv.face_start[sv.nfaces];
-    ne += 2 * sv.nedges;
-    nd += polydem::dual_seed_ints(sv) + polydem::vertex_adjacency_ints(sv);
-    max_faces = std::max(max_faces, sv.nfaces);
-  }
-  d_sverts = Kokkos::View<double *, DeviceType>("polyhedron/kk:verts", nv);
-  d_splanes = Kokkos::View<double *, DeviceType>("polyhedron/kk:planes", np);
-  d_sface_start = Kokkos::View<int *, DeviceType>("polyhedron/kk:face_start", nfs);
-  d_sface_verts = Kokkos::View<int *, DeviceType>("polyhedron/kk:face_verts", nfv);
-  d_sedges = Kokkos::View<int *, DeviceType>("polyhedron/kk:edges", ne);
-  d_sdual = Kokkos::View<int *, DeviceType>("polyhedron/kk:dual", nd);
-  d_shapes = Kokkos::View<polydem::ShapeView<double> *, DeviceType>("polyhedron/kk:shapes", n);
-  auto h_verts = Kokkos::create_mirror_view(d_sverts);
-  auto h_planes = Kokkos::create_mirror_view(d_splanes);
-  auto h_fs = Kokkos::create_mirror_view(d_sface_start);
-  auto h_fv = Kokkos::create_mirror_view(d_sface_verts);
-  auto h_edges = Kokkos::create_mirror_view(d_sedges);
-  auto h_dual = Kokkos::create_mirror_view(d_sdual);
-  auto h_shapes = Kokkos::create_mirror_view(d_shapes);
-  nv = np = nfs = nfv = ne = nd = 0;
-  for (int t = 0; t < n; t++) {
-    const auto sv = av->shape(t).view();
-    const int nface_verts = sv.face_start[sv.nfaces];
-    for (int k = 0; k < 3 * sv.nverts; k++) h_verts(nv + k) = sv.verts[k];
-    for (int k = 0; k < 4 * sv.nfaces; k++) h_planes(np + k) = sv.planes[k];
-    for (int k = 0; k <= sv.nfaces; k++) h_fs(nfs + k) = sv.face_start[k];
-    for (int k = 0; k < nface_verts; k++) h_fv(nfv + k) = sv.face_verts[k];
-    for (int k = 0; k < 2 * sv.nedges; k++) h_edges(ne + k) = sv.edges[k];
-    // the dual seed and the vertex adjacency share one int array
-    const int ndual = polydem::dual_seed_ints(sv);
-    const int nadj = polydem::vertex_adjacency_ints(sv);
-    for (int k = 0; k < ndual; k++) h_dual(nd + k) = sv.dual[k];
-    for (int k = 0; k < nadj; k++) h_dual(nd + ndual + k) = sv.vadj[k];
-    polydem::ShapeView<double> dv = sv;    // counts, radius, volume, inertia
-    dv.verts = d_sverts.data() + nv;
-    dv.planes = d_splanes.data() + np;
-    dv.face_start = d_sface_start.data() + nfs;
-    dv.face_verts = d_sface_verts.data() + nfv;
-    dv.edges = d_sedges.data() + ne;
-    dv.dual = ndual > 0 ? d_sdual.data() + nd : nullptr;
-    dv.vadj = nadj > 0 ? d_sdual.data() + nd + ndual : nullptr;
-    h_shapes(t) = dv;
-    nv += 3 * sv.nverts;
-    np += 4 * sv.nfaces;
-    nfs += sv.nfaces + 1;
-    nfv += nface_verts;
-    ne += 2 * sv.nedges;
-    nd += ndual + nadj;
-  }
-  Kokkos::deep_copy(d_sverts, h_verts);
-  Kokkos::deep_copy(d_splanes, h_planes);
-  Kokkos::deep_copy(d_sface_start, h_fs);
-  Kokkos::deep_copy(d_sface_verts, h_fv);
-  Kokkos::deep_copy(d_sedges, h_edges);
-  Kokkos::deep_copy(d_sdual, h_dual);
-  Kokkos::deep_copy(d_shapes, h_shapes);
-  shape_version = avec->shape_version();
+  if (avec->ntemplates() == 0)
+    error->all(FLERR, "pair_style polyhedron/kk: no shape defined (polyhedron_shape)");
+  shapes.update(*avec, true, "polyhedron/kk");
 }
 
 /* ----------------------------------------------------------------------
@@ -469,7 +403,7 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   fn.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
   fn.firstshear = fix_historyKK->k_firstvalue.template view<DeviceType>();
   fn.pairs = d_pairs;
-  fn.shapes = d_shapes;
+  fn.shapes = shapes.views;
   fn.laws = d_laws_table;
   fn.workspace = d_workspace;
   if (eflag_atom) fn.eatom = k_eatom.template view<DeviceType>();
@@ -547,7 +481,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
 
   build_pairs();
   store_contacts = store_contacts_now() ? 1 : 0;
-  switch (workspace_max_faces(max_faces)) {
+  switch (workspace_max_faces(shapes.max_faces)) {
     case 16:
       run_pairs<16>();
       break;
@@ -587,10 +521,7 @@ template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::memory_usag
   bytes += (double) d_workspace.extent(0);
   bytes += (double) d_records.extent(0) * polydem::CR_NFIELD * sizeof(double);
   bytes += (double) (d_count.extent(0) + d_offset.extent(0) + 2 * d_pairs.extent(0)) * sizeof(int);
-  bytes += (double) (d_sverts.extent(0) + d_splanes.extent(0)) * sizeof(double);
-  bytes += (double) (d_sface_start.extent(0) + d_sface_verts.extent(0) + d_sedges.extent(0) +
-                     d_sdual.extent(0)) *
-      sizeof(int);
+  bytes += shapes.memory_usage();
   return bytes;
 }
 

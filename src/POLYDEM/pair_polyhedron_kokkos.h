@@ -26,6 +26,7 @@ PairStyle(polyhedron/kk/host,PairPolyhedronKokkos<LMPHostType>);
 #include "pair_polyhedron.h"
 #include "polydem_contact_record.h"
 #include "polydem_shape_view.h"
+#include "polydem_shapes_kokkos.h"
 
 namespace LAMMPS_NS {
 
@@ -58,11 +59,7 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
 
   // all shape templates, flat on the device, and one ShapeView per template
   // pointing into them
-  int shape_version;
-  int max_faces;    // largest face count of the templates
-  Kokkos::View<double *, DeviceType> d_sverts, d_splanes;
-  Kokkos::View<int *, DeviceType> d_sface_start, d_sface_verts, d_sedges, d_sdual;
-  Kokkos::View<polydem::ShapeView<double> *, DeviceType> d_shapes;
+  polydem_kk::DeviceShapes<DeviceType> shapes;
 
   // the law table's entries on the device, and the table pointing there
   int params_dirty;
