@@ -9,7 +9,6 @@
 #include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "math_const.h"
@@ -41,49 +40,25 @@ static_assert(int(PairEllipsoid::CNT_DEGENERATE) == int(polydem::EP_DEGENERATE) 
                   int(PairEllipsoid::CNT_COLLISIONS) == int(polydem::EP_COLLISIONS) &&
                   int(PairEllipsoid::NCOUNT) == int(polydem::EP_NCOUNT),
               "counters in the order of the pipeline's");
-// first value of the restart settings since the history convention of
-// polydem_contact_law.h (older files begin with overlap/warn, which is > 0)
-static constexpr double RESTART_VERSION = -2.0;
 
 /* ---------------------------------------------------------------------- */
 
 PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
-    Pair(lmp), kn(nullptr), restitution(nullptr), overlap_warn(0.05), overlap(polydem::OVERLAP_CENTRE),
-    damping_mass(polydem::DAMPING_REDUCED), friction(nullptr), kt_ratio(2.0 / 7.0), gt_ratio(0.5),
-    use_history(0), fix_dummy(nullptr), fix_history(nullptr), avec(nullptr)
+    PairPolydem(lmp, "ellipsoid", "NEIGH_HISTORY_ELL", SIZE_HISTORY, NCOUNT), kn(nullptr),
+    restitution(nullptr), friction(nullptr), kt_ratio(2.0 / 7.0), gt_ratio(0.5), use_history(0),
+    overlap_warn(0.05), overlap(polydem::OVERLAP_CENTRE), damping_mass(polydem::DAMPING_REDUCED)
 {
-  single_enable = 0;
-  restartinfo = 1;
-  no_virial_fdotr_compute = 1;
-  centroidstressflag = CENTROID_NOTAVAIL;
-  finitecutflag = 1;
-  // one history sign convention (polydem_contact_law.h): a pair's history is
-  // that of its lower-tag atom, copied to the partner unchanged
-  nondefault_history_transfer = 1;
-  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
   // compute pair ellipsoid: [1] collisions started, [2] pair-steps in contact (this run;
   // a pair with a ghost atom counts 1/2 on each rank when newton_pair is off)
   nextra = 2;
   pvector = new double[nextra];
   pvector[0] = pvector[1] = 0.0;
-
-  // placeholder so that a history fix (friction) keeps its place in the fix list
-  history_id = 0;
-  while (modify->find_fix("NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id)) >= 0 ||
-         modify->find_fix("NEIGH_HISTORY_ELL" + std::to_string(history_id)) >= 0)
-    history_id++;
-  fix_dummy = (FixDummy *) modify->add_fix("NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id) +
-                                           " all DUMMY");
 }
 
 PairEllipsoid::~PairEllipsoid()
 {
   if (copymode) return;
   delete[] pvector;
-  if (!fix_history)
-    modify->delete_fix("NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id));
-  else
-    modify->delete_fix("NEIGH_HISTORY_ELL" + std::to_string(history_id));
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -193,9 +168,9 @@ void PairEllipsoid::coeff(int narg, char **arg)
 
 void PairEllipsoid::init_style()
 {
-  avec = PolyShapeLibrary::of(lmp, "pair_style ellipsoid");
-  if (comm->ghost_velocity == 0)
-    error->all(FLERR, "pair_style ellipsoid requires ghost velocities: use 'comm_modify vel yes'");
+  // friction: per-pair tangential history (kept once created, e.g. from a restart)
+  use_history = friction_used() || fix_history != nullptr;
+  init_common(use_history);
   // mixed polyhedron-ellipsoid contacts are not supported
   int npoly = 0, first = -1;
   for (int i = 0; i < atom->nlocal; i++)
@@ -219,20 +194,7 @@ void PairEllipsoid::init_style()
                avec->shape_id(gf));
   }
 
-  // friction: per-pair tangential history (kept once created, e.g. from a restart)
-  use_history = friction_used() || fix_history != nullptr;
-  polydem_compat::request_size_list(neighbor, this, instance_me, use_history);
-  if (use_history) {
-    if (fix_history == nullptr) {
-      fix_history = polydem_history::create_history_fix(
-          modify, "NEIGH_HISTORY_ELL" + std::to_string(history_id),
-          "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), SIZE_HISTORY);
-      fix_history->pair = this;
-    }
-    int ifix = modify->find_fix("NEIGH_HISTORY_ELL" + std::to_string(history_id));
-    if (ifix < 0) error->all(FLERR, "pair_style ellipsoid: history fix not found");
-    fix_history = (FixNeighHistory *) modify->fix[ifix];
-  }
+  if (use_history) setup_history_fix();
 
   // the law table: settings now, the type pairs' entries in init_one
   const int nt = atom->ntypes + 1;
@@ -244,7 +206,6 @@ void PairEllipsoid::init_style()
   laws.damping_mass = damping_mass;
   laws.overlap_warn = overlap_warn;
 
-  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
   check_timestep();
 }
 
@@ -282,12 +243,7 @@ double PairEllipsoid::init_one(int i, int j)
   e.mu = use_history ? friction[i][j] : 0.0;
   e.damping = polydem::damping_law(restitution[i][j], 1);
   law_entries[i * nt + j] = law_entries[j * nt + i] = e;
-  // particles present, and those an insertion fix may add later
-  double rmax = ParticleSource::max_radius(lmp);
-  for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
-  double all;
-  MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return 2.0 * all;
+  return size_cutoff();
 }
 
 /* ----------------------------------------------------------------------
@@ -372,96 +328,42 @@ void PairEllipsoid::compute(int eflag, int vflag)
 
 void PairEllipsoid::report_counters()
 {
-  MPI_Allreduce(local_counts, counters, NCOUNT, MPI_DOUBLE, MPI_SUM, world);
-  if (comm->me != 0) return;
-  const char *what[NCOUNT] = {"degenerate contacts (coincident centres or NaN; skipped)",
-                              "contact searches without convergence (skipped)",
-                              "overlaps beyond overlap/warn of the smallest semi-axis", nullptr,
-                              nullptr};
-  for (int k = 0; k < CNT_CONTACTS; k++)
-    if (counters[k] > reported[k]) {
-      error->warning(FLERR, "pair ellipsoid: {:.0f} {} by step {}", counters[k], what[k],
-                     update->ntimestep);
-      reported[k] = counters[k];
-    }
+  const char *what[] = {"degenerate contacts (coincident centres or NaN; skipped)",
+                        "contact searches without convergence (skipped)",
+                        "overlaps beyond overlap/warn of the smallest semi-axis"};
+  PairPolydem::report_counters(what, CNT_CONTACTS);
 }
 
-/* ---------------------------------------------------------------------- */
+/* ----------------------------------------------------------------------
+   restart: the settings, then per type pair (j >= i) whether it was set
+   and its coefficients
+------------------------------------------------------------------------- */
 
-void PairEllipsoid::write_restart(FILE *fp)
+void PairEllipsoid::settings_fields(RestartFields &io)
 {
-  write_restart_settings(fp);
+  io(overlap_warn);
+  io(overlap);
+  io(damping_mass);
+  io(kt_ratio);
+  io(gt_ratio);
+}
+
+const char *PairEllipsoid::restart_version_text() const
+{
+  return "another sign convention of the friction history";
+}
+
+void PairEllipsoid::coeff_fields(RestartFields &io)
+{
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      io(setflag[i][j]);
       if (setflag[i][j]) {
-        fwrite(&kn[i][j], sizeof(double), 1, fp);
-        fwrite(&restitution[i][j], sizeof(double), 1, fp);
-        fwrite(&friction[i][j], sizeof(double), 1, fp);
+        io(kn[i][j]);
+        io(restitution[i][j]);
+        io(friction[i][j]);
       }
     }
-}
-
-void PairEllipsoid::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  const int me = comm->me;
-  for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = i; j <= atom->ntypes; j++) {
-      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      if (setflag[i][j]) {
-        if (me == 0) {
-          utils::sfread(FLERR, &kn[i][j], sizeof(double), 1, fp, nullptr, error);
-          utils::sfread(FLERR, &restitution[i][j], sizeof(double), 1, fp, nullptr, error);
-          utils::sfread(FLERR, &friction[i][j], sizeof(double), 1, fp, nullptr, error);
-        }
-        MPI_Bcast(&kn[i][j], 1, MPI_DOUBLE, 0, world);
-        MPI_Bcast(&restitution[i][j], 1, MPI_DOUBLE, 0, world);
-        MPI_Bcast(&friction[i][j], 1, MPI_DOUBLE, 0, world);
-      }
-    }
-}
-
-void PairEllipsoid::write_restart_settings(FILE *fp)
-{
-  const double version = RESTART_VERSION;
-  fwrite(&version, sizeof(double), 1, fp);
-  fwrite(&overlap_warn, sizeof(double), 1, fp);
-  fwrite(&overlap, sizeof(int), 1, fp);
-  fwrite(&damping_mass, sizeof(int), 1, fp);
-  fwrite(&kt_ratio, sizeof(double), 1, fp);
-  fwrite(&gt_ratio, sizeof(double), 1, fp);
-}
-
-void PairEllipsoid::read_restart_settings(FILE *fp)
-{
-  double version = 0.0;
-  if (comm->me == 0) utils::sfread(FLERR, &version, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&version, 1, MPI_DOUBLE, 0, world);
-  if (version != RESTART_VERSION)
-    error->all(FLERR, "pair_style ellipsoid: this restart file was written by an older POLYDEM "
-               "(another sign convention of the friction history); restart it with that "
-               "version, or write a data file there and start from it");
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &overlap, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &damping_mass, sizeof(int), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &kt_ratio, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &gt_ratio, sizeof(double), 1, fp, nullptr, error);
-  }
-  MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&overlap, 1, MPI_INT, 0, world);
-  MPI_Bcast(&damping_mass, 1, MPI_INT, 0, world);
-  MPI_Bcast(&kt_ratio, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&gt_ratio, 1, MPI_DOUBLE, 0, world);
-}
-
-// the history is that of the lower-tag atom of the pair (polydem_contact_law.h)
-void PairEllipsoid::transfer_history(double *source, double *target POLYDEM_TRANSFER_HISTORY_TYPES)
-{
-  for (int k = 0; k < SIZE_HISTORY; k++) target[k] = source[k];
 }
 
 void *PairEllipsoid::extract(const char *str, int &dim)

@@ -16,15 +16,14 @@ PairStyle(ellipsoid,PairEllipsoid);
 #ifndef LMP_PAIR_ELLIPSOID_H
 #define LMP_PAIR_ELLIPSOID_H
 
-#include "pair.h"
-#include "polydem_lammps_compat.h"
+#include "pair_polydem.h"
 #include "polydem_law_table.h"
 
 #include <vector>
 
 namespace LAMMPS_NS {
 
-class PairEllipsoid : public Pair {
+class PairEllipsoid : public PairPolydem {
  public:
   PairEllipsoid(class LAMMPS *);
   ~PairEllipsoid() override;
@@ -33,10 +32,6 @@ class PairEllipsoid : public Pair {
   void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
-  void write_restart_settings(FILE *) override;
-  void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
 
   // counters since the start of the run (global after report_counters), in
@@ -44,7 +39,6 @@ class PairEllipsoid : public Pair {
   // CNT_COLLISIONS: contacts in their first step (delta < (d delta/dt) dt), i.e.
   // collisions started; CNT_CONTACTS: pair-steps in contact
   enum { CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, CNT_COLLISIONS, NCOUNT };
-  double counters[NCOUNT];
 
  protected:
   double **kn, **restitution;    // per type pair
@@ -55,18 +49,14 @@ class PairEllipsoid : public Pair {
   polydem::LawTable<double> laws;
   double kt_ratio, gt_ratio;     // k_t / k_n, gamma_t / gamma_n (keyword tangential)
   int use_history;               // some mu > 0: per-pair tangential history
-  class FixDummy *fix_dummy;
-  class FixNeighHistory *fix_history;
-  int history_id;                // suffix of the history fix ID
   double overlap_warn;           // warn for delta > overlap_warn * smallest semi-axis
   int overlap;                   // polydem::OVERLAP_CENTRE or OVERLAP_CHORD
   int damping_mass;              // polydem::DAMPING_REDUCED or DAMPING_CONTACT
-  class PolyShapeLibrary *avec;
-  double local_counts[NCOUNT];
-  double reported[NCOUNT];
 
-  void allocate();
-  void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
+  void allocate() override;
+  void settings_fields(RestartFields &) override;
+  void coeff_fields(RestartFields &) override;
+  const char *restart_version_text() const override;
   int friction_used() const;
   void report_counters();
   void check_timestep();

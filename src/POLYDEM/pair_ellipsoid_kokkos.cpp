@@ -147,8 +147,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
   // the plain init_style (which would otherwise create a plain one)
   if (friction_used() && fix_history == nullptr) {
     fix_history = polydem_kk::create_history_fix<DeviceType>(
-        modify, "NEIGH_HISTORY_ELL" + std::to_string(history_id),
-        "NEIGH_HISTORY_ELL_DUMMY" + std::to_string(history_id), polydem::ELLIPSOID_HIST,
+        modify, history_fix_id(), dummy_fix_id(), polydem::ELLIPSOID_HIST,
         execution_space == Device);
     fix_history->pair = this;
   }

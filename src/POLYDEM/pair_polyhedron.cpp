@@ -9,7 +9,6 @@
 #include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
-#include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
 #include "math_const.h"
@@ -44,46 +43,20 @@ static_assert(int(PairPolyhedron::CNT_OVERFLOW) == int(polydem::PP_OVERFLOW) &&
                   int(PairPolyhedron::CNT_CONTACTS) == int(polydem::PP_CONTACTS) &&
                   int(PairPolyhedron::NCOUNT) == int(polydem::PP_NCOUNT),
               "counters in the order of the pipeline's");
-// first value of the restart settings since the history has 5 values (older
-// files begin with overlap/warn, which is > 0)
-static constexpr double RESTART_VERSION = -2.0;
 
 /* ---------------------------------------------------------------------- */
 
 PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
-    Pair(lmp), youngs(nullptr), poisson(nullptr), matset(nullptr), restitution(nullptr),
-    friction(nullptr), pairset(nullptr), twist(0), overlap_warn(0.05), core(1.0e-4), dt(0.0),
-    avec(nullptr),
-    fix_dummy(nullptr), fix_history(nullptr), contact_step(-1)
+    PairPolydem(lmp, "polyhedron", "NEIGH_HISTORY_POLY", SIZE_HISTORY, NCOUNT), youngs(nullptr),
+    poisson(nullptr), matset(nullptr), restitution(nullptr), friction(nullptr), twist(0),
+    pairset(nullptr), overlap_warn(0.05), core(1.0e-4), dt(0.0), contact_step(-1)
 {
-  single_enable = 0;
-  restartinfo = 1;
-  no_virial_fdotr_compute = 1;
-  centroidstressflag = CENTROID_NOTAVAIL;
-  finitecutflag = 1;
-  // one history sign convention (polydem_contact_law.h): a pair's history is
-  // that of its lower-tag atom, copied to the partner unchanged
-  nondefault_history_transfer = 1;
-  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
-
   ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
-
-  // placeholder so that the history fix keeps its place in the fix list
-  history_id = 0;
-  while (modify->find_fix("NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id)) >= 0 ||
-         modify->find_fix("NEIGH_HISTORY_POLY" + std::to_string(history_id)) >= 0)
-    history_id++;
-  fix_dummy = (FixDummy *) modify->add_fix("NEIGH_HISTORY_POLY_DUMMY" +
-                                           std::to_string(history_id) + " all DUMMY");
 }
 
 PairPolyhedron::~PairPolyhedron()
 {
   if (copymode) return;
-  if (!fix_history)
-    modify->delete_fix("NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id));
-  else
-    modify->delete_fix("NEIGH_HISTORY_POLY" + std::to_string(history_id));
   if (allocated) {
     memory->destroy(setflag);
     memory->destroy(cutsq);
@@ -213,9 +186,7 @@ void PairPolyhedron::coeff(int narg, char **arg)
 
 void PairPolyhedron::init_style()
 {
-  avec = PolyShapeLibrary::of(lmp, "pair_style polyhedron");
-  if (comm->ghost_velocity == 0)
-    error->all(FLERR, "pair_style polyhedron requires ghost velocities: use 'comm_modify vel yes'");
+  init_common(true);
   for (int t = 0; t < avec->ntemplates(); t++)
     if (avec->shape(t).nfaces() > 128)
       error->all(FLERR, "pair_style polyhedron: shape '{}' has {} faces, more than 128",
@@ -232,8 +203,6 @@ void PairPolyhedron::init_style()
       error->all(FLERR, "fix {}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
                  "polyhedra only", c.source, avec->shape_id(c.ishape));
 
-  polydem_compat::request_size_list(neighbor, this, instance_me, true);
-
   dt = update->dt;
 
   // the law table: settings now, the type pairs' entries in init_one
@@ -244,17 +213,7 @@ void PairPolyhedron::init_style()
   laws.twist = twist;
   laws.overlap_warn = overlap_warn;
 
-  if (fix_history == nullptr) {
-    fix_history = polydem_history::create_history_fix(
-        modify, "NEIGH_HISTORY_POLY" + std::to_string(history_id),
-        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id), SIZE_HISTORY);
-    fix_history->pair = this;
-  }
-  int ifix = modify->find_fix("NEIGH_HISTORY_POLY" + std::to_string(history_id));
-  if (ifix < 0) error->all(FLERR, "pair_style polyhedron: history fix not found");
-  fix_history = (FixNeighHistory *) modify->fix[ifix];
-
-  for (int k = 0; k < NCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+  setup_history_fix();
   check_timestep();
 }
 
@@ -291,12 +250,7 @@ double PairPolyhedron::init_one(int i, int j)
   fill(i, j);
   fill(j, i);
 
-  // particles present, and those an insertion fix may add later
-  double rmax = ParticleSource::max_radius(lmp);
-  for (int k = 0; k < atom->nlocal; k++) rmax = MAX(rmax, atom->radius[k]);
-  double all;
-  MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return 2.0 * all;
+  return size_cutoff();
 }
 
 /* ----------------------------------------------------------------------
@@ -411,7 +365,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
     }
   }
   if (store) contact_step = update->ntimestep;
-  if (neighbor->ago == 0) report_counters(false);
+  if (neighbor->ago == 0) report_counters();
 }
 
 /* ----------------------------------------------------------------------
@@ -445,110 +399,47 @@ const double *PairPolyhedron::contact_records(int &n, const char *who)
 }
 
 /* ----------------------------------------------------------------------
-   kernel failures and large overlaps are counted on every rank and reported
-   (collectively, at reneighboring) as warnings with counts, never silently
+   kernel failures and large overlaps, reported as warnings with counts
 ------------------------------------------------------------------------- */
 
-void PairPolyhedron::report_counters(bool /*final*/)
+void PairPolyhedron::report_counters()
 {
-  MPI_Allreduce(local_counts, counters, NCOUNT, MPI_DOUBLE, MPI_SUM, world);
-  if (comm->me != 0) return;
-  const char *what[NCOUNT] = {"overlap workspace overflows (contact skipped)",
-                              "degenerate contacts (NaN or zero size; contact skipped)",
-                              "GJK non-convergences (overlap computed anyway)",
-                              "overlaps beyond overlap/warn of the smaller particle volume",
-                              nullptr};
-  for (int k = 0; k < CNT_CONTACTS; k++)
-    if (counters[k] > reported[k]) {
-      error->warning(FLERR, "pair polyhedron: {:.0f} {} by step {}", counters[k], what[k],
-                     update->ntimestep);
-      reported[k] = counters[k];
-    }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void PairPolyhedron::write_restart_settings(FILE *fp)
-{
-  const double version = RESTART_VERSION, tw = twist;
-  fwrite(&version, sizeof(double), 1, fp);
-  fwrite(&overlap_warn, sizeof(double), 1, fp);
-  fwrite(&core, sizeof(double), 1, fp);
-  fwrite(&tw, sizeof(double), 1, fp);
-}
-
-void PairPolyhedron::read_restart_settings(FILE *fp)
-{
-  double version = 0.0, tw = 0.0;
-  if (comm->me == 0) utils::sfread(FLERR, &version, sizeof(double), 1, fp, nullptr, error);
-  MPI_Bcast(&version, 1, MPI_DOUBLE, 0, world);
-  if (version != RESTART_VERSION)
-    error->all(FLERR, "pair_style polyhedron: this restart file was written by an older POLYDEM "
-               "(contact history of 4 values, another sign convention); restart it with that "
-               "version, or write a data file there and start from it");
-  if (comm->me == 0) {
-    utils::sfread(FLERR, &overlap_warn, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &core, sizeof(double), 1, fp, nullptr, error);
-    utils::sfread(FLERR, &tw, sizeof(double), 1, fp, nullptr, error);
-  }
-  MPI_Bcast(&overlap_warn, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&core, 1, MPI_DOUBLE, 0, world);
-  MPI_Bcast(&tw, 1, MPI_DOUBLE, 0, world);
-  twist = tw != 0.0;
+  const char *what[] = {"overlap workspace overflows (contact skipped)",
+                        "degenerate contacts (NaN or zero size; contact skipped)",
+                        "GJK non-convergences (overlap computed anyway)",
+                        "overlaps beyond overlap/warn of the smaller particle volume"};
+  PairPolydem::report_counters(what, CNT_CONTACTS);
 }
 
 /* ----------------------------------------------------------------------
-   the history is that of the lower-tag atom of the pair
-   (polydem_contact_law.h): the partner's copy is the same numbers
+   restart: the settings, then per type its material and per type pair
+   (j >= i) its coefficients
 ------------------------------------------------------------------------- */
 
-void PairPolyhedron::transfer_history(double *source, double *target POLYDEM_TRANSFER_HISTORY_TYPES)
+void PairPolyhedron::settings_fields(RestartFields &io)
 {
-  for (int k = 0; k < SIZE_HISTORY; k++) target[k] = source[k];
+  io(overlap_warn);
+  io(core);
+  io.flag_as_double(twist);
 }
 
-void PairPolyhedron::write_restart(FILE *fp)
+const char *PairPolyhedron::restart_version_text() const
 {
-  write_restart_settings(fp);
+  return "contact history of 4 values, another sign convention";
+}
+
+void PairPolyhedron::coeff_fields(RestartFields &io)
+{
   const int n = atom->ntypes;
   for (int i = 1; i <= n; i++) {
-    fwrite(&matset[i], sizeof(int), 1, fp);
-    fwrite(&youngs[i], sizeof(double), 1, fp);
-    fwrite(&poisson[i], sizeof(double), 1, fp);
+    io(matset[i]);
+    io(youngs[i]);
+    io(poisson[i]);
     for (int j = i; j <= n; j++) {
-      fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      fwrite(&pairset[i][j], sizeof(int), 1, fp);
-      fwrite(&restitution[i][j], sizeof(double), 1, fp);
-      fwrite(&friction[i][j], sizeof(double), 1, fp);
-    }
-  }
-}
-
-void PairPolyhedron::read_restart(FILE *fp)
-{
-  read_restart_settings(fp);
-  allocate();
-  const int n = atom->ntypes, me = comm->me;
-  for (int i = 1; i <= n; i++) {
-    if (me == 0) {
-      utils::sfread(FLERR, &matset[i], sizeof(int), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &youngs[i], sizeof(double), 1, fp, nullptr, error);
-      utils::sfread(FLERR, &poisson[i], sizeof(double), 1, fp, nullptr, error);
-    }
-    MPI_Bcast(&matset[i], 1, MPI_INT, 0, world);
-    MPI_Bcast(&youngs[i], 1, MPI_DOUBLE, 0, world);
-    MPI_Bcast(&poisson[i], 1, MPI_DOUBLE, 0, world);
-    for (int j = i; j <= n; j++) {
-      if (me == 0) {
-        utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
-        utils::sfread(FLERR, &pairset[i][j], sizeof(int), 1, fp, nullptr, error);
-        utils::sfread(FLERR, &restitution[i][j], sizeof(double), 1, fp, nullptr, error);
-        utils::sfread(FLERR, &friction[i][j], sizeof(double), 1, fp, nullptr, error);
-      }
-      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
-      MPI_Bcast(&pairset[i][j], 1, MPI_INT, 0, world);
-      MPI_Bcast(&restitution[i][j], 1, MPI_DOUBLE, 0, world);
-      MPI_Bcast(&friction[i][j], 1, MPI_DOUBLE, 0, world);
+      io(setflag[i][j]);
+      io(pairset[i][j]);
+      io(restitution[i][j]);
+      io(friction[i][j]);
     }
   }
 }

@@ -15,9 +15,8 @@ PairStyle(polyhedron,PairPolyhedron);
 #ifndef LMP_PAIR_POLYHEDRON_H
 #define LMP_PAIR_POLYHEDRON_H
 
-#include "pair.h"
+#include "pair_polydem.h"
 #include "poly_roles.h"
-#include "polydem_lammps_compat.h"
 #include "polydem_law_table.h"
 
 #include <memory>
@@ -29,7 +28,7 @@ template <typename T, int MF> struct OverlapWorkspace;
 
 namespace LAMMPS_NS {
 
-class PairPolyhedron : public Pair, public ContactRecordSource {
+class PairPolyhedron : public PairPolydem, public ContactRecordSource {
  public:
   PairPolyhedron(class LAMMPS *);
   ~PairPolyhedron() override;
@@ -38,17 +37,12 @@ class PairPolyhedron : public Pair, public ContactRecordSource {
   void coeff(int, char **) override;
   void init_style() override;
   double init_one(int, int) override;
-  void write_restart(FILE *) override;
-  void read_restart(FILE *) override;
-  void write_restart_settings(FILE *) override;
-  void read_restart_settings(FILE *) override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
 
   // counters since the start of the run (global after report_counters);
   // the order of polydem::PolyhedronPairCount (polydem_contact_pipeline.h)
   enum { CNT_OVERFLOW, CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, NCOUNT };
-  double counters[NCOUNT];
 
   // Per-contact records (polydem_contact_record.h) of the force evaluation of
   // the current step, each contact once over all ranks, for the contact
@@ -70,24 +64,16 @@ class PairPolyhedron : public Pair, public ContactRecordSource {
   double core;                 // quadratic W below V0 = core * smaller particle volume
   double dt;
 
-  class PolyShapeLibrary *avec;
-  class FixDummy *fix_dummy;
-  class FixNeighHistory *fix_history;
-  // suffix of the history fix ID: counts polyhedron pair styles of this
-  // LAMMPS instance (Pair::instance_me counts all instances of the process,
-  // so with several LAMMPS objects a restart would not find its history)
-  int history_id;
   std::unique_ptr<polydem::OverlapWorkspace<double, 128>> ws;
-  double local_counts[NCOUNT];
-  double reported[NCOUNT];
-
-  void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
   std::vector<double> contact_data;    // CR_NFIELD doubles per stored contact
   bigint contact_step;                 // step of contact_data, -1: none
 
   bool store_contacts_now();
-  void allocate();
-  void report_counters(bool final);
+  void allocate() override;
+  void settings_fields(RestartFields &) override;
+  void coeff_fields(RestartFields &) override;
+  const char *restart_version_text() const override;
+  void report_counters();
   void check_timestep();
 };
 

@@ -249,9 +249,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::init_style()
 
   if (fix_history == nullptr) {
     fix_history = polydem_kk::create_history_fix<DeviceType>(
-        modify, "NEIGH_HISTORY_POLY" + std::to_string(history_id),
-        "NEIGH_HISTORY_POLY_DUMMY" + std::to_string(history_id), SIZE_HISTORY,
-        execution_space == Device);
+        modify, history_fix_id(), dummy_fix_id(), SIZE_HISTORY, execution_space == Device);
     fix_history->pair = this;
   }
 
@@ -510,7 +508,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
     k_vatom.template sync<LMPHostType>();
   }
 
-  if (neighbor->ago == 0) report_counters(false);
+  if (neighbor->ago == 0) report_counters();
 }
 
 /* ---------------------------------------------------------------------- */

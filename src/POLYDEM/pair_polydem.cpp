@@ -1,0 +1,189 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - host code shared by pair_style polyhedron and ellipsoid
+------------------------------------------------------------------------- */
+
+#include "pair_polydem.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix_dummy.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "poly_roles.h"
+#include "poly_shape_library.h"
+#include "update.h"
+
+#include "polydem_history.h"
+
+#include <algorithm>
+
+using namespace LAMMPS_NS;
+
+// first value of the restart settings: the layout since the history
+// convention of polydem_contact_law.h (older files begin with overlap/warn > 0)
+static constexpr double RESTART_VERSION = -2.0;
+
+PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nhist, int ncnt) :
+    Pair(lmp), style_name(style), history_tag(tag), nhistory(nhist), ncount(ncnt), avec(nullptr),
+    fix_dummy(nullptr), fix_history(nullptr), history_id(0)
+{
+  if (ncount > MAXCOUNT) error->all(FLERR, "pair_style {}: too many counters", style_name);
+  single_enable = 0;
+  restartinfo = 1;
+  no_virial_fdotr_compute = 1;
+  centroidstressflag = CENTROID_NOTAVAIL;
+  finitecutflag = 1;
+  // one history sign convention (polydem_contact_law.h): a pair's history is
+  // that of its lower-tag atom, copied to the partner unchanged
+  nondefault_history_transfer = 1;
+  for (int k = 0; k < MAXCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+
+  // placeholder so that a history fix keeps its place in the fix list
+  while (modify->find_fix(dummy_fix_id()) >= 0 || modify->find_fix(history_fix_id()) >= 0)
+    history_id++;
+  fix_dummy = (FixDummy *) modify->add_fix(dummy_fix_id() + " all DUMMY");
+}
+
+PairPolydem::~PairPolydem()
+{
+  if (copymode) return;
+  modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
+}
+
+std::string PairPolydem::history_fix_id() const
+{
+  return history_tag + std::to_string(history_id);
+}
+
+std::string PairPolydem::dummy_fix_id() const
+{
+  return history_tag + "_DUMMY" + std::to_string(history_id);
+}
+
+void PairPolydem::init_common(bool history)
+{
+  avec = PolyShapeLibrary::of(lmp, ("pair_style " + style_name).c_str());
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "pair_style {} requires ghost velocities: use 'comm_modify vel yes'",
+               style_name);
+  polydem_compat::request_size_list(neighbor, this, instance_me, history);
+  for (int k = 0; k < MAXCOUNT; k++) counters[k] = local_counts[k] = reported[k] = 0.0;
+}
+
+void PairPolydem::setup_history_fix()
+{
+  if (fix_history == nullptr) {
+    fix_history = polydem_history::create_history_fix(modify, history_fix_id(), dummy_fix_id(),
+                                                      nhistory);
+    fix_history->pair = this;
+  }
+  const int ifix = modify->find_fix(history_fix_id());
+  if (ifix < 0) error->all(FLERR, "pair_style {}: history fix not found", style_name);
+  fix_history = (FixNeighHistory *) modify->fix[ifix];
+}
+
+/* ----------------------------------------------------------------------
+   kernel failures and large overlaps are counted on every rank and reported
+   (collectively, at reneighboring) as warnings with counts, never silently
+------------------------------------------------------------------------- */
+
+void PairPolydem::report_counters(const char *const *what, int nwarn)
+{
+  MPI_Allreduce(local_counts, counters, ncount, MPI_DOUBLE, MPI_SUM, world);
+  if (comm->me != 0) return;
+  for (int k = 0; k < nwarn; k++)
+    if (counters[k] > reported[k]) {
+      error->warning(FLERR, "pair {}: {:.0f} {} by step {}", style_name, counters[k], what[k],
+                     update->ntimestep);
+      reported[k] = counters[k];
+    }
+}
+
+/* ----------------------------------------------------------------------
+   particles present, and those an insertion fix may add later: LAMMPS's
+   size neighbor list uses radius_i + radius_j, so particles of any size
+   interact within twice the largest bounding radius
+------------------------------------------------------------------------- */
+
+double PairPolydem::size_cutoff()
+{
+  double rmax = ParticleSource::max_radius(lmp);
+  for (int k = 0; k < atom->nlocal; k++) rmax = std::max(rmax, atom->radius[k]);
+  double all;
+  MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return 2.0 * all;
+}
+
+// the history is that of the lower-tag atom of the pair (polydem_contact_law.h):
+// the partner's copy is the same numbers
+void PairPolydem::transfer_history(double *source, double *target POLYDEM_TRANSFER_HISTORY_TYPES)
+{
+  for (int k = 0; k < nhistory; k++) target[k] = source[k];
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairPolydem::RestartFields::operator()(double &v)
+{
+  if (!reading) {
+    fwrite(&v, sizeof(double), 1, fp);
+    return;
+  }
+  if (pair->comm->me == 0) utils::sfread(FLERR, &v, sizeof(double), 1, fp, nullptr, pair->error);
+  MPI_Bcast(&v, 1, MPI_DOUBLE, 0, pair->world);
+}
+
+void PairPolydem::RestartFields::operator()(int &v)
+{
+  if (!reading) {
+    fwrite(&v, sizeof(int), 1, fp);
+    return;
+  }
+  if (pair->comm->me == 0) utils::sfread(FLERR, &v, sizeof(int), 1, fp, nullptr, pair->error);
+  MPI_Bcast(&v, 1, MPI_INT, 0, pair->world);
+}
+
+void PairPolydem::RestartFields::flag_as_double(int &v)
+{
+  double d = v;
+  (*this)(d);
+  v = d != 0.0;
+}
+
+void PairPolydem::write_restart_settings(FILE *fp)
+{
+  double version = RESTART_VERSION;
+  RestartFields io(this, fp, false);
+  io(version);
+  settings_fields(io);
+}
+
+void PairPolydem::read_restart_settings(FILE *fp)
+{
+  double version = 0.0;
+  RestartFields io(this, fp, true);
+  io(version);
+  if (version != RESTART_VERSION)
+    error->all(FLERR, "pair_style {}: this restart file was written by an older POLYDEM ({}); "
+               "restart it with that version, or write a data file there and start from it",
+               style_name, restart_version_text());
+  settings_fields(io);
+}
+
+void PairPolydem::write_restart(FILE *fp)
+{
+  write_restart_settings(fp);
+  RestartFields io(this, fp, false);
+  coeff_fields(io);
+}
+
+void PairPolydem::read_restart(FILE *fp)
+{
+  read_restart_settings(fp);
+  allocate();
+  RestartFields io(this, fp, true);
+  coeff_fields(io);
+}
