@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_ellipsoid_kokkos.h"
+#include "pair_polydem_kokkos.h"
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
@@ -136,27 +137,9 @@ template <class DeviceType> PairEllipsoidKokkos<DeviceType>::~PairEllipsoidKokko
 
 template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
 {
-  avecKK = AtomVecPolyhedronKokkos::of(atom);
-  if (!avecKK) error->all(FLERR, "pair_style ellipsoid/kk requires atom_style polyhedron/kk");
-  // as pair polyhedron/kk: forces on ghosts are not reverse-communicated here
-  if (force->newton_pair)
-    error->all(FLERR,
-               "pair_style ellipsoid/kk requires newton pair off: use "
-               "'-pk kokkos newton off' or 'package kokkos newton off' (default on GPUs)");
-  // friction: the Kokkos history fix takes the placeholder's place before
-  // the plain init_style (which would otherwise create a plain one)
-  if (friction_used() && fix_history == nullptr) {
-    fix_history = polydem_kk::create_history_fix<DeviceType>(
-        modify, history_fix_id(), dummy_fix_id(), polydem::ELLIPSOID_HIST,
-        execution_space == Device);
-    fix_history->pair = this;
-  }
+  avecKK = kk_init_before<DeviceType>(friction_used());
   PairEllipsoid::init_style();
-  polydem_compat::request_kokkos_half_list(
-      neighbor, this,
-      std::is_same<DeviceType, LMPHostType>::value &&
-          !std::is_same<DeviceType, LMPDeviceType>::value,
-      std::is_same<DeviceType, LMPDeviceType>::value);
+  kk_init_after<DeviceType>();
   params_dirty = 1;
 }
 

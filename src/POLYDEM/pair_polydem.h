@@ -83,6 +83,10 @@ class PairPolydem : public Pair {
   // twice the largest bounding radius present or announced by an insertion fix
   double size_cutoff();
   void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
+
+  // the /kk styles' init_style around the plain one (pair_polydem_kokkos.h)
+  template <class DeviceType> class AtomVecPolyhedronKokkos *kk_init_before(bool history);
+  template <class DeviceType> void kk_init_after();
 };
 
 }    // namespace LAMMPS_NS

@@ -3,6 +3,7 @@
 ------------------------------------------------------------------------- */
 
 #include "pair_polyhedron_kokkos.h"
+#include "pair_polydem_kokkos.h"
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
@@ -237,33 +238,10 @@ template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::workspace_b
 
 template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::init_style()
 {
-  avecKK = AtomVecPolyhedronKokkos::of(atom);
-  if (!avecKK) error->all(FLERR, "pair_style polyhedron/kk requires atom_style polyhedron/kk");
-  // FixNeighHistoryKokkos keeps the history of a pair with a ghost atom only
-  // on the owner of i (its pre_exchange has no reverse communication): with
-  // newton on, a pair whose owner changes at reneighboring would lose it
-  if (force->newton_pair)
-    error->all(FLERR,
-               "pair_style polyhedron/kk requires newton pair off: use "
-               "'-pk kokkos newton off' or 'package kokkos newton off' (default on GPUs)");
-
-  if (fix_history == nullptr) {
-    fix_history = polydem_kk::create_history_fix<DeviceType>(
-        modify, history_fix_id(), dummy_fix_id(), SIZE_HISTORY, execution_space == Device);
-    fix_history->pair = this;
-  }
-
+  avecKK = kk_init_before<DeviceType>(true);
   PairPolyhedron::init_style();
   fix_historyKK = (FixNeighHistoryKokkos<DeviceType> *) fix_history;
-
-  // a half list whatever 'package kokkos neigh' says: each pair once, with
-  // one history slot; forces go to both atoms with atomics
-  polydem_compat::request_kokkos_half_list(
-      neighbor, this,
-      std::is_same<DeviceType, LMPHostType>::value &&
-          !std::is_same<DeviceType, LMPDeviceType>::value,
-      std::is_same<DeviceType, LMPDeviceType>::value);
-
+  kk_init_after<DeviceType>();
   shapes.version = -1;
   params_dirty = 1;
 }
