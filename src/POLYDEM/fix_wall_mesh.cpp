@@ -37,13 +37,13 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
     wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
-    overlap_warn(0.05), movestyle(MOVE_NONE), omega(0.0), period(1.0), elapsed(0.0), hist(nullptr),
+    overlap_warn(0.05), elapsed(0.0), hist(nullptr),
     ellipsoids(0), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
     near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
-  for (int k = 0; k < 3; k++) vel[k] = origin[k] = axis[k] = amp[k] = 0.0;
+  auto &motion = geom.motion;
 
   scalar_flag = 1;
   extscalar = 1;
@@ -205,41 +205,41 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       need(iarg, 1, "none, translate, rotate or wiggle");
       const std::string m = arg[iarg + 1];
       if (m == "none") {
-        movestyle = MOVE_NONE;
+        motion.style = polydem::MeshMotion::NONE;
         iarg += 2;
       } else if (m == "translate") {
         need(iarg + 1, 3, "vx vy vz");
-        movestyle = MOVE_TRANSLATE;
-        for (int k = 0; k < 3; k++) vel[k] = num(iarg + 2 + k);
+        motion.style = polydem::MeshMotion::TRANSLATE;
+        for (int k = 0; k < 3; k++) motion.vel[k] = num(iarg + 2 + k);
         iarg += 5;
       } else if (m == "wiggle") {
-        need(iarg + 1, 4, "Ax Ay Az period");
-        movestyle = MOVE_WIGGLE;
-        for (int k = 0; k < 3; k++) amp[k] = num(iarg + 2 + k);
-        period = num(iarg + 5);
-        if (!(period > 0.0) || !std::isfinite(2.0 * MY_PI / period))
+        need(iarg + 1, 4, "Ax Ay Az motion.period");
+        motion.style = polydem::MeshMotion::WIGGLE;
+        for (int k = 0; k < 3; k++) motion.amp[k] = num(iarg + 2 + k);
+        motion.period = num(iarg + 5);
+        if (!(motion.period > 0.0) || !std::isfinite(2.0 * MY_PI / motion.period))
           error->all(FLERR, "fix wall/mesh: move wiggle period must be > 0, got '{}'", arg[iarg + 5]);
         for (int k = 0; k < 3; k++)
-          if (!std::isfinite(amp[k]))
+          if (!std::isfinite(motion.amp[k]))
             error->all(FLERR, "fix wall/mesh: move wiggle amplitude must be finite, got '{}'",
                        arg[iarg + 2 + k]);
         iarg += 6;
       } else if (m == "rotate") {
         need(iarg + 1, 8, "ox oy oz ax ay az omega|rpm value");
-        movestyle = MOVE_ROTATE;
-        for (int k = 0; k < 3; k++) origin[k] = num(iarg + 2 + k);
-        for (int k = 0; k < 3; k++) axis[k] = num(iarg + 5 + k);
+        motion.style = polydem::MeshMotion::ROTATE;
+        for (int k = 0; k < 3; k++) motion.origin[k] = num(iarg + 2 + k);
+        for (int k = 0; k < 3; k++) motion.axis[k] = num(iarg + 5 + k);
         const std::string u = arg[iarg + 8];
         const double val = num(iarg + 9);
-        if (u == "omega") omega = val;
-        else if (u == "rpm") omega = val * 2.0 * MY_PI / 60.0;
+        if (u == "omega") motion.omega = val;
+        else if (u == "rpm") motion.omega = val * 2.0 * MY_PI / 60.0;
         else
           error->all(FLERR, "fix wall/mesh: move rotate expects 'omega' or 'rpm', got '{}'", u);
-        if (!std::isfinite(omega))
+        if (!std::isfinite(motion.omega))
           error->all(FLERR, "fix wall/mesh: move rotate {} {} is not a finite rate", u, val);
-        const double l = length(axis);
+        const double l = length(motion.axis);
         if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: move rotate axis must be non-zero");
-        for (int k = 0; k < 3; k++) axis[k] /= l;
+        for (int k = 0; k < 3; k++) motion.axis[k] /= l;
         iarg += 10;
       } else
         error->all(FLERR, "fix wall/mesh: unknown move style '{}' (none, translate, rotate, wiggle)",
@@ -263,13 +263,11 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     xf.R[2][0] -= s * u[1];
     xf.R[2][1] += s * u[0];
   }
-  cosmax = cos(patch_angle * MY_PI / 180.0);
-
   // every rank reads the file (meshes are replicated); rank 0 reports
   int ok = 1;
   std::string why;
   try {
-    mesh = polydem::read_stl(file, xf);
+    geom.load(file, xf, merge_tol, patch_angle);
   } catch (polydem::StlError &e) {
     ok = 0;
     why = e.what();
@@ -284,9 +282,13 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     if (!ok) error->one(FLERR, "fix wall/mesh: {}", why);
     error->all(FLERR, "fix wall/mesh: cannot read {}", file);
   }
+  const auto &mesh = geom.mesh;
+  const auto &merged = geom.merged;
   if (comm->me == 0) {
+    // kept: before coplanar merging
+    const int kept = merged.after != merged.before ? merged.before : mesh.ntri();
     utils::logmesg(lmp, "fix wall/mesh {}: {} {} STL, {} triangles read, {} kept\n", id, file,
-                   mesh.binary ? "binary" : "ASCII", mesh.nread, mesh.ntri());
+                   mesh.binary ? "binary" : "ASCII", mesh.nread, kept);
     if (mesh.ndegenerate > 0)
       error->warning(FLERR, "fix wall/mesh: {}: {} zero-area triangles dropped", file,
                      mesh.ndegenerate);
@@ -305,49 +307,25 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
       error->warning(FLERR, "fix wall/mesh: {}: {} duplicate triangles dropped", file,
                      mesh.nduplicate);
   }
-  // the mesh's bounding-box diagonal: the tolerances below are relative to it
-  double diag = 0.0;
-  {
-    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (size_t k = 0; k < mesh.tri.size(); k++) {
-      lo[k % 3] = MIN(lo[k % 3], mesh.tri[k]);
-      hi[k % 3] = MAX(hi[k % 3], mesh.tri[k]);
-    }
-    for (int d = 0; d < 3; d++) diag += (hi[d] - lo[d]) * (hi[d] - lo[d]);
-    diag = sqrt(diag);
-  }
-  // coplanar merging (same on every rank: deterministic)
-  if (merge_tol >= 0.0) {
-    merged = polydem::merge_coplanar(mesh.tri, merge_tol * diag);
-    if (comm->me == 0 && merged.after != merged.before)
-      utils::logmesg(lmp, "fix wall/mesh {}: {} coplanar regions re-triangulated, {} -> {} "
-                     "triangles ({} holes bridged, {} regions kept as read)\n", id,
-                     merged.merged_regions, merged.before, merged.after, merged.bridged_holes,
-                     merged.kept_holes + merged.kept_failed);
-  }
-
-  // smooth regions, the patches' keys (after merging: its triangles; merging
-  // keeps the outline's vertices, so the bounding box too)
-  {
-    regions = polydem::mesh_regions(mesh.tri, cosmax, 1e-9 * diag);
-    if (comm->me == 0) {
-      int nreg = 0;
-      for (size_t t = 0; t < regions.size(); t++) nreg += regions[t] >> 1 == (int) t;
-      utils::logmesg(lmp, "fix wall/mesh {}: {} smooth regions (patch/angle {})\n", id, nreg,
-                     patch_angle);
-    }
-  }
+  if (comm->me == 0 && merged.after != merged.before)
+    utils::logmesg(lmp, "fix wall/mesh {}: {} coplanar regions re-triangulated, {} -> {} "
+                   "triangles ({} holes bridged, {} regions kept as read)\n", id,
+                   merged.merged_regions, merged.before, merged.after, merged.bridged_holes,
+                   merged.kept_holes + merged.kept_failed);
+  if (comm->me == 0)
+    utils::logmesg(lmp, "fix wall/mesh {}: {} smooth regions (patch/angle {})\n", id,
+                   geom.nregions, patch_angle);
 
   for (int k = 0; k <= NVEC; k++) local[k] = global[k] = 0.0;
   for (int k = 0; k < NCOUNTS; k++) counts_local[k] = counts_reported[k] = 0.0;
   for (double &c : fresh_local) c = 0.0;
   if (pertri) {
     array_flag = 1;
-    size_array_rows = mesh.ntri();
+    size_array_rows = geom.mesh.ntri();
     size_array_cols = 4;
     extarray = 0;
-    tri_local.assign(3 * (size_t) mesh.ntri(), 0.0);
-    tri_global.assign(3 * (size_t) mesh.ntri(), 0.0);
+    tri_local.assign(3 * (size_t) geom.mesh.ntri(), 0.0);
+    tri_global.assign(3 * (size_t) geom.mesh.ntri(), 0.0);
   }
 
   grow_arrays(atom->nmax);
@@ -455,21 +433,7 @@ void FixWallMesh::init()
 void FixWallMesh::check_mesh_step()
 {
   constexpr double MESH_STEP_WARN = 0.1;
-  double speed = 0.0;
-  if (movestyle == MOVE_TRANSLATE)
-    speed = sqrt(vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]);
-  else if (movestyle == MOVE_WIGGLE)
-    speed = 2.0 * MY_PI / period * sqrt(amp[0] * amp[0] + amp[1] * amp[1] + amp[2] * amp[2]);
-  else if (movestyle == MOVE_ROTATE) {
-    double r2 = 0.0;    // largest squared distance of a vertex from the axis
-    for (size_t k = 0; k < mesh.tri.size(); k += 3) {
-      const double d[3] = {mesh.tri[k] - origin[0], mesh.tri[k + 1] - origin[1],
-                           mesh.tri[k + 2] - origin[2]};
-      const double a = d[0] * axis[0] + d[1] * axis[1] + d[2] * axis[2];
-      r2 = MAX(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - a * a);
-    }
-    speed = fabs(omega) * sqrt(r2);
-  }
+  const double speed = geom.motion.max_speed(geom.mesh.tri);
   if (!(speed > 0.0)) return;
   double rin = 1e300;
   for (int i = 0; i < atom->nlocal; i++)
@@ -559,165 +523,35 @@ void FixWallMesh::build_grid()
     for (int i = 0; i < atom->nlocal; i++)
       if (atom->mask[i] & groupbit) rmax = MAX(rmax, atom->radius[i]);
     MPI_Allreduce(MPI_IN_PLACE, &rmax, 1, MPI_DOUBLE, MPI_MAX, world);
-    // median edge: robust when merged regions make a few very large triangles
-    std::vector<double> edges;
-    const int nt = mesh.ntri();
-    for (int t = 0; t < nt; t++)
-      for (int e = 0; e < 3; e++) {
-        const double *p = &mesh.tri[9 * t + 3 * e], *q = &mesh.tri[9 * t + 3 * ((e + 1) % 3)];
-        edges.push_back(sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                             (p[2] - q[2]) * (p[2] - q[2])));
-      }
-    std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
-    const double edge = edges[edges.size() / 2];
-    h = MAX(0.5 * rmax, 2.0 * edge);
+    h = geom.automatic_bin(rmax);
   }
-  if (!grid.start.empty() && grid.h == h) return;
-  grid = polydem::build_mesh_grid(mesh.tri, h);
+  if (!geom.set_grid(h)) return;
+  const auto &grid = geom.grid;
   if (comm->me == 0 && binsize > 0.0 && grid.h > binsize)
     error->warning(FLERR, "fix wall/mesh {}: bin {} enlarged to {:.6g} (at most {} bins and 2^28 "
                    "entries)", id, binsize, grid.h, 1L << 22);
   if (comm->me == 0)
-    utils::logmesg(lmp, "fix wall/mesh {}: bin grid {} x {} x {}, edge {:.6g}, {} entries for {} triangles\n",
-                   id, grid.n[0], grid.n[1], grid.n[2], grid.h, grid.items.size(), mesh.ntri());
+    utils::logmesg(lmp, "fix wall/mesh {}: bin grid {} x {} x {}, edge {:.6g}, {} entries for {} "
+                   "triangles\n", id, grid.n[0], grid.n[1], grid.n[2], grid.h, grid.items.size(),
+                   geom.ntri());
 }
 
-polydem::MeshGridView<double> FixWallMesh::grid_view() const
-{
-  polydem::MeshGridView<double> g;
-  g.tri = mesh.tri.data();
-  g.ntri = mesh.ntri();
-  for (int d = 0; d < 3; d++) {
-    g.lo[d] = grid.lo[d];
-    g.n[d] = grid.n[d];
-  }
-  g.h = grid.h;
-  g.start = grid.start.data();
-  g.items = grid.items.data();
-  g.plane = grid.plane.data();
-  g.box = grid.box.data();
-  g.tbin = grid.tbin.data();
-  g.region = regions.data();
-  return g;
-}
-
+// the obstacle query of fix insert/polyhedron: the mesh answers it at its pose now
 bool FixWallMesh::insertion_clear(const polydem::InsertBody<double> &lab,
                                   const polydem::Quat<double> &q, double gap)
 {
-  const auto mp = mesh_pose();
-  const auto g = grid_view();
-  polydem::InsertBody<double> b = lab;    // into the mesh frame
-  b.x = mp.o + polydem::matTvec(mp.R, lab.x - mp.o - mp.d);
-  const polydem::Quat<double> qm = polydem::qmul(polydem::qconj(mp.q), q);
-  b.R = polydem::quat_to_mat(qm);
-  struct Visit {
-    const polydem::MeshGridView<double> *g;
-    const polydem::InsertBody<double> *b;
-    double gap;
-    bool clear;
-    void operator()(int t)
-    {
-      if (!clear) return;
-      polydem::TriangleSupport<double> ts;
-      for (int k = 0; k < 9; k++) ts.p[k] = g->tri[9 * t + k];
-      clear = polydem::body_triangle_apart(*b, ts, gap);
-    }
-  } visit{&g, &b, gap, true};
-  polydem::mesh_for_each_near(g, b.x, b.radius + gap, visit);
-  if (!visit.clear) return false;
-  polydem::WallPatches<double> P;
-  polydem::WallSides<double> sides;    // no history: each triangle met on the centroid's side
-  sides.both = twosided;
-  sides.n = 0;
-  if (!b.view) {
-    // apart from every triangle: an ellipsoid can still be behind one of a
-    // one-sided wall (sides front), which its forces would act on
-    polydem::WallEllipsoid<double> e;
-    e.c = b.x;
-    e.R = b.R;
-    e.ax = b.ax;
-    polydem::wall_ellipsoid_patches(e, g, cosmax, P, &sides);
-    return P.n == 0 && P.ndegenerate == 0 && !behind_one_sided(g, b.x);
-  }
-  // apart from every triangle, but possibly behind one: the wall's own
-  // contact volume decides (what its forces would act on)
-  if (!ws) ws = std::make_unique<polydem::WallWorkspace<double>>();
-  ws->record = 0;
-  polydem::Pose<double> pm;
-  pm.x = b.x;
-  pm.q = qm;
-  pm.s = b.s;
-  const polydem::PosedShape<double> a = polydem::make_posed(*b.view, pm);
-  polydem::wall_patches(a, g, cosmax, *ws, P, (polydem::WallNear<double> *) nullptr, &sides);
-  for (int k = 0; k < P.n; k++)
-    if (P.p[k].volume > 0.0 || !(P.p[k].volume == P.p[k].volume)) return false;
-  return P.noverflow == 0 && P.ndegenerate == 0 && !behind_one_sided(g, b.x);
-}
-
-// sides front: is the point c (mesh frame) behind the mesh? Among the
-// triangles whose prism (the triangle swept along its normal, both ways)
-// holds c, the one whose plane is nearest decides: c behind it (the side
-// opposite its normal) is behind the wall. A grain placed there, apart
-// from the wall, is thrown through it when it reaches a triangle from
-// behind. Every triangle is tested (prisms are unbounded): a cost
-// proportional to the mesh size, paid only by poses that passed every
-// other test.
-bool FixWallMesh::behind_one_sided(const polydem::MeshGridView<double> &g,
-                                   const polydem::Vec3<double> &c) const
-{
-  if (twosided) return false;
-  double best = 1e300;
-  bool behind = false;
-  for (int t = 0; t < g.ntri; t++) {
-    const double *pl = g.plane + 4 * t, *p = g.tri + 9 * t;
-    const double h = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
-    if (!(fabs(h) < best)) continue;
-    bool in = true;
-    for (int e = 0; e < 3 && in; e++) {
-      const double *a = p + 3 * e, *b = p + 3 * ((e + 1) % 3);
-      const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-      const double w[3] = {c.x - a[0], c.y - a[1], c.z - a[2]};
-      // (b - a) x (c - a) . n: c's offset along n drops out of it
-      const double turn = (u[1] * w[2] - u[2] * w[1]) * pl[0] +
-          (u[2] * w[0] - u[0] * w[2]) * pl[1] + (u[0] * w[1] - u[1] * w[0]) * pl[2];
-      in = turn >= 0.0;
-    }
-    if (!in) continue;
-    best = fabs(h);
-    behind = h < 0.0;
-  }
-  return behind;
+  return geom.insertion_clear(mesh_pose(), lab, q, gap, twosided);
 }
 
 polydem::MeshPose<double> FixWallMesh::mesh_pose() const
 {
-  using polydem::make_vec3;
-  polydem::MeshPose<double> mp;
-  mp.o = make_vec3(origin[0], origin[1], origin[2]);
-  mp.d = make_vec3(0.0, 0.0, 0.0);
-  mp.vw = make_vec3(0.0, 0.0, 0.0);
-  mp.w = make_vec3(0.0, 0.0, 0.0);
-  mp.q = polydem::make_quat(1.0, 0.0, 0.0, 0.0);
-  if (movestyle == MOVE_TRANSLATE) {
-    mp.vw = make_vec3(vel[0], vel[1], vel[2]);
-    mp.d = elapsed * mp.vw;
-  } else if (movestyle == MOVE_WIGGLE) {
-    // d = A sin(2 pi t / T), v = A (2 pi / T) cos(2 pi t / T)
-    const double w = 2.0 * MY_PI / period;
-    mp.d = sin(w * elapsed) * make_vec3(amp[0], amp[1], amp[2]);
-    mp.vw = (w * cos(w * elapsed)) * make_vec3(amp[0], amp[1], amp[2]);
-  } else if (movestyle == MOVE_ROTATE) {
-    const double ph = 0.5 * omega * elapsed;
-    mp.q = polydem::make_quat(cos(ph), sin(ph) * axis[0], sin(ph) * axis[1], sin(ph) * axis[2]);
-    mp.w = omega * make_vec3(axis[0], axis[1], axis[2]);
-  }
-  mp.R = polydem::quat_to_mat(mp.q);
-  return mp;
+  return geom.motion.pose(elapsed);
 }
 
 polydem::WallScene<double> FixWallMesh::scene() const
 {
-  return {mesh_pose(), grid_view(), cosmax, twosided, depth_warn, overlap_warn, near_skin};
+  return {mesh_pose(), geom.grid_view(), geom.cosmax, twosided, depth_warn, overlap_warn,
+          near_skin};
 }
 
 polydem::ContactLaw<double> FixWallMesh::law_of(int t, int ishape, double s) const
@@ -916,9 +750,9 @@ double FixWallMesh::compute_array(int i, int j)
   }
   if (j < 3) return tri_global[3 * (size_t) i + j];
   const auto mp = mesh_pose();
-  const double *pl = &grid.plane[4 * (size_t) i];
+  const double *pl = &geom.grid.plane[4 * (size_t) i];
   const auto n = polydem::matvec(mp.R, polydem::make_vec3(pl[0], pl[1], pl[2]));
-  const double *q = &mesh.tri[9 * (size_t) i];
+  const double *q = &geom.mesh.tri[9 * (size_t) i];
   const auto e1 = polydem::make_vec3(q[3] - q[0], q[4] - q[1], q[5] - q[2]);
   const auto e2 = polydem::make_vec3(q[6] - q[0], q[7] - q[1], q[8] - q[2]);
   const double area = 0.5 * polydem::norm(polydem::cross(e1, e2));
@@ -999,7 +833,7 @@ int FixWallMesh::maxsize_restart()
 void FixWallMesh::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double list[2] = {elapsed, (double) mesh.ntri()};
+  const double list[2] = {elapsed, (double) geom.mesh.ntri()};
   const int size = 2 * sizeof(double);
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(list, sizeof(double), 2, fp);
@@ -1009,9 +843,9 @@ void FixWallMesh::restart(char *buf)
 {
   const auto *list = (const double *) buf;
   elapsed = list[0];
-  if ((int) list[1] != mesh.ntri())
+  if ((int) list[1] != geom.mesh.ntri())
     error->all(FLERR, "fix wall/mesh: the restart file's mesh had {} triangles, {} has {}",
-               (int) list[1], file, mesh.ntri());
+               (int) list[1], file, geom.mesh.ntri());
 }
 
 /* ----------------------------------------------------------------------
@@ -1043,8 +877,8 @@ void *FixWallMesh::extract(const char *name, int &dim)
 double FixWallMesh::memory_usage()
 {
   double bytes = (double) atom->nmax * NH * sizeof(double);
-  bytes += mesh.tri.size() * sizeof(double);
-  bytes += (grid.start.size() + grid.items.size()) * sizeof(int);
+  bytes += geom.mesh.tri.size() * sizeof(double);
+  bytes += (geom.grid.start.size() + geom.grid.items.size()) * sizeof(int);
   bytes += near_ref.size() * sizeof(double) + (near_count.size() + near_tri.size()) * sizeof(int) +
       near_gap.size() * sizeof(float);
   return bytes;

@@ -20,8 +20,7 @@ FixStyle(wall/mesh,FixWallMesh);
 
 #include "polydem_contact_pipeline.h"
 #include "polydem_insert.h"
-#include "polydem_mesh_grid.h"
-#include "polydem_stl.h"
+#include "polydem_wall_mesh.h"
 
 #include <memory>
 #include <string>
@@ -64,27 +63,20 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   bool insertion_clear(const polydem::InsertBody<double> &b, const polydem::Quat<double> &q,
                        double gap) override;
 
-  enum { MOVE_NONE, MOVE_TRANSLATE, MOVE_ROTATE, MOVE_WIGGLE };
   // vector: force on the mesh (3), torque on the mesh about its axis point
   // (3), contacts, triangles touched
   enum { NVEC = 8 };
 
  protected:
   std::string file;
-  polydem::StlMesh mesh;
-  polydem::MeshGrid grid;
+  polydem::WallMesh geom;    // triangles, smooth regions, bin grid, motion
   double binsize;    // user bin edge (0: automatic)
   double merge_tol;  // coplanar merging tolerance / bounding-box diagonal (< 0: off)
-  polydem::MergeStats merged;
-  std::vector<int> regions;    // per triangle: smooth region, the patch key (mesh_regions)
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
-  double core, patch_angle, cosmax;
+  double core, patch_angle;
   int twosided;                       // keyword sides: both (1, default) or front (0)
   int twist;                          // keyword twist: torsional friction (polydem_contact_law.h)
   double depth_warn, overlap_warn;    // warn beyond these x bounding radius, x particle volume
-  int movestyle;
-  double vel[3], origin[3], axis[3], omega;
-  double amp[3], period;    // move wiggle
   double elapsed;    // time since the fix was defined (mesh motion)
 
   double **hist;     // per atom: WALL_HIST_SIZE values
@@ -125,10 +117,7 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   std::vector<double> tri_local, tri_global;
   virtual void fetch_triangle_forces() {}    // /kk: device -> tri_local
 
-  bool behind_one_sided(const polydem::MeshGridView<double> &g,
-                        const polydem::Vec3<double> &c) const;
   polydem::MeshPose<double> mesh_pose() const;
-  polydem::MeshGridView<double> grid_view() const;
   polydem::WallScene<double> scene() const;    // the mesh as the particles see it now
   polydem::ContactLaw<double> law_of(int type, int ishape, double s) const;
   void build_grid();

@@ -156,13 +156,13 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
   if (!avecKK) error->all(FLERR, "fix wall/mesh/kk requires atom_style polyhedron/kk");
 
   // mesh and grid (rebuilt by FixWallMesh::init only if the bin edge changed)
-  upload(d_tri, mesh.tri, "wall/mesh/kk:tri");
-  upload(d_plane, grid.plane, "wall/mesh/kk:plane");
-  upload(d_box, grid.box, "wall/mesh/kk:box");
-  upload(d_start, grid.start, "wall/mesh/kk:start");
-  upload(d_items, grid.items, "wall/mesh/kk:items");
-  upload(d_tbin, grid.tbin, "wall/mesh/kk:tbin");
-  upload(d_region, regions, "wall/mesh/kk:region");
+  upload(d_tri, geom.mesh.tri, "wall/mesh/kk:tri");
+  upload(d_plane, geom.grid.plane, "wall/mesh/kk:plane");
+  upload(d_box, geom.grid.box, "wall/mesh/kk:box");
+  upload(d_start, geom.grid.start, "wall/mesh/kk:start");
+  upload(d_items, geom.grid.items, "wall/mesh/kk:items");
+  upload(d_tbin, geom.grid.tbin, "wall/mesh/kk:tbin");
+  upload(d_region, geom.regions, "wall/mesh/kk:region");
 
   // the law table (FixWallMesh::init) on the device
   d_laws_table = polydem_kk::mirror_law_table<DeviceType>(laws, d_laws);
@@ -222,8 +222,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   WallMeshKernel<DeviceType> k;
   k.pertri = pertri;
   if (pertri) {
-    if ((int) d_trif.extent(0) != mesh.ntri())
-      d_trif = Kokkos::View<double *[3], DeviceType>("wall/mesh/kk:trif", mesh.ntri());
+    if ((int) d_trif.extent(0) != geom.ntri())
+      d_trif = Kokkos::View<double *[3], DeviceType>("wall/mesh/kk:trif", geom.ntri());
     else
       Kokkos::deep_copy(d_trif, 0.0);
     k.trif = d_trif;
