@@ -7,8 +7,9 @@
    into the principal frame, merges coplanar hull triangles into convex
    polygonal faces and hands the result to the kernels as ShapeView<T>.
 
-   Host only. No LAMMPS includes and no CGAL here: CGAL lives in the .cpp
-   so that LAMMPS translation units can include this header cheaply.
+   Host only. No LAMMPS includes and no CGAL here: CGAL lives in
+   polydem_shape_hull.cpp and polydem_shape_mass.cpp so that LAMMPS
+   translation units can include this header cheaply.
 ------------------------------------------------------------------------- */
 
 #ifndef POLYDEM_SHAPE_TEMPLATE_H
@@ -116,7 +117,7 @@ class PolyShapeTemplate {
   void build(const std::vector<Point> &pts, const std::vector<std::vector<int>> &faces,
              const std::vector<int> &vlines, const std::vector<int> &flines, int vkey,
              const ShapeOptions &opt);
-  // build()'s phases that fill members (the others are static in the .cpp)
+  // build()'s phases that fill members (the others are file-local in polydem_shape_hull.cpp)
   std::vector<Point> principal_frame(const std::vector<Point> &hv,
                                      const std::vector<std::array<int, 3>> &tri,
                                      const std::string &head);

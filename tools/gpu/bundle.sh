@@ -101,7 +101,7 @@ mkdir -p "$kit/kokkos"
 # list), plus Boost's configuration headers (they differ by compiler)
 log "CGAL/Boost/GMP/MPFR headers and libraries"
 mkdir -p "$kit/deps/include" "$kit/deps/lib"
-g++ -std=c++17 -M -I"$repo/src/POLYDEM" "$repo/src/POLYDEM/polydem_shape_template.cpp" |
+g++ -std=c++17 -M -I"$repo/src/POLYDEM" "$repo"/src/POLYDEM/polydem_shape_*.cpp |
   tr ' \\' '\n\n' | grep -E '^/usr/include/(CGAL|boost)/' | sort -u > "$work/headers"
 (cd /usr/include && sed 's|^/usr/include/||' "$work/headers" | tar -c -T - boost/config boost/predef \
   boost/config.hpp boost/version.hpp mpfr.h) | tar -x -C "$kit/deps/include"
@@ -118,7 +118,7 @@ done
   echo "polydem  $(git -C "$repo" rev-parse HEAD)$(git -C "$repo" diff --quiet HEAD || echo ' (+ uncommitted changes not in the kit)')"
   echo "lammps   Debian source package lammps $lmp_ver (29 Sep 2021, Update 2)"
   echo "kokkos   3.4.01 from Debian's trilinos 13.2.0-4 source + tools/kokkos-cuda13.patch"
-  echo "cgal     $(dpkg-query -W -f='${Version}' libcgal-dev 2> /dev/null) (headers used by polydem_shape_template.cpp)"
+  echo "cgal     $(dpkg-query -W -f='${Version}' libcgal-dev 2> /dev/null) (headers used by polydem_shape_*.cpp)"
   echo "boost    $(dpkg-query -W -f='${Version}' libboost-dev 2> /dev/null) (headers used by CGAL)"
   echo "gmp      $(dpkg-query -W -f='${Version}' libgmp10 2> /dev/null) (libgmp.so.10)"
   echo "mpfr     $(dpkg-query -W -f='${Version}' libmpfr6 2> /dev/null) (libmpfr.so.6)"
