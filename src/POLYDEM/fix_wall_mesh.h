@@ -117,6 +117,7 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   std::vector<double> tri_local, tri_global;
   virtual void fetch_triangle_forces() {}    // /kk: device -> tri_local
 
+  polydem::StlTransform parse_keywords(int narg, char **arg);
   polydem::MeshPose<double> mesh_pose() const;
   polydem::WallScene<double> scene() const;    // the mesh as the particles see it now
   polydem::ContactLaw<double> law_of(int type, int ishape, double s) const;

@@ -1,0 +1,234 @@
+/* ----------------------------------------------------------------------
+   POLYDEM - fix wall/mesh: its keywords (doc/fix_wall_mesh.rst)
+------------------------------------------------------------------------- */
+
+#include "fix_wall_mesh.h"
+
+#include "error.h"
+#include "math_const.h"
+#include "polydem_parse.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+using namespace LAMMPS_NS;
+using MathConst::MY_PI;
+
+/* ----------------------------------------------------------------------
+   fix ID group wall/mesh file.stl keyword value ...: the keywords after the
+   file name set the fix's settings and the mesh's motion; returns the
+   load-time transform of the file (scale, rotate, offset, flip)
+------------------------------------------------------------------------- */
+
+polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
+{
+  auto &motion = geom.motion;
+  polydem::StlTransform xf;
+  double rot_angle = 0.0, rot_axis[3] = {0.0, 0.0, 1.0};
+  auto need = [&](int iarg, int n, const char *what) {
+    if (iarg + n >= narg)
+      error->all(FLERR, "fix wall/mesh: keyword '{}' needs {} value(s): {}", arg[iarg], n, what);
+  };
+  // numbers must be finite (1e400 parses as inf)
+  auto num = [&](int k) {
+    const double v = polydem_parse::numeric(FLERR, arg[k], lmp);
+    if (!std::isfinite(v))
+      error->all(FLERR, "fix wall/mesh: '{}' (argument {}) is not a finite number", arg[k], k + 1);
+    return v;
+  };
+  // length of a vector of finite values, scaled so that it cannot overflow
+  auto length = [](const double *a) {
+    const double m = MAX(fabs(a[0]), MAX(fabs(a[1]), fabs(a[2])));
+    if (!(m > 0.0)) return 0.0;
+    return m * sqrt((a[0] / m) * (a[0] / m) + (a[1] / m) * (a[1] / m) + (a[2] / m) * (a[2] / m));
+  };
+  int iarg = 4;
+  while (iarg < narg) {
+    const std::string kw = arg[iarg];
+    if (kw == "scale") {
+      need(iarg, 1, "s");
+      xf.scale = num(iarg + 1);
+      if (!(xf.scale > 0.0) || !std::isfinite(xf.scale))
+        error->all(FLERR, "fix wall/mesh: scale must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "offset") {
+      need(iarg, 3, "dx dy dz");
+      for (int k = 0; k < 3; k++) xf.offset[k] = num(iarg + 1 + k);
+      iarg += 4;
+    } else if (kw == "rotate") {
+      need(iarg, 4, "angle(degrees) ax ay az");
+      rot_angle = num(iarg + 1);
+      for (int k = 0; k < 3; k++) rot_axis[k] = num(iarg + 2 + k);
+      iarg += 5;
+    } else if (kw == "flip") {
+      need(iarg, 1, "yes or no");
+      const std::string yn = arg[iarg + 1];
+      if (yn != "yes" && yn != "no")
+        error->all(FLERR, "fix wall/mesh: flip expects yes or no, got '{}'", yn);
+      xf.flip = yn == "yes";
+      iarg += 2;
+    } else if (kw == "twist") {
+      need(iarg, 1, "yes or no");
+      const std::string yn = arg[iarg + 1];
+      if (yn != "yes" && yn != "no")
+        error->all(FLERR, "fix wall/mesh: twist expects yes or no, got '{}'", yn);
+      twist = yn == "yes";
+      iarg += 2;
+    } else if (kw == "sides") {
+      need(iarg, 1, "both or front");
+      const std::string v = arg[iarg + 1];
+      if (v != "both" && v != "front")
+        error->all(FLERR, "fix wall/mesh: sides expects both or front, got '{}'", v);
+      twosided = v == "both";
+      iarg += 2;
+    } else if (kw == "depth/warn") {
+      need(iarg, 1, "fraction of the bounding radius");
+      depth_warn = num(iarg + 1);
+      if (!(depth_warn > 0.0 && depth_warn <= 2.0))
+        error->all(FLERR, "fix wall/mesh: depth/warn must be in (0, 2], got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "overlap/warn") {
+      need(iarg, 1, "fraction of the particle volume");
+      overlap_warn = num(iarg + 1);
+      if (!(overlap_warn > 0.0 && overlap_warn <= 1.0))
+        error->all(FLERR, "fix wall/mesh: overlap/warn must be in (0, 1], got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "youngs") {
+      need(iarg, 1, "E");
+      wall_E = num(iarg + 1);
+      if (!(wall_E > 0.0) || !std::isfinite(wall_E))
+        error->all(FLERR, "fix wall/mesh: youngs must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "poisson") {
+      need(iarg, 1, "nu");
+      wall_nu = num(iarg + 1);
+      if (!(wall_nu > -1.0 && wall_nu < 0.5))
+        error->all(FLERR, "fix wall/mesh: poisson must be in (-1, 0.5), got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "restitution") {
+      need(iarg, 1, "e");
+      wall_e = num(iarg + 1);
+      if (!(wall_e > 0.0 && wall_e <= 1.0))
+        error->all(FLERR, "fix wall/mesh: restitution must be in (0, 1], got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "friction") {
+      need(iarg, 1, "mu");
+      wall_mu = num(iarg + 1);
+      if (!(wall_mu >= 0.0) || !std::isfinite(wall_mu))
+        error->all(FLERR, "fix wall/mesh: friction must be >= 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "core") {
+      need(iarg, 1, "fraction");
+      core = num(iarg + 1);
+      if (!(core >= 0.0 && core < 1.0))
+        error->all(FLERR, "fix wall/mesh: core must be in [0, 1), got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "patch/angle") {
+      need(iarg, 1, "degrees");
+      patch_angle = num(iarg + 1);
+      if (!(patch_angle >= 0.0 && patch_angle < 90.0))
+        error->all(FLERR, "fix wall/mesh: patch/angle must be in [0, 90), got '{}'",
+                   arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "bin") {
+      need(iarg, 1, "edge length");
+      binsize = num(iarg + 1);
+      if (!(binsize > 0.0) || !std::isfinite(binsize))
+        error->all(FLERR, "fix wall/mesh: bin must be > 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "pertriangle") {
+      need(iarg, 1, "yes or no");
+      const std::string v = arg[iarg + 1];
+      if (v == "yes") pertri = 1;
+      else if (v == "no") pertri = 0;
+      else error->all(FLERR, "fix wall/mesh: pertriangle must be 'yes' or 'no', got '{}'", v);
+      iarg += 2;
+    } else if (kw == "cache") {
+      need(iarg, 1, "entries per particle (0: off)");
+      const double c = num(iarg + 1);
+      if (!(c >= 0.0 && c <= 100000.0) || c != floor(c))
+        error->all(FLERR, "fix wall/mesh: cache must be an integer in [0, 100000], got '{}'",
+                   arg[iarg + 1]);
+      near_cap = (int) c;
+      iarg += 2;
+    } else if (kw == "cache/skin") {
+      need(iarg, 1, "skin / particle bounding radius");
+      near_skin = num(iarg + 1);
+      if (!(near_skin > 0.0 && near_skin <= 1.0))
+        error->all(FLERR, "fix wall/mesh: cache/skin must be in (0, 1], got '{}'", arg[iarg + 1]);
+      iarg += 2;
+    } else if (kw == "merge") {
+      need(iarg, 1, "no or a tolerance");
+      if (strcmp(arg[iarg + 1], "no") == 0) merge_tol = -1.0;
+      else {
+        merge_tol = num(iarg + 1);
+        if (!(merge_tol >= 0.0 && merge_tol < 1e-3))
+          error->all(FLERR, "fix wall/mesh: merge must be 'no' or a tolerance in [0, 1e-3), "
+                     "got '{}'", arg[iarg + 1]);
+      }
+      iarg += 2;
+    } else if (kw == "move") {
+      need(iarg, 1, "none, translate, rotate or wiggle");
+      const std::string m = arg[iarg + 1];
+      if (m == "none") {
+        motion.style = polydem::MeshMotion::NONE;
+        iarg += 2;
+      } else if (m == "translate") {
+        need(iarg + 1, 3, "vx vy vz");
+        motion.style = polydem::MeshMotion::TRANSLATE;
+        for (int k = 0; k < 3; k++) motion.vel[k] = num(iarg + 2 + k);
+        iarg += 5;
+      } else if (m == "wiggle") {
+        need(iarg + 1, 4, "Ax Ay Az motion.period");
+        motion.style = polydem::MeshMotion::WIGGLE;
+        for (int k = 0; k < 3; k++) motion.amp[k] = num(iarg + 2 + k);
+        motion.period = num(iarg + 5);
+        if (!(motion.period > 0.0) || !std::isfinite(2.0 * MY_PI / motion.period))
+          error->all(FLERR, "fix wall/mesh: move wiggle period must be > 0, got '{}'", arg[iarg + 5]);
+        for (int k = 0; k < 3; k++)
+          if (!std::isfinite(motion.amp[k]))
+            error->all(FLERR, "fix wall/mesh: move wiggle amplitude must be finite, got '{}'",
+                       arg[iarg + 2 + k]);
+        iarg += 6;
+      } else if (m == "rotate") {
+        need(iarg + 1, 8, "ox oy oz ax ay az omega|rpm value");
+        motion.style = polydem::MeshMotion::ROTATE;
+        for (int k = 0; k < 3; k++) motion.origin[k] = num(iarg + 2 + k);
+        for (int k = 0; k < 3; k++) motion.axis[k] = num(iarg + 5 + k);
+        const std::string u = arg[iarg + 8];
+        const double val = num(iarg + 9);
+        if (u == "omega") motion.omega = val;
+        else if (u == "rpm") motion.omega = val * 2.0 * MY_PI / 60.0;
+        else
+          error->all(FLERR, "fix wall/mesh: move rotate expects 'omega' or 'rpm', got '{}'", u);
+        if (!std::isfinite(motion.omega))
+          error->all(FLERR, "fix wall/mesh: move rotate {} {} is not a finite rate", u, val);
+        const double l = length(motion.axis);
+        if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: move rotate axis must be non-zero");
+        for (int k = 0; k < 3; k++) motion.axis[k] /= l;
+        iarg += 10;
+      } else
+        error->all(FLERR, "fix wall/mesh: unknown move style '{}' (none, translate, rotate, wiggle)",
+                   m);
+    } else
+      error->all(FLERR, "fix wall/mesh: unknown keyword '{}'", kw);
+  }
+
+  // load-time rotation (Rodrigues), applied after the scale
+  {
+    const double l = length(rot_axis);
+    if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: rotate axis must be non-zero");
+    const double c = cos(rot_angle * MY_PI / 180.0), s = sin(rot_angle * MY_PI / 180.0);
+    const double u[3] = {rot_axis[0] / l, rot_axis[1] / l, rot_axis[2] / l};
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) xf.R[i][j] = (i == j ? c : 0.0) + (1.0 - c) * u[i] * u[j];
+    xf.R[0][1] -= s * u[2];
+    xf.R[0][2] += s * u[1];
+    xf.R[1][0] += s * u[2];
+    xf.R[1][2] -= s * u[0];
+    xf.R[2][0] -= s * u[1];
+    xf.R[2][1] += s * u[0];
+  }
+  return xf;
+}
