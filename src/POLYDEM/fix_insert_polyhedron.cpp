@@ -272,7 +272,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
   // 1e-320, scale 1e-300 gave an infinite or zero mass
   for (const auto &k : kinds)
     for (const double s : {k.scale.min(), k.scale.max()}) {
-      const double m = k.density * avec->shape(k.ishape).volume() * s * s * s;
+      const double m = polydem::scaled_mass(k.density, avec->shape(k.ishape).volume(), s);
       if (!avec->mass_is_normal(k.ishape, m, s))
         error->all(FLERR,
                    "{}: shape '{}': density {:.6g} and scale {:.6g} give a mass {:.6g} outside "
@@ -560,8 +560,8 @@ void FixInsertPolyhedron::add_candidates(std::vector<Candidate> &out) const
 {
   for (const auto &k : kinds) {
     const double s = k.scale.min();
-    out.push_back({k.ishape, s, k.density * avec->shape(k.ishape).volume() * s * s * s, itype,
-                   1 | groupbit, id});
+    const double m = polydem::scaled_mass(k.density, avec->shape(k.ishape).volume(), s);
+    out.push_back({k.ishape, s, m, itype, 1 | groupbit, id});
   }
 }
 

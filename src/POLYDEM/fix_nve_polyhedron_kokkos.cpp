@@ -59,10 +59,11 @@ template <class DeviceType, int MODE> struct FixNVEPolyhedronKokkosFunctor {
         angmom(i, k) += dtf * torque(i, k);
       }
     }
-    // principal moments I_k = m s^2 J_k / V (PolyShapeLibrary::inertia)
+    // principal moments I_k = m s^2 J_k / V (as PolyShapeLibrary::inertia)
     const int t = pshape(i);
-    const double fct = rmass(i) * pscale(i) * pscale(i) / props(t, 0);
-    const double inertia[3] = {fct * props(t, 1), fct * props(t, 2), fct * props(t, 3)};
+    const double J[3] = {props(t, 1), props(t, 2), props(t, 3)};
+    double inertia[3];
+    polydem::scaled_moments(rmass(i), pscale(i), props(t, 0), J, inertia);
     double L[3] = {angmom(i, 0), angmom(i, 1), angmom(i, 2)};
     double q[4] = {quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3)};
     if (MODE == FixNVEPolyhedronKokkos<DeviceType>::INITIAL) {

@@ -5,6 +5,8 @@
 
 #include "poly_shape_library.h"
 
+#include "polydem_rigid.h"
+
 #include "atom.h"
 #include "atom_vec_polyhedron.h"
 #include "domain.h"
@@ -179,9 +181,8 @@ int PolyShapeLibrary::add_shape(const std::string &id,
 
 double PolyShapeLibrary::density(int i) const
 {
-  const auto v = templates[atom->pshape[i]]->view();
-  const double s = atom->pscale[i];
-  return atom->rmass[i] / (v.volume * s * s * s);
+  return polydem::scaled_density(atom->rmass[i], templates[atom->pshape[i]]->view().volume,
+                                 atom->pscale[i]);
 }
 
 void PolyShapeLibrary::set_shape_scale(int i, int ishape, double scale)
@@ -190,15 +191,14 @@ void PolyShapeLibrary::set_shape_scale(int i, int ishape, double scale)
   atom->pshape[i] = ishape;
   atom->pscale[i] = scale;
   const auto v = templates[ishape]->view();
-  atom->rmass[i] = rho * v.volume * scale * scale * scale;
+  atom->rmass[i] = polydem::scaled_mass(rho, v.volume, scale);
   atom->radius[i] = v.radius * scale;
 }
 
 void PolyShapeLibrary::inertia(int i, double *moments) const
 {
   const auto v = templates[atom->pshape[i]]->view();
-  const double f = atom->rmass[i] * atom->pscale[i] * atom->pscale[i] / v.volume;
-  for (int k = 0; k < 3; k++) moments[k] = f * v.inertia[k];
+  polydem::scaled_moments(atom->rmass[i], atom->pscale[i], v.volume, v.inertia, moments);
 }
 
 // mass and moments of inertia of atom i are normal numbers, the mass at
@@ -213,9 +213,10 @@ bool PolyShapeLibrary::mass_is_normal(int i) const
 bool PolyShapeLibrary::mass_is_normal(int ishape, double mass, double scale) const
 {
   const auto v = templates[ishape]->view();
-  const double f = mass * scale * scale / v.volume;
+  double I[3];
+  polydem::scaled_moments(mass, scale, v.volume, v.inertia, I);
   bool ok = std::isnormal(mass) && mass > 0.0 && mass <= MASS_MAX;
-  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(f * v.inertia[k]) && f * v.inertia[k] > 0.0;
+  for (int k = 0; k < 3; k++) ok = ok && std::isnormal(I[k]) && I[k] > 0.0;
   return ok;
 }
 
@@ -259,7 +260,7 @@ void PolyShapeLibrary::data_atom_post(int ilocal)
   if (!(rho > 0.0) || !std::isfinite(rho))
     error->one(FLERR, "Invalid density {} in Atoms section of data file", rho);
   const auto v = templates[ishape - 1]->view();
-  rmass[ilocal] = rho * v.volume * s * s * s;
+  rmass[ilocal] = polydem::scaled_mass(rho, v.volume, s);
   atom->radius[ilocal] = v.radius * s;
   if (!mass_is_normal(ilocal))
     error->one(FLERR,

@@ -106,6 +106,23 @@ template <typename T> POLYDEM_FN T rotational_energy(const T inertia[3], const T
   return T(0.5) * e;
 }
 
+// A particle is its shape template (volume V, principal moments J at unit
+// density, both at scale 1) at scale s with density rho: volume V s^3, mass
+// m = rho V s^3, moments rho s^5 J = m s^2 J / V.
+template <typename T> POLYDEM_FN T scaled_mass(T rho, T V, T s)
+{
+  return rho * V * s * s * s;
+}
+template <typename T> POLYDEM_FN T scaled_density(T m, T V, T s)
+{
+  return m / (V * s * s * s);
+}
+template <typename T> POLYDEM_FN void scaled_moments(T m, T s, T V, const T J[3], T I[3])
+{
+  const T f = m * s * s / V;
+  for (int k = 0; k < 3; k++) I[k] = f * J[k];
+}
+
 }    // namespace polydem
 
 #endif

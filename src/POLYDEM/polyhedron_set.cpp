@@ -120,7 +120,7 @@ void PolyhedronSet::command(int narg, char **arg)
           if (kw == "mass") rmass[i] = val;
           else {
             const double s = atom->pscale[i];
-            rmass[i] = val * avec->shape(atom->pshape[i]).view().volume * s * s * s;
+            rmass[i] = polydem::scaled_mass(val, avec->shape(atom->pshape[i]).view().volume, s);
           }
         }
       iarg += 2;

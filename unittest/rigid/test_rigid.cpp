@@ -173,3 +173,32 @@ TEST(RigidKernel, OmegaAngmomRoundTrip)
   omega_from_angmom(Is, L, q, w2);
   for (int k = 0; k < 3; k++) EXPECT_NEAR(w2[k], L[k] / 2.0, 1e-14);
 }
+
+// A particle from its template: a template of volume V and unit-density
+// moments J at scale s and density rho has m = rho V s^3 and I = m s^2 J / V.
+// Against the analytic solids: a cube of edge 2 (template edge 1, s = 2,
+// rho = 3: m = 24, I = m a^2 / 6 = 16) and an ellipsoid of semi-axes
+// s (a, b, c) (I_x = m s^2 (b^2 + c^2) / 5), to 1e-14.
+TEST(RigidKernel, ParticleFromTemplateTimesScale)
+{
+  const double Jcube[3] = {1.0 / 6.0, 1.0 / 6.0, 1.0 / 6.0};
+  const double m = scaled_mass(3.0, 1.0, 2.0);
+  EXPECT_DOUBLE_EQ(m, 24.0);
+  EXPECT_DOUBLE_EQ(scaled_density(m, 1.0, 2.0), 3.0);
+  double I[3];
+  scaled_moments(m, 2.0, 1.0, Jcube, I);
+  for (int k = 0; k < 3; k++) EXPECT_NEAR(I[k], 16.0, 1e-14 * 16.0);
+
+  const double a = 0.3, b = 0.2, c = 0.1, s = 1.7, rho = 2500.0;
+  const double V = 4.0 / 3.0 * M_PI * a * b * c;
+  const double J[3] = {V * (b * b + c * c) / 5.0, V * (a * a + c * c) / 5.0,
+                       V * (a * a + b * b) / 5.0};
+  const double me = scaled_mass(rho, V, s);
+  EXPECT_NEAR(me, rho * 4.0 / 3.0 * M_PI * (s * a) * (s * b) * (s * c), 1e-14 * me);
+  scaled_moments(me, s, V, J, I);
+  const double ax[3] = {s * a, s * b, s * c};
+  for (int k = 0; k < 3; k++) {
+    const double p = ax[(k + 1) % 3], q = ax[(k + 2) % 3];
+    EXPECT_NEAR(I[k], me * (p * p + q * q) / 5.0, 1e-14 * I[k]) << "axis " << k;
+  }
+}
