@@ -23,7 +23,7 @@ AtomStyle(polyhedron,AtomVecPolyhedron);
 
 namespace LAMMPS_NS {
 
-class AtomVecPolyhedron : public AtomVec {
+class AtomVecPolyhedron : public AtomVec, public ShapeLibraryOwner {
  public:
   AtomVecPolyhedron(class LAMMPS *);
   void process_args(int, char **) override;
@@ -37,7 +37,7 @@ class AtomVecPolyhedron : public AtomVec {
   int property_atom(polydem_compat::property_name) override;
   void pack_property_atom(int, double *, int, int) override;
 
-  PolyShapeLibrary *shape_library() { return &shapes; }
+  PolyShapeLibrary *shape_library() override { return &shapes; }
 
  private:
   PolyShapeLibrary shapes;

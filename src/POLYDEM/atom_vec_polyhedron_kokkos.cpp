@@ -77,6 +77,37 @@ Shift border_shift(Domain *domain, int pbc_flag, const int *pbc)
   return s;
 }
 
+// the velocity offset of a periodic image under fix deform remap v (as
+// AtomVec::pack_comm_vel); zero otherwise
+void deform_dv(int vremap, const double *h_rate, int pbc_flag, const int *pbc, X_FLOAT dv[3])
+{
+  dv[0] = dv[1] = dv[2] = 0.0;
+  if (!pbc_flag || !vremap) return;
+  dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
+  dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
+  dv[2] = pbc[2] * h_rate[2];
+}
+
+template <class D> struct SpaceTag {
+  typedef D type;
+};
+
+// body(SpaceTag<LMPHostType>) on the host or body(SpaceTag<LMPDeviceType>) on
+// the device (each builds its functor for that space and runs it), the
+// fields of sync_mask synced there before and those of modify_mask (0: none)
+// marked modified after
+template <class Body>
+void on_space(AtomKokkos *atomKK, ExecutionSpace space, unsigned int sync_mask,
+              unsigned int modify_mask, Body body)
+{
+  atomKK->sync(space, sync_mask);
+  if (space == Host)
+    body(SpaceTag<LMPHostType>());
+  else
+    body(SpaceTag<LMPDeviceType>());
+  if (modify_mask) atomKK->modified(space, modify_mask);
+}
+
 /* ---------------------------------------------------------------------- */
 // forward: x (shifted), quat; with VEL also v (deform-remapped), omega, angmom
 
@@ -841,32 +872,23 @@ int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const polydem_tdual_
   POLYDEM_KK_NO_ISWAP
   const Shift s = comm_shift(domain, pbc_flag, pbc);
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
-  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
-    atomKK->sync(Host, COMM_MASK);
-    PolyPackComm<LMPHostType, 0> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, 0, dv);
+  const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
+  on_space(atomKK, space, COMM_MASK, 0, [&](auto on) {
+    PolyPackComm<typename decltype(on)::type, 0> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s,
+                                                   0, dv);
     Kokkos::parallel_for(n, f);
-  } else {
-    atomKK->sync(Device, COMM_MASK);
-    PolyPackComm<LMPDeviceType, 0> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, 0, dv);
-    Kokkos::parallel_for(n, f);
-  }
+  });
   return n * COMM_SIZE;
 }
 
 void AtomVecPolyhedronKokkos::unpack_comm_kokkos(const int &n, const int &first,
                                                  const DAT::tdual_xfloat_2d &buf)
 {
-  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
-    atomKK->sync(Host, COMM_MASK);
-    PolyUnpackComm<LMPHostType, 0> f(atomKK, k_quat, buf, first);
+  const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
+  on_space(atomKK, space, COMM_MASK, COMM_MASK, [&](auto on) {
+    PolyUnpackComm<typename decltype(on)::type, 0> f(atomKK, k_quat, buf, first);
     Kokkos::parallel_for(n, f);
-    atomKK->modified(Host, COMM_MASK);
-  } else {
-    atomKK->sync(Device, COMM_MASK);
-    PolyUnpackComm<LMPDeviceType, 0> f(atomKK, k_quat, buf, first);
-    Kokkos::parallel_for(n, f);
-    atomKK->modified(Device, COMM_MASK);
-  }
+  });
 }
 
 int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const polydem_tdual_sendlist &list,
@@ -875,40 +897,26 @@ int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const polydem_td
 {
   POLYDEM_KK_NO_ISWAP
   const Shift s = comm_shift(domain, pbc_flag, pbc);
-  X_FLOAT dv[3] = {0.0, 0.0, 0.0};
-  if (pbc_flag && deform_vremap) {
-    dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
-    dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
-    dv[2] = pbc[2] * h_rate[2];
-  }
+  X_FLOAT dv[3];
+  deform_dv(deform_vremap, h_rate, pbc_flag, pbc, dv);
   const int groupbit = deform_vremap ? deform_groupbit : 0;
-  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
-    atomKK->sync(Host, COMM_VEL_MASK);
-    PolyPackComm<LMPHostType, 1> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, groupbit, dv);
+  const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
+  on_space(atomKK, space, COMM_VEL_MASK, 0, [&](auto on) {
+    PolyPackComm<typename decltype(on)::type, 1> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s,
+                                                   groupbit, dv);
     Kokkos::parallel_for(n, f);
-  } else {
-    atomKK->sync(Device, COMM_VEL_MASK);
-    PolyPackComm<LMPDeviceType, 1> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s, groupbit,
-                                     dv);
-    Kokkos::parallel_for(n, f);
-  }
+  });
   return n * COMM_VEL_SIZE;
 }
 
 void AtomVecPolyhedronKokkos::unpack_comm_vel_kokkos(const int &n, const int &first,
                                                      const DAT::tdual_xfloat_2d &buf)
 {
-  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
-    atomKK->sync(Host, COMM_VEL_MASK);
-    PolyUnpackComm<LMPHostType, 1> f(atomKK, k_quat, buf, first);
+  const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
+  on_space(atomKK, space, COMM_VEL_MASK, COMM_VEL_MASK, [&](auto on) {
+    PolyUnpackComm<typename decltype(on)::type, 1> f(atomKK, k_quat, buf, first);
     Kokkos::parallel_for(n, f);
-    atomKK->modified(Host, COMM_VEL_MASK);
-  } else {
-    atomKK->sync(Device, COMM_VEL_MASK);
-    PolyUnpackComm<LMPDeviceType, 1> f(atomKK, k_quat, buf, first);
-    Kokkos::parallel_for(n, f);
-    atomKK->modified(Device, COMM_VEL_MASK);
-  }
+  });
 }
 
 int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const polydem_tdual_sendlist &list,
@@ -917,17 +925,11 @@ int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const polydem_tdual_se
 {
   POLYDEM_KK_NO_ISWAP
   const Shift s = comm_shift(domain, pbc_flag, pbc);
-  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
-    atomKK->sync(Host, COMM_MASK);
-    PolyCommSelf<LMPHostType> f(atomKK, k_quat, list, iswap, nfirst, pbc_flag, s);
+  const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
+  on_space(atomKK, space, COMM_MASK, COMM_MASK, [&](auto on) {
+    PolyCommSelf<typename decltype(on)::type> f(atomKK, k_quat, list, iswap, nfirst, pbc_flag, s);
     Kokkos::parallel_for(n, f);
-    atomKK->modified(Host, COMM_MASK);
-  } else {
-    atomKK->sync(Device, COMM_MASK);
-    PolyCommSelf<LMPDeviceType> f(atomKK, k_quat, list, iswap, nfirst, pbc_flag, s);
-    Kokkos::parallel_for(n, f);
-    atomKK->modified(Device, COMM_MASK);
-  }
+  });
   return n * COMM_SIZE;
 }
 
@@ -938,19 +940,12 @@ int AtomVecPolyhedronKokkos::pack_comm_self_fused(const int &n, const DAT::tdual
                                                   const DAT::tdual_int_2d &pbc,
                                                   const DAT::tdual_int_1d &g2l)
 {
-  if (POLYDEM_KK_FORWARD_COMM_ON_HOST) {
-    atomKK->sync(Host, COMM_MASK);
-    PolyCommSelfFused<LMPHostType> f(atomKK, k_quat, list, pbc, pbc_flag, firstrecv,
-                                     sendnum_scan, g2l, domain);
+  const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
+  on_space(atomKK, space, COMM_MASK, COMM_MASK, [&](auto on) {
+    PolyCommSelfFused<typename decltype(on)::type> f(atomKK, k_quat, list, pbc, pbc_flag,
+                                                     firstrecv, sendnum_scan, g2l, domain);
     Kokkos::parallel_for(n, f);
-    atomKK->modified(Host, COMM_MASK);
-  } else {
-    atomKK->sync(Device, COMM_MASK);
-    PolyCommSelfFused<LMPDeviceType> f(atomKK, k_quat, list, pbc, pbc_flag, firstrecv,
-                                       sendnum_scan, g2l, domain);
-    Kokkos::parallel_for(n, f);
-    atomKK->modified(Device, COMM_MASK);
-  }
+  });
   return n * COMM_SIZE;
 }
 
@@ -965,16 +960,11 @@ int AtomVecPolyhedronKokkos::pack_border_kokkos(int n, polydem_tdual_sendlist k_
   const X_FLOAT dv[3] = {0.0, 0.0, 0.0};
   // all fields, as LAMMPS's styles do: outside the run loop (auto_sync) this
   // is where host-side changes by input commands reach the device
-  atomKK->sync(space, ALL_MASK);
-  if (space == Host) {
-    PolyPackBorder<LMPHostType, 0> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s, 0, dv,
-                                     size_border);
+  on_space(atomKK, space, ALL_MASK, 0, [&](auto on) {
+    PolyPackBorder<typename decltype(on)::type, 0> f(atomKK, this, buf, k_sendlist, iswap,
+                                                     pbc_flag, s, 0, dv, size_border);
     Kokkos::parallel_for(n, f);
-  } else {
-    PolyPackBorder<LMPDeviceType, 0> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s, 0, dv,
-                                       size_border);
-    Kokkos::parallel_for(n, f);
-  }
+  });
   return n * size_border;
 }
 
@@ -983,15 +973,10 @@ void AtomVecPolyhedronKokkos::unpack_border_kokkos(const int &n, const int &firs
                                                    ExecutionSpace space)
 {
   while (first + n >= nmax) grow(0);
-  atomKK->sync(space, BORDER_MASK);
-  if (space == Host) {
-    PolyUnpackBorder<LMPHostType, 0> f(atomKK, this, buf, first, size_border);
+  on_space(atomKK, space, BORDER_MASK, BORDER_MASK, [&](auto on) {
+    PolyUnpackBorder<typename decltype(on)::type, 0> f(atomKK, this, buf, first, size_border);
     Kokkos::parallel_for(n, f);
-  } else {
-    PolyUnpackBorder<LMPDeviceType, 0> f(atomKK, this, buf, first, size_border);
-    Kokkos::parallel_for(n, f);
-  }
-  atomKK->modified(space, BORDER_MASK);
+  });
 }
 
 // CommKokkos sizes a ghost-velocity border record as size_border + size_velocity
@@ -1001,24 +986,15 @@ int AtomVecPolyhedronKokkos::pack_border_vel_kokkos(int n, polydem_tdual_sendlis
 {
   POLYDEM_KK_NO_ISWAP
   const Shift s = border_shift(domain, pbc_flag, pbc);
-  X_FLOAT dv[3] = {0.0, 0.0, 0.0};
-  if (pbc_flag && deform_vremap) {
-    dv[0] = pbc[0] * h_rate[0] + pbc[5] * h_rate[5] + pbc[4] * h_rate[4];
-    dv[1] = pbc[1] * h_rate[1] + pbc[3] * h_rate[3];
-    dv[2] = pbc[2] * h_rate[2];
-  }
+  X_FLOAT dv[3];
+  deform_dv(deform_vremap, h_rate, pbc_flag, pbc, dv);
   const int groupbit = deform_vremap ? deform_groupbit : 0;
   const int stride = size_border + size_velocity;
-  atomKK->sync(space, ALL_MASK);
-  if (space == Host) {
-    PolyPackBorder<LMPHostType, 1> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s, groupbit,
-                                     dv, stride);
+  on_space(atomKK, space, ALL_MASK, 0, [&](auto on) {
+    PolyPackBorder<typename decltype(on)::type, 1> f(atomKK, this, buf, k_sendlist, iswap,
+                                                     pbc_flag, s, groupbit, dv, stride);
     Kokkos::parallel_for(n, f);
-  } else {
-    PolyPackBorder<LMPDeviceType, 1> f(atomKK, this, buf, k_sendlist, iswap, pbc_flag, s,
-                                       groupbit, dv, stride);
-    Kokkos::parallel_for(n, f);
-  }
+  });
   return n * stride;
 }
 
@@ -1028,15 +1004,10 @@ void AtomVecPolyhedronKokkos::unpack_border_vel_kokkos(const int &n, const int &
 {
   while (first + n >= nmax) grow(0);
   const int stride = size_border + size_velocity;
-  atomKK->sync(space, BORDER_VEL_MASK);
-  if (space == Host) {
-    PolyUnpackBorder<LMPHostType, 1> f(atomKK, this, buf, first, stride);
+  on_space(atomKK, space, BORDER_VEL_MASK, BORDER_VEL_MASK, [&](auto on) {
+    PolyUnpackBorder<typename decltype(on)::type, 1> f(atomKK, this, buf, first, stride);
     Kokkos::parallel_for(n, f);
-  } else {
-    PolyUnpackBorder<LMPDeviceType, 1> f(atomKK, this, buf, first, stride);
-    Kokkos::parallel_for(n, f);
-  }
-  atomKK->modified(space, BORDER_VEL_MASK);
+  });
 }
 
 /* ---------------------------------------------------------------------- */
@@ -1051,15 +1022,10 @@ int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend, DAT::tdual_x
     const int newsize = nsend * (EXCHANGE_SIZE + 1) / width + 1;
     k_buf.resize(newsize, width);
   }
-  atomKK->sync(space, EXCHANGE_MASK);
-  if (space == Host) {
-    PolyPackExchange<LMPHostType> f(atomKK, this, k_buf, k_sendlist, k_copylist);
+  on_space(atomKK, space, EXCHANGE_MASK, EXCHANGE_MASK, [&](auto on) {
+    PolyPackExchange<typename decltype(on)::type> f(atomKK, this, k_buf, k_sendlist, k_copylist);
     Kokkos::parallel_for(nsend, f);
-  } else {
-    PolyPackExchange<LMPDeviceType> f(atomKK, this, k_buf, k_sendlist, k_copylist);
-    Kokkos::parallel_for(nsend, f);
-  }
-  atomKK->modified(space, EXCHANGE_MASK);
+  });
   return nsend * EXCHANGE_SIZE;
 }
 

@@ -45,7 +45,7 @@ template <class DualViewType, class DeviceType>
 using polydem_view_t = typename std::decay<decltype(
     std::declval<DualViewType &>().template view<DeviceType>())>::type;
 
-class AtomVecPolyhedronKokkos : public AtomVecKokkos {
+class AtomVecPolyhedronKokkos : public AtomVecKokkos, public ShapeLibraryOwner {
  public:
   AtomVecPolyhedronKokkos(class LAMMPS *);
   ~AtomVecPolyhedronKokkos() override;
@@ -55,7 +55,7 @@ class AtomVecPolyhedronKokkos : public AtomVecKokkos {
   {
     return dynamic_cast<AtomVecPolyhedronKokkos *>(atom->avec);
   }
-  PolyShapeLibrary *shape_library() { return &shapes; }
+  PolyShapeLibrary *shape_library() override { return &shapes; }
 
   // POLYDEM per-atom fields (the standard ones are in AtomKokkos)
   tdual_quat_array k_quat;

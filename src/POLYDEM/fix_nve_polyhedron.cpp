@@ -42,10 +42,22 @@ void FixNVEPolyhedron::init()
 }
 
 /* ----------------------------------------------------------------------
-   kick (v, L by dt/2), drift (x by dt), free rotation (q, L by dt)
+   first half (initial_integrate): kick (v, L by dt/2), drift (x by dt), free
+   rotation (q, L by dt); second half (final_integrate): kick only. omega
+   follows from L, q and the inertia after each half.
 ------------------------------------------------------------------------- */
 
 void FixNVEPolyhedron::initial_integrate(int /*vflag*/)
+{
+  integrate(true);
+}
+
+void FixNVEPolyhedron::final_integrate()
+{
+  integrate(false);
+}
+
+void FixNVEPolyhedron::integrate(bool first)
 {
   double **x = atom->x, **v = atom->v, **f = atom->f;
   double **angmom = atom->angmom, **torque = atom->torque, **omega = atom->omega;
@@ -60,37 +72,12 @@ void FixNVEPolyhedron::initial_integrate(int /*vflag*/)
       const double dtfm = dtf / rmass[i];
       for (int k = 0; k < 3; k++) {
         v[i][k] += dtfm * f[i][k];
-        x[i][k] += dtv * v[i][k];
+        if (first) x[i][k] += dtv * v[i][k];
         angmom[i][k] += dtf * torque[i][k];
       }
       double inertia[3];
       avec->inertia(i, inertia);
-      polydem::free_rotor_step(dtv, inertia, angmom[i], quat[i]);
-      polydem::omega_from_angmom(inertia, angmom[i], quat[i], omega[i]);
-    }
-}
-
-/* ---------------------------------------------------------------------- */
-
-void FixNVEPolyhedron::final_integrate()
-{
-  double **v = atom->v, **f = atom->f;
-  double **angmom = atom->angmom, **torque = atom->torque, **omega = atom->omega;
-  double **quat = atom->quat;
-  double *rmass = atom->rmass;
-  int *mask = atom->mask;
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) {
-      const double dtfm = dtf / rmass[i];
-      for (int k = 0; k < 3; k++) {
-        v[i][k] += dtfm * f[i][k];
-        angmom[i][k] += dtf * torque[i][k];
-      }
-      double inertia[3];
-      avec->inertia(i, inertia);
+      if (first) polydem::free_rotor_step(dtv, inertia, angmom[i], quat[i]);
       polydem::omega_from_angmom(inertia, angmom[i], quat[i], omega[i]);
     }
 }

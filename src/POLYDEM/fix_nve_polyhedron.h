@@ -25,6 +25,7 @@ class FixNVEPolyhedron : public FixNVE {
 
  protected:
   class PolyShapeLibrary *avec;
+  void integrate(bool first);    // first: the step's first half
 };
 
 }    // namespace LAMMPS_NS

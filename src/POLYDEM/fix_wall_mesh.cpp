@@ -13,6 +13,7 @@
 #include "neighbor.h"
 #include "pair.h"
 #include "poly_shape_library.h"
+#include "poly_timestep.h"
 #include "update.h"
 
 #include "polydem_parse.h"
@@ -254,19 +255,19 @@ void FixWallMesh::check_mesh_step()
 // particle of the group.
 void FixWallMesh::check_timestep()
 {
-  double dtmin = 1e300, tcmin = 1e300;
+  TimestepCheck check;
   bigint nover = 0;
   auto consider = [&](int type, int ishape, double s, double m) {
     if (avec->shape(ishape).is_ellipsoid()) {
-      // ellipsoids: the linear spring's contact time pi sqrt(m / k_n) (central impact)
-      tcmin = MIN(tcmin, MY_PI * sqrt(m / (law_entries[type].kn * force->ftm2v)));
+      // ellipsoids: the linear spring's contact time (central impact)
+      check.contact(m, law_entries[type].kn * force->ftm2v);
       return;
     }
     const auto L = law_of(type, ishape, s);
     const double dtf = polydem::face_contact_stable_dt(L.normal, m / force->ftm2v,
                                                        avec->shape(ishape).max_face_area() * s * s);
     if (dtf > 0.0 && std::isfinite(dtf))
-      dtmin = MIN(dtmin, dtf);
+      check.flat_face(dtf);
     else
       nover++;
   };
@@ -278,8 +279,6 @@ void FixWallMesh::check_timestep()
   if (comm->me == 0)
     for (const auto &c : ParticleSource::candidates(lmp))
       if (c.mask & groupbit) consider(c.type, c.ishape, c.scale, c.mass);
-  MPI_Allreduce(MPI_IN_PLACE, &dtmin, 1, MPI_DOUBLE, MPI_MIN, world);
-  MPI_Allreduce(MPI_IN_PLACE, &tcmin, 1, MPI_DOUBLE, MPI_MIN, world);
   // a stiffness that overflows (youngs 1e300) made every contact NaN
   MPI_Allreduce(MPI_IN_PLACE, &nover, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (nover)
@@ -287,24 +286,8 @@ void FixWallMesh::check_timestep()
                "fix wall/mesh {}: the contact stiffness of {} atom(s) overflows (youngs "
                "{:.4g} of the wall, the particles' from pair_coeff): lower youngs",
                id, nover, wall_E > 0.0 ? wall_E : law_entries[1].E1);
-  if (comm->me != 0) return;
-  if (tcmin < 1e300) {
-    utils::logmesg(lmp, "fix wall/mesh {}: ellipsoid contact time {:.6g}, timestep {:.6g} = "
-                   "t_c/{:.4g}\n", id, tcmin, update->dt, tcmin / update->dt);
-    if (update->dt > tcmin / 10.0)
-      error->warning(FLERR, "fix wall/mesh {}: timestep {:.4g} exceeds t_c/10 = {:.4g} of an "
-                     "ellipsoid's wall contact: contacts will be poorly resolved", id,
-                     update->dt, tcmin / 10.0);
-  }
-  if (dtmin >= 1e300) return;
-  utils::logmesg(lmp, "fix wall/mesh {}: a face flat on the wall in the core (core {}) is stable "
-                 "for timesteps below {:.4g}, resolved below about {:.4g}\n", id, core, dtmin,
-                 dtmin / 20.0);
-  if (update->dt > 0.5 * dtmin)
-    error->warning(FLERR, "fix wall/mesh {}: timestep {:.4g} exceeds half of {:.4g}, the "
-                   "stability limit of a largest face resting flat on the wall in the core "
-                   "(stiffness 5/3 K V0^(-2/3) A^2): flat contacts may stick or gain energy; "
-                   "lower the timestep or raise core", id, update->dt, dtmin);
+  check.report(lmp, fmt::format("fix wall/mesh {}", id), "an ellipsoid on the wall", "the wall",
+               core);
 }
 
 // bin edge: user value, else max(r_max / 2, twice the median triangle edge)

@@ -10,6 +10,7 @@
 #include "error.h"
 #include "memory_kokkos.h"
 #include "neighbor.h"
+#include "polydem_body_views_kokkos.h"
 #include "polydem_kokkos_masks.h"
 #include "polydem_law_table_kokkos.h"
 #include "polydem_shape_template.h"
@@ -52,17 +53,11 @@ template <class DeviceType> struct TriAdd {
   }
 };
 
-template <class DeviceType> struct WallMeshKernel {
+template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
   typedef WallTally value_type;
 
-  typename AT::t_x_array_randomread x;
-  typename AT::t_v_array_randomread v, omega;
-  typename AT::t_f_array f, torque;
-  typename AT::t_float_1d_randomread rmass, pscale;
-  typename AT::t_int_1d_randomread mask, type, pshape;
-  polydem_view_t<tdual_quat_array, DeviceType> quat;
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> hist;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
   Kokkos::View<double *[3], DeviceType> axes;    // ellipsoids' semi-axes (0: polyhedron)
@@ -82,9 +77,9 @@ template <class DeviceType> struct WallMeshKernel {
   KOKKOS_INLINE_FUNCTION void operator()(const int slot, value_type &sum) const
   {
     const int i = ibase + slot;
-    if (!(mask(i) & groupbit)) return;
+    if (!(this->mask(i) & groupbit)) return;
     // gather: atom i with its template and semi-axes (0: a polyhedron)
-    const int ps = pshape(i);
+    const int ps = this->pshape(i);
     const auto b = polydem::gather_wall_body(
         *this, i, &shapes(ps), polydem::make_vec3(axes(ps, 0), axes(ps, 1), axes(ps, 2)));
     double h[NH];
@@ -105,6 +100,7 @@ template <class DeviceType> struct WallMeshKernel {
     polydem::WallPatches<double> P;
     const auto r = polydem::wall_body_contact(b, laws, sc, dt, update != 0, h, ws, P, pn);
     for (int k = 0; k < NH; k++) hist(i, k) = h[k];
+    const auto &f = this->f, &torque = this->torque;
     f(i, 0) += r.wf.f.x;
     f(i, 1) += r.wf.f.y;
     f(i, 2) += r.wf.f.z;
@@ -234,17 +230,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.near_tri = d_near_tri;
   k.near_gap = d_near_gap;
   k.near_cap = near_cap;
-  k.x = atomKK->k_x.view<DeviceType>();
-  k.v = atomKK->k_v.view<DeviceType>();
-  k.omega = atomKK->k_omega.view<DeviceType>();
-  k.f = atomKK->k_f.view<DeviceType>();
-  k.torque = atomKK->k_torque.view<DeviceType>();
-  k.rmass = atomKK->k_rmass.view<DeviceType>();
-  k.pscale = avecKK->k_pscale.view<DeviceType>();
-  k.mask = atomKK->k_mask.view<DeviceType>();
-  k.type = atomKK->k_type.view<DeviceType>();
-  k.pshape = avecKK->k_pshape.view<DeviceType>();
-  k.quat = avecKK->k_quat.view<DeviceType>();
+  k.bind_bodies(atomKK, avecKK);
   k.hist = k_hist.template view<DeviceType>();
   k.shapes = shapes.views;
   k.axes = shapes.axes;

@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "poly_roles.h"
+#include "poly_timestep.h"
 #include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
@@ -33,13 +34,6 @@ using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
 static constexpr int SIZE_HISTORY = polydem::ELLIPSOID_HIST;    // s (polydem_contact_law.h)
-static_assert(int(PairEllipsoid::CNT_DEGENERATE) == int(polydem::EP_DEGENERATE) &&
-                  int(PairEllipsoid::CNT_NOCONV) == int(polydem::EP_NOCONV) &&
-                  int(PairEllipsoid::CNT_BIGOVERLAP) == int(polydem::EP_BIGOVERLAP) &&
-                  int(PairEllipsoid::CNT_CONTACTS) == int(polydem::EP_CONTACTS) &&
-                  int(PairEllipsoid::CNT_COLLISIONS) == int(polydem::EP_COLLISIONS) &&
-                  int(PairEllipsoid::NCOUNT) == int(polydem::EP_NCOUNT),
-              "counters in the order of the pipeline's");
 
 /* ---------------------------------------------------------------------- */
 
@@ -252,19 +246,12 @@ double PairEllipsoid::init_one(int i, int j)
 
 void PairEllipsoid::check_timestep()
 {
-  double tc = 1e300;
+  TimestepCheck check;
   for (int i = 0; i < atom->nlocal; i++) {
     const int t = atom->type[i];
-    tc = MIN(tc, MY_PI * sqrt(0.5 * atom->rmass[i] / (kn[t][t] * force->ftm2v)));
+    check.contact(0.5 * atom->rmass[i], kn[t][t] * force->ftm2v);
   }
-  double all;
-  MPI_Allreduce(&tc, &all, 1, MPI_DOUBLE, MPI_MIN, world);
-  if (all >= 1e300 || comm->me != 0) return;
-  utils::logmesg(lmp, "pair ellipsoid: contact time {:.6g}, timestep {:.6g} = t_c/{:.4g}\n", all,
-                 update->dt, all / update->dt);
-  if (update->dt > all / 10.0)
-    error->warning(FLERR, "pair ellipsoid: timestep {:.4g} exceeds t_c/10 = {:.4g}: contacts "
-                   "will be poorly resolved", update->dt, all / 10.0);
+  check.report(lmp, "pair ellipsoid", "lightest like pair", "", 0.0);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -317,8 +304,8 @@ void PairEllipsoid::compute(int eflag, int vflag)
                      c.cf.F_A.z, delx, dely, delz);
     }
   }
-  pvector[0] = local_counts[CNT_COLLISIONS];
-  pvector[1] = local_counts[CNT_CONTACTS];
+  pvector[0] = local_counts[polydem::EP_COLLISIONS];
+  pvector[1] = local_counts[polydem::EP_CONTACTS];
   if (neighbor->ago == 0) report_counters();
 }
 
@@ -331,7 +318,7 @@ void PairEllipsoid::report_counters()
   const char *what[] = {"degenerate contacts (coincident centres or NaN; skipped)",
                         "contact searches without convergence (skipped)",
                         "overlaps beyond overlap/warn of the smallest semi-axis"};
-  PairPolydem::report_counters(what, CNT_CONTACTS);
+  PairPolydem::report_counters(what, polydem::EP_CONTACTS);
 }
 
 /* ----------------------------------------------------------------------

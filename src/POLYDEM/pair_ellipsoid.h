@@ -18,6 +18,7 @@ PairStyle(ellipsoid,PairEllipsoid);
 
 #include "pair_polydem.h"
 #include "polydem_law_table.h"
+#include "polydem_pair_counts.h"
 
 #include <vector>
 
@@ -34,11 +35,11 @@ class PairEllipsoid : public PairPolydem {
   double init_one(int, int) override;
   void *extract(const char *, int &) override;
 
-  // counters since the start of the run (global after report_counters), in
-  // the order of polydem::EllipsoidPairCount (polydem_contact_pipeline.h);
-  // CNT_COLLISIONS: contacts in their first step (delta < (d delta/dt) dt), i.e.
-  // collisions started; CNT_CONTACTS: pair-steps in contact
-  enum { CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, CNT_COLLISIONS, NCOUNT };
+  // counters since the start of the run (global after report_counters),
+  // indexed by polydem::EllipsoidPairCount (polydem_pair_counts.h);
+  // EP_COLLISIONS: contacts in their first step (delta < (d delta/dt) dt),
+  // i.e. collisions started; EP_CONTACTS: pair-steps in contact
+  static constexpr int NCOUNT = polydem::EP_NCOUNT;
 
  protected:
   double **kn, **restitution;    // per type pair

@@ -20,6 +20,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "polydem_body_views_kokkos.h"
 #include "polydem_contact_pipeline.h"
 #include "polydem_history_kokkos.h"
 #include "polydem_kokkos_masks.h"
@@ -38,18 +39,12 @@ typedef polydem_kk::PairReduce<PairEllipsoid::NCOUNT> EllReduce;
    pipeline's ellipsoid_pair_contact, scatter with atomics
 ------------------------------------------------------------------------- */
 
-template <class DeviceType> struct EllContactFunctor {
+template <class DeviceType> struct EllContactFunctor : PolyBodyViews<DeviceType> {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
   typedef EllReduce value_type;
 
-  typename AT::t_x_array_randomread x;
-  typename AT::t_v_array_randomread v, omega;
-  typename AT::t_f_array f, torque;
-  typename AT::t_float_1d_randomread radius, rmass, pscale;
-  typename AT::t_int_1d_randomread type, pshape;
-  typename AT::t_tagint_1d_randomread tag;
-  polydem_view_t<tdual_quat_array, DeviceType> quat;
+  typename AT::t_float_1d_randomread radius;
   typename AT::t_int_1d_randomread ilist, numneigh;
   typename AT::t_neighbors_2d neighbors;
   Kokkos::View<double *[3], DeviceType> axes;
@@ -70,7 +65,7 @@ template <class DeviceType> struct EllContactFunctor {
   // gather: atom k with its template's semi-axes
   KOKKOS_INLINE_FUNCTION polydem::EllipsoidBody<double> body(int k) const
   {
-    const int t = pshape(k);
+    const int t = this->pshape(k);
     return polydem::gather_ellipsoid_body(*this, k,
                                           polydem::make_vec3(axes(t, 0), axes(t, 1), axes(t, 2)));
   }
@@ -87,6 +82,7 @@ template <class DeviceType> struct EllContactFunctor {
         if (j < nlocal) Kokkos::atomic_increment(&npartner(j));
       }
       double *shear = use_history ? &firstshear(i, polydem::ELLIPSOID_HIST * jj) : nullptr;
+      const auto &x = this->x;
       const double delx = x(i, 0) - x(j, 0), dely = x(i, 1) - x(j, 1), delz = x(i, 2) - x(j, 2);
       const double radsum = radius(i) + radius(j);
       const bool to_j = newton_pair || j < nlocal;    // else the pair is seen on 2 ranks
@@ -99,7 +95,7 @@ template <class DeviceType> struct EllContactFunctor {
                                             to_j ? 1.0 : 0.5, red.cnt);
       if (use_history) firsttouch(i, jj) = c.contact;
       if (!c.contact) continue;
-      polydem_kk::scatter_contact(f, torque, i, j, to_j, c.cf);
+      polydem_kk::scatter_contact(this->f, this->torque, i, j, to_j, c.cf);
       const double F[3] = {c.cf.F_A.x, c.cf.F_A.y, c.cf.F_A.z};
       polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, c.cf.energy, F, delx, dely, delz);
     }
@@ -114,21 +110,13 @@ template <class DeviceType>
 PairEllipsoidKokkos<DeviceType>::PairEllipsoidKokkos(LAMMPS *lmp) :
     PairEllipsoid(lmp), avecKK(nullptr), params_dirty(1)
 {
-  kokkosable = 1;
-  atomKK = (AtomKokkos *) atom;
-  execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
-  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | MASK_MASK | TAG_MASK |
-      ENERGY_MASK | VIRIAL_MASK | RMASS_MASK | RADIUS_MASK | POLYDEM_ALL_MASK;
-  datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
+  kk_construct<DeviceType>();
 }
 
 template <class DeviceType> PairEllipsoidKokkos<DeviceType>::~PairEllipsoidKokkos()
 {
   if (copymode) return;
-  memoryKK->destroy_kokkos(k_eatom, eatom);
-  memoryKK->destroy_kokkos(k_vatom, vatom);
-  eatom = nullptr;
-  vatom = nullptr;
+  kk_destroy_tallies(k_eatom, k_vatom);
 }
 
 /* ----------------------------------------------------------------------
@@ -161,41 +149,20 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::update_device_
 template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int eflag, int vflag)
 {
   ev_init(eflag, vflag, 0);
-  if (eflag_atom) {
-    memoryKK->destroy_kokkos(k_eatom, eatom);
-    memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
-  }
-  if (vflag_atom) {
-    memoryKK->destroy_kokkos(k_vatom, vatom);
-    memoryKK->create_kokkos(k_vatom, vatom, maxvatom, "pair:vatom");
-  }
+  kk_tally_views(k_eatom, k_vatom);
   update_device_data();
 
-  atomKK->sync(execution_space, datamask_read);
-  if (eflag || vflag)
-    atomKK->modified(execution_space, datamask_modify);
-  else
-    atomKK->modified(execution_space, F_MASK | TORQUE_MASK);
+  kk_sync_atoms(eflag, vflag);
 
   auto *k_list = static_cast<NeighListKokkos<DeviceType> *>(list);
   EllContactFunctor<DeviceType> fn;
-  fn.x = atomKK->k_x.view<DeviceType>();
-  fn.v = atomKK->k_v.view<DeviceType>();
-  fn.omega = atomKK->k_omega.view<DeviceType>();
-  fn.f = atomKK->k_f.view<DeviceType>();
-  fn.torque = atomKK->k_torque.view<DeviceType>();
+  fn.bind_bodies(atomKK, avecKK);
   fn.radius = atomKK->k_radius.view<DeviceType>();
-  fn.rmass = atomKK->k_rmass.view<DeviceType>();
-  fn.pscale = avecKK->k_pscale.view<DeviceType>();
-  fn.type = atomKK->k_type.view<DeviceType>();
-  fn.pshape = avecKK->k_pshape.view<DeviceType>();
-  fn.quat = avecKK->k_quat.view<DeviceType>();
   fn.ilist = k_list->d_ilist;
   fn.numneigh = k_list->d_numneigh;
   fn.neighbors = k_list->d_neighbors;
   fn.axes = shapes.axes;
   fn.laws = d_laws_table;
-  fn.tag = atomKK->k_tag.view<DeviceType>();
   fn.use_history = use_history;
   fn.shearupdate = update->setupflag ? 0 : 1;
   fn.count_partners = 0;
@@ -207,11 +174,8 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
     fn.firsttouch = fh->k_firstflag.template view<DeviceType>();
     fn.firstshear = fh->k_firstvalue.template view<DeviceType>();
     fn.count_partners = neighbor->ago == 0;
-    if (fn.count_partners) {
-      if ((int) d_npartner.extent(0) < nlocal)
-        d_npartner = Kokkos::View<int *, DeviceType>("ellipsoid/kk:npartner", atom->nmax);
-      Kokkos::deep_copy(d_npartner, 0);
-    }
+    if (fn.count_partners)
+      polydem_kk::reset_partners(d_npartner, nlocal, atom->nmax, "ellipsoid/kk:npartner");
     fn.npartner = d_npartner;
   }
   if (eflag_atom) fn.eatom = k_eatom.template view<DeviceType>();
@@ -234,16 +198,9 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
     polydem_kk::ensure_partners<DeviceType>(fix_history, d_npartner, nlocal, atom->nmax, world);
   polydem_kk::add_reduced(this, fn.tally, red, local_counts, NCOUNT);
 
-  if (eflag_atom) {
-    k_eatom.template modify<DeviceType>();
-    k_eatom.template sync<LMPHostType>();
-  }
-  if (vflag_atom) {
-    k_vatom.template modify<DeviceType>();
-    k_vatom.template sync<LMPHostType>();
-  }
-  pvector[0] = local_counts[CNT_COLLISIONS];
-  pvector[1] = local_counts[CNT_CONTACTS];
+  kk_tally_to_host<DeviceType>(k_eatom, k_vatom);
+  pvector[0] = local_counts[polydem::EP_COLLISIONS];
+  pvector[1] = local_counts[polydem::EP_CONTACTS];
   if (neighbor->ago == 0) report_counters();
 }
 

@@ -126,24 +126,24 @@ void PairPolydem::transfer_history(double *source, double *target POLYDEM_TRANSF
 
 /* ---------------------------------------------------------------------- */
 
-void PairPolydem::RestartFields::operator()(double &v)
+template <class V> void PairPolydem::RestartFields::field(V &v, MPI_Datatype type)
 {
   if (!reading) {
-    fwrite(&v, sizeof(double), 1, fp);
+    fwrite(&v, sizeof(V), 1, fp);
     return;
   }
-  if (pair->comm->me == 0) utils::sfread(FLERR, &v, sizeof(double), 1, fp, nullptr, pair->error);
-  MPI_Bcast(&v, 1, MPI_DOUBLE, 0, pair->world);
+  if (pair->comm->me == 0) utils::sfread(FLERR, &v, sizeof(V), 1, fp, nullptr, pair->error);
+  MPI_Bcast(&v, 1, type, 0, pair->world);
+}
+
+void PairPolydem::RestartFields::operator()(double &v)
+{
+  field(v, MPI_DOUBLE);
 }
 
 void PairPolydem::RestartFields::operator()(int &v)
 {
-  if (!reading) {
-    fwrite(&v, sizeof(int), 1, fp);
-    return;
-  }
-  if (pair->comm->me == 0) utils::sfread(FLERR, &v, sizeof(int), 1, fp, nullptr, pair->error);
-  MPI_Bcast(&v, 1, MPI_INT, 0, pair->world);
+  field(v, MPI_INT);
 }
 
 void PairPolydem::RestartFields::flag_as_double(int &v)

@@ -47,6 +47,8 @@ class PairPolydem : public Pair {
     PairPolydem *pair;
     FILE *fp;
     bool reading;
+    // v written, or read on rank 0 and broadcast as `type`
+    template <class V> void field(V &v, MPI_Datatype type);
   };
 
  protected:
@@ -84,7 +86,15 @@ class PairPolydem : public Pair {
   double size_cutoff();
   void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;
 
-  // the /kk styles' init_style around the plain one (pair_polydem_kokkos.h)
+  // the /kk styles' constructor settings and destructor (the per-atom
+  // tallies), and their init_style around the plain one (pair_polydem_kokkos.h)
+  template <class DeviceType> void kk_construct();
+  template <class KE, class KV> void kk_destroy_tallies(KE &k_eatom, KV &k_vatom);
+  // compute: the per-atom tally Views as ev_init asked for them; the atoms
+  // synced to the execution space and marked modified there
+  template <class KE, class KV> void kk_tally_views(KE &k_eatom, KV &k_vatom);
+  template <class DeviceType, class KE, class KV> void kk_tally_to_host(KE &k_eatom, KV &k_vatom);
+  void kk_sync_atoms(int eflag, int vflag);
   template <class DeviceType> class AtomVecPolyhedronKokkos *kk_init_before(bool history);
   template <class DeviceType> void kk_init_after();
 };

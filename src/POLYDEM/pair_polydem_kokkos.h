@@ -6,17 +6,79 @@
 #ifndef LMP_PAIR_POLYDEM_KOKKOS_H
 #define LMP_PAIR_POLYDEM_KOKKOS_H
 
+#include "atom_kokkos.h"
+#include "atom_masks.h"
 #include "atom_vec_polyhedron_kokkos.h"
 #include "error.h"
 #include "force.h"
 #include "kokkos_type.h"
+#include "memory_kokkos.h"
 #include "pair_polydem.h"
 #include "polydem_history_kokkos.h"
+#include "polydem_kokkos_masks.h"
 #include "polydem_lammps_compat.h"
 
 #include <type_traits>
 
 namespace LAMMPS_NS {
+
+/* ----------------------------------------------------------------------
+   constructor: Kokkos-able on DeviceType's space, the fields read and
+   modified; destructor: the per-atom energy and virial Views
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolydem::kk_construct()
+{
+  kokkosable = 1;
+  atomKK = (AtomKokkos *) atom;
+  execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
+  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | MASK_MASK |
+      TAG_MASK | ENERGY_MASK | VIRIAL_MASK | RMASS_MASK | RADIUS_MASK | POLYDEM_ALL_MASK;
+  datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
+}
+
+template <class KE, class KV> void PairPolydem::kk_destroy_tallies(KE &k_eatom, KV &k_vatom)
+{
+  memoryKK->destroy_kokkos(k_eatom, eatom);
+  memoryKK->destroy_kokkos(k_vatom, vatom);
+  eatom = nullptr;
+  vatom = nullptr;
+}
+
+template <class KE, class KV> void PairPolydem::kk_tally_views(KE &k_eatom, KV &k_vatom)
+{
+  if (eflag_atom) {
+    memoryKK->destroy_kokkos(k_eatom, eatom);
+    memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
+  }
+  if (vflag_atom) {
+    memoryKK->destroy_kokkos(k_vatom, vatom);
+    memoryKK->create_kokkos(k_vatom, vatom, maxvatom, "pair:vatom");
+  }
+}
+
+// after the kernel: the per-atom tallies written on DeviceType, copied to the host
+template <class DeviceType, class KE, class KV>
+void PairPolydem::kk_tally_to_host(KE &k_eatom, KV &k_vatom)
+{
+  if (eflag_atom) {
+    k_eatom.template modify<DeviceType>();
+    k_eatom.template sync<LMPHostType>();
+  }
+  if (vflag_atom) {
+    k_vatom.template modify<DeviceType>();
+    k_vatom.template sync<LMPHostType>();
+  }
+}
+
+inline void PairPolydem::kk_sync_atoms(int eflag, int vflag)
+{
+  atomKK->sync(execution_space, datamask_read);
+  if (eflag || vflag)
+    atomKK->modified(execution_space, datamask_modify);
+  else
+    atomKK->modified(execution_space, F_MASK | TORQUE_MASK);
+}
 
 /* ----------------------------------------------------------------------
    before the plain init_style: atom_style polyhedron/kk; newton pair off

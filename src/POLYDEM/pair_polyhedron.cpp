@@ -6,6 +6,7 @@
 
 #include "atom.h"
 #include "poly_roles.h"
+#include "poly_timestep.h"
 #include "poly_shape_library.h"
 #include "comm.h"
 #include "error.h"
@@ -36,13 +37,6 @@ using namespace LAMMPS_NS;
 using MathConst::MY_PI;
 
 static constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // s, k_t, twist (polydem_contact_law.h)
-static_assert(int(PairPolyhedron::CNT_OVERFLOW) == int(polydem::PP_OVERFLOW) &&
-                  int(PairPolyhedron::CNT_DEGENERATE) == int(polydem::PP_DEGENERATE) &&
-                  int(PairPolyhedron::CNT_NOCONV) == int(polydem::PP_NOCONV) &&
-                  int(PairPolyhedron::CNT_BIGOVERLAP) == int(polydem::PP_BIGOVERLAP) &&
-                  int(PairPolyhedron::CNT_CONTACTS) == int(polydem::PP_CONTACTS) &&
-                  int(PairPolyhedron::NCOUNT) == int(polydem::PP_NCOUNT),
-              "counters in the order of the pipeline's");
 
 /* ---------------------------------------------------------------------- */
 
@@ -261,45 +255,26 @@ double PairPolyhedron::init_one(int i, int j)
 
 void PairPolyhedron::check_timestep()
 {
-  double tc[2] = {1e300, 1e300};    // contact time, face-contact stability limit
+  TimestepCheck check;
   auto consider = [&](int ishape, double s, double m, int type) {
     const auto &shape = avec->shape(ishape);
     const double V = shape.volume();
     const double R = s * cbrt(3.0 * V / (4.0 * MY_PI));
     const double kn = 2.0 * youngs[type] * R;
-    tc[0] = MIN(tc[0], MY_PI * sqrt(0.5 * m / (kn * force->ftm2v)));
+    check.contact(0.5 * m, kn * force->ftm2v);
     // like pair of this particle, its largest face flat on another's
     const double Vs = V * s * s * s, ms = m / force->ftm2v;
     const auto law = polydem::feng_law(youngs[type], 0.0, Vs, youngs[type], 0.0, Vs,
                                        polydem::damping_law(1.0, 0), 0.0, core, 0);
-    const double dtf = polydem::face_contact_stable_dt(law.normal, ms * ms / (ms + ms),
-                                                       shape.max_face_area() * s * s);
-    if (dtf > 0.0) tc[1] = MIN(tc[1], dtf);
+    check.flat_face(polydem::face_contact_stable_dt(law.normal, ms * ms / (ms + ms),
+                                                    shape.max_face_area() * s * s));
   };
   for (int i = 0; i < atom->nlocal; i++)
     consider(atom->pshape[i], atom->pscale[i], atom->rmass[i], atom->type[i]);
   // and the smallest of each kind an insertion fix will add
   for (const auto &c : ParticleSource::candidates(lmp))
     if (!avec->shape(c.ishape).is_ellipsoid()) consider(c.ishape, c.scale, c.mass, c.type);
-  double all[2];
-  MPI_Allreduce(tc, all, 2, MPI_DOUBLE, MPI_MIN, world);
-  if (all[0] >= 1e300 || comm->me != 0) return;
-  utils::logmesg(lmp, "pair polyhedron: estimated contact time {:.4g}, timestep {:.4g} = t_c/{:.3g}\n",
-                 all[0], update->dt, all[0] / update->dt);
-  if (update->dt > all[0] / 10.0)
-    error->warning(FLERR, "pair polyhedron: timestep {:.4g} exceeds t_c/10 = {:.4g} (estimated "
-                   "contact time {:.4g}): contacts will be poorly resolved",
-                   update->dt, all[0] / 10.0, all[0]);
-  if (all[1] < 1e300) {
-    utils::logmesg(lmp, "pair polyhedron: a flat face contact in the core (core {}) is stable "
-                   "for timesteps below {:.4g}, resolved below about {:.4g}\n", core, all[1],
-                   all[1] / 20.0);
-    if (update->dt > 0.5 * all[1])
-      error->warning(FLERR, "pair polyhedron: timestep {:.4g} exceeds half of {:.4g}, the "
-                     "stability limit of a largest face resting flat in the core (stiffness 5/3 K "
-                     "V0^(-2/3) A^2): flat contacts may stick or gain energy; lower the timestep "
-                     "or raise core", update->dt, all[1]);
-  }
+  check.report(lmp, "pair polyhedron", "like pair, contact area R^2", "a like grain", core);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -408,7 +383,7 @@ void PairPolyhedron::report_counters()
                         "degenerate contacts (NaN or zero size; contact skipped)",
                         "GJK non-convergences (overlap computed anyway)",
                         "overlaps beyond overlap/warn of the smaller particle volume"};
-  PairPolydem::report_counters(what, CNT_CONTACTS);
+  PairPolydem::report_counters(what, polydem::PP_CONTACTS);
 }
 
 /* ----------------------------------------------------------------------

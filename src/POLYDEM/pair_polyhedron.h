@@ -18,6 +18,7 @@ PairStyle(polyhedron,PairPolyhedron);
 #include "pair_polydem.h"
 #include "poly_roles.h"
 #include "polydem_law_table.h"
+#include "polydem_pair_counts.h"
 
 #include <memory>
 #include <vector>
@@ -40,9 +41,9 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
   void *extract(const char *, int &) override;
   double memory_usage() override;
 
-  // counters since the start of the run (global after report_counters);
-  // the order of polydem::PolyhedronPairCount (polydem_contact_pipeline.h)
-  enum { CNT_OVERFLOW, CNT_DEGENERATE, CNT_NOCONV, CNT_BIGOVERLAP, CNT_CONTACTS, NCOUNT };
+  // counters since the start of the run (global after report_counters),
+  // indexed by polydem::PolyhedronPairCount (polydem_pair_counts.h)
+  static constexpr int NCOUNT = polydem::PP_NCOUNT;
 
   // Per-contact records (polydem_contact_record.h) of the force evaluation of
   // the current step, each contact once over all ranks, for the contact

@@ -21,6 +21,7 @@
 #include "neighbor.h"
 #include "update.h"
 
+#include "polydem_body_views_kokkos.h"
 #include "polydem_contact_pipeline.h"
 #include "polydem_contact_record.h"
 #include "polydem_history_kokkos.h"
@@ -50,7 +51,7 @@ template <class DeviceType> struct PolyKK {
    history here, exactly as in the plain style
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, bool FILL> struct PolyCandidateFunctor {
+template <class DeviceType> struct PolyCandidateFunctor {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
   typename AT::t_x_array_randomread x;
@@ -63,6 +64,7 @@ template <class DeviceType, bool FILL> struct PolyCandidateFunctor {
   Kokkos::View<int *[2], DeviceType> pairs;
   Kokkos::View<int *, DeviceType> npartner;    // list entries per local atom (both sides)
   int nlocal, count_partners;
+  int fill;    // 0: count the candidates (and release the others' history), 1: list them
 
   KOKKOS_INLINE_FUNCTION void operator()(const int ii) const
   {
@@ -70,30 +72,30 @@ template <class DeviceType, bool FILL> struct PolyCandidateFunctor {
     const int jnum = numneigh(i);
     const double xi = x(i, 0), yi = x(i, 1), zi = x(i, 2), ri = radius(i);
     int n = 0;
-    const int base = FILL ? offset(ii) : 0;
+    const int base = fill ? offset(ii) : 0;
     for (int jj = 0; jj < jnum; jj++) {
       const int j = neighbors(i, jj) & NEIGHMASK;
       const double delx = xi - x(j, 0), dely = yi - x(j, 1), delz = zi - x(j, 2);
       const double radsum = ri + radius(j);
       const double rsq = delx * delx + dely * dely + delz * delz;
-      if (!FILL && count_partners) {
+      if (!fill && count_partners) {
         Kokkos::atomic_increment(&npartner(i));
         if (j < nlocal) Kokkos::atomic_increment(&npartner(j));
       }
       if (rsq >= radsum * radsum) {
-        if (!FILL) {
+        if (!fill) {
           firsttouch(i, jj) = 0;
           for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = 0.0;
         }
         continue;
       }
-      if (FILL) {
+      if (fill) {
         pairs(base + n, 0) = i;
         pairs(base + n, 1) = jj;
       }
       n++;
     }
-    if (!FILL) count(ii) = n;
+    if (!fill) count(ii) = n;
   }
 };
 
@@ -121,20 +123,12 @@ typedef polydem_kk::PairReduce<PairPolyhedron::NCOUNT> PolyReduce;
    between threads)
 ------------------------------------------------------------------------- */
 
-template <class DeviceType, int MF> struct PolyContactFunctor {
+template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<DeviceType> {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
   typedef PolyReduce value_type;
   typedef polydem::OverlapWorkspace<double, MF> Workspace;
 
-  typename AT::t_x_array_randomread x;
-  typename AT::t_v_array_randomread v, omega;
-  typename AT::t_f_array f, torque;
-  typename AT::t_float_1d_randomread rmass, pscale;
-  typename AT::t_int_1d_randomread type, pshape;
-  typename AT::t_tagint_1d_randomread tag;
-  typename AT::t_int_1d_randomread mask;
-  polydem_view_t<tdual_quat_array, DeviceType> quat;
   typename AT::t_neighbors_2d neighbors;
   typename AT::t_int_2d firsttouch;
   typename AT::t_float_2d firstshear;
@@ -157,7 +151,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
     const int i = pairs(p, 0), jj = pairs(p, 1);
     const int j = neighbors(i, jj) & NEIGHMASK;
     Workspace &ws = reinterpret_cast<Workspace *>(workspace.data())[p - first];
-    const polydem::ShapeView<double> vi = shapes(pshape(i)), vj = shapes(pshape(j));
+    const polydem::ShapeView<double> vi = shapes(this->pshape(i)), vj = shapes(this->pshape(j));
     const auto A = polydem::gather_polyhedron_body(*this, i, vi);
     const auto B = polydem::gather_polyhedron_body(*this, j, vj);
     // the history is that of the lower-tag atom (polydem_contact_law.h);
@@ -166,12 +160,12 @@ template <class DeviceType, int MF> struct PolyContactFunctor {
                                                     &firstshear(i, SIZE_HISTORY * jj), ws, red.cnt);
     firsttouch(i, jj) = c.contact;
     if (!c.contact) return;
-    polydem_kk::scatter_contact(f, torque, i, j, newton_pair || j < nlocal, c.cf);
+    polydem_kk::scatter_contact(this->f, this->torque, i, j, newton_pair || j < nlocal, c.cf);
     const polydem::Vec3<double> &xi = A.shape.x, &xj = B.shape.x;
     if (store_contacts) {
       const double pi[3] = {xi.x, xi.y, xi.z}, pj[3] = {xj.x, xj.y, xj.z};
-      if (polydem::contact_owned(newton_pair, j < nlocal, tag(i), tag(j), pi, pj))
-        polydem::fill_contact_record(&records(p, 0), tag(i), tag(j), mask(i), mask(j), c.vmin,
+      if (polydem::contact_owned(newton_pair, j < nlocal, this->tag(i), this->tag(j), pi, pj))
+        polydem::fill_contact_record(&records(p, 0), this->tag(i), this->tag(j), this->mask(i), this->mask(j), c.vmin,
                                      c.geo, c.cf);
     }
     const double F[3] = {c.cf.F_A.x, c.cf.F_A.y, c.cf.F_A.z};
@@ -189,22 +183,14 @@ PairPolyhedronKokkos<DeviceType>::PairPolyhedronKokkos(LAMMPS *lmp) :
     PairPolyhedron(lmp), avecKK(nullptr), fix_historyKK(nullptr),
     params_dirty(1), npairs(0), nslots(0), store_contacts(0)
 {
-  kokkosable = 1;
-  atomKK = (AtomKokkos *) atom;
-  execution_space = ExecutionSpaceFromDevice<DeviceType>::space;
-  datamask_read = X_MASK | V_MASK | OMEGA_MASK | F_MASK | TORQUE_MASK | TYPE_MASK | MASK_MASK |
-      TAG_MASK | ENERGY_MASK | VIRIAL_MASK | RMASS_MASK | RADIUS_MASK | POLYDEM_ALL_MASK;
-  datamask_modify = F_MASK | TORQUE_MASK | ENERGY_MASK | VIRIAL_MASK;
+  kk_construct<DeviceType>();
   ws.reset();    // the plain style's host workspace is not used
 }
 
 template <class DeviceType> PairPolyhedronKokkos<DeviceType>::~PairPolyhedronKokkos()
 {
   if (copymode) return;
-  memoryKK->destroy_kokkos(k_eatom, eatom);
-  memoryKK->destroy_kokkos(k_vatom, vatom);
-  eatom = nullptr;
-  vatom = nullptr;
+  kk_destroy_tallies(k_eatom, k_vatom);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -281,7 +267,8 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
     d_offset = Kokkos::View<int *, DeviceType>("polyhedron/kk:offset", d_count.extent(0));
   }
 
-  PolyCandidateFunctor<DeviceType, false> cnt;
+  PolyCandidateFunctor<DeviceType> cnt;
+  cnt.fill = 0;
   cnt.x = atomKK->k_x.view<DeviceType>();
   cnt.radius = atomKK->k_radius.view<DeviceType>();
   cnt.ilist = k_list->d_ilist;
@@ -293,11 +280,8 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
   cnt.offset = d_offset;
   const int nlocal = atom->nlocal;
   cnt.count_partners = neighbor->ago == 0;
-  if (cnt.count_partners) {
-    if ((int) d_npartner.extent(0) < nlocal)
-      d_npartner = Kokkos::View<int *, DeviceType>("polyhedron/kk:npartner", atom->nmax);
-    Kokkos::deep_copy(d_npartner, 0);
-  }
+  if (cnt.count_partners)
+    polydem_kk::reset_partners(d_npartner, nlocal, atom->nmax, "polyhedron/kk:npartner");
   cnt.npartner = d_npartner;
   cnt.nlocal = nlocal;
   Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), cnt);
@@ -314,18 +298,9 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
   if ((int) d_pairs.extent(0) < npairs)
     d_pairs = Kokkos::View<int *[2], DeviceType>("polyhedron/kk:pairs", npairs + npairs / 5 + 16);
 
-  PolyCandidateFunctor<DeviceType, true> fill;
-  fill.x = cnt.x;
-  fill.radius = cnt.radius;
-  fill.ilist = cnt.ilist;
-  fill.numneigh = cnt.numneigh;
-  fill.neighbors = cnt.neighbors;
-  fill.firsttouch = cnt.firsttouch;
-  fill.firstshear = cnt.firstshear;
-  fill.count = d_count;
-  fill.offset = d_offset;
-  fill.pairs = d_pairs;
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), fill);
+  cnt.fill = 1;
+  cnt.pairs = d_pairs;
+  Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), cnt);
 }
 
 // shared with ellipsoid/kk: polydem_history_kokkos.h
@@ -363,18 +338,7 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   nslots = (int) (d_workspace.extent(0) / sizeof(Workspace));
 
   PolyContactFunctor<DeviceType, MF> fn;
-  fn.x = atomKK->k_x.view<DeviceType>();
-  fn.v = atomKK->k_v.view<DeviceType>();
-  fn.omega = atomKK->k_omega.view<DeviceType>();
-  fn.f = atomKK->k_f.view<DeviceType>();
-  fn.torque = atomKK->k_torque.view<DeviceType>();
-  fn.rmass = atomKK->k_rmass.view<DeviceType>();
-  fn.pscale = avecKK->k_pscale.view<DeviceType>();
-  fn.type = atomKK->k_type.view<DeviceType>();
-  fn.pshape = avecKK->k_pshape.view<DeviceType>();
-  fn.tag = atomKK->k_tag.view<DeviceType>();
-  fn.mask = atomKK->k_mask.view<DeviceType>();
-  fn.quat = avecKK->k_quat.view<DeviceType>();
+  fn.bind_bodies(atomKK, avecKK);
   fn.neighbors = static_cast<NeighListKokkos<DeviceType> *>(list)->d_neighbors;
   fn.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
   fn.firstshear = fix_historyKK->k_firstvalue.template view<DeviceType>();
@@ -434,23 +398,12 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
   ev_init(eflag, vflag, 0);
   dt = update->dt;
 
-  if (eflag_atom) {
-    memoryKK->destroy_kokkos(k_eatom, eatom);
-    memoryKK->create_kokkos(k_eatom, eatom, maxeatom, "pair:eatom");
-  }
-  if (vflag_atom) {
-    memoryKK->destroy_kokkos(k_vatom, vatom);
-    memoryKK->create_kokkos(k_vatom, vatom, maxvatom, "pair:vatom");
-  }
+  kk_tally_views(k_eatom, k_vatom);
 
   update_shapes();
   update_params();
 
-  atomKK->sync(execution_space, datamask_read);
-  if (eflag || vflag)
-    atomKK->modified(execution_space, datamask_modify);
-  else
-    atomKK->modified(execution_space, F_MASK | TORQUE_MASK);
+  kk_sync_atoms(eflag, vflag);
 
   fix_historyKK->k_firstflag.template sync<DeviceType>();
   fix_historyKK->k_firstvalue.template sync<DeviceType>();
@@ -477,14 +430,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
   fix_historyKK->k_firstflag.template modify<DeviceType>();
   fix_historyKK->k_firstvalue.template modify<DeviceType>();
 
-  if (eflag_atom) {
-    k_eatom.template modify<DeviceType>();
-    k_eatom.template sync<LMPHostType>();
-  }
-  if (vflag_atom) {
-    k_vatom.template modify<DeviceType>();
-    k_vatom.template sync<LMPHostType>();
-  }
+  kk_tally_to_host<DeviceType>(k_eatom, k_vatom);
 
   if (neighbor->ago == 0) report_counters();
 }

@@ -8,7 +8,7 @@
 #include "polydem_rigid.h"
 
 #include "atom.h"
-#include "atom_vec_polyhedron.h"
+#include "atom_vec.h"
 #include "domain.h"
 #include "error.h"
 #include "fix.h"
@@ -17,9 +17,6 @@
 #include "polydem_shape_record.h"
 #include "polydem_shape_template.h"
 
-#ifdef LMP_KOKKOS
-#include "atom_vec_polyhedron_kokkos.h"
-#endif
 
 #include <cmath>
 #include <cstdio>
@@ -38,11 +35,7 @@ PolyShapeLibrary::~PolyShapeLibrary() = default;
 
 PolyShapeLibrary *PolyShapeLibrary::of(LAMMPS *lmp, const std::string &who)
 {
-  AtomVec *avec = lmp->atom->avec;
-  if (auto *a = dynamic_cast<AtomVecPolyhedron *>(avec)) return a->shape_library();
-#ifdef LMP_KOKKOS
-  if (auto *a = dynamic_cast<AtomVecPolyhedronKokkos *>(avec)) return a->shape_library();
-#endif
+  if (auto *o = dynamic_cast<ShapeLibraryOwner *>(lmp->atom->avec)) return o->shape_library();
   lmp->error->all(FLERR, "{} requires atom_style polyhedron", who);
   return nullptr;
 }

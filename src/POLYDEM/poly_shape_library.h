@@ -84,6 +84,17 @@ class PolyShapeLibrary : protected Pointers {
   double rmass_one;
 };
 
+// The role of the package's atom styles (plain and /kk) for every other
+// style: the owner of the shape library, found by PolyShapeLibrary::of()
+// without naming the atom style classes.
+class ShapeLibraryOwner {
+ public:
+  virtual PolyShapeLibrary *shape_library() = 0;
+
+ protected:
+  ~ShapeLibraryOwner() = default;
+};
+
 }    // namespace LAMMPS_NS
 
 #endif

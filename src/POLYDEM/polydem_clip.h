@@ -76,17 +76,11 @@ template <typename T> struct ClipResult {
 // volumes below this x eps x the sum of |column integrals| are 0
 constexpr int CLIP_TOUCH_TOL = 16;
 
+// every field zero (value-initialised aggregate), then the status
 template <typename T> POLYDEM_FN void clip_result_zero(ClipResult<T> &r, int status)
 {
-  const Vec3<T> z = make_vec3(T(0), T(0), T(0));
+  r = ClipResult<T>{};
   r.status = status;
-  r.area = T(0);
-  r.acentroid = z;
-  r.volume = T(0);
-  r.vcentroid = z;
-  r.S = z;
-  r.M = z;
-  r.normal = z;
 }
 
 namespace clip_detail {

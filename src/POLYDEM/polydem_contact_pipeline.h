@@ -29,6 +29,7 @@
 
 #include "polydem_law_table.h"
 #include "polydem_overlap.h"
+#include "polydem_pair_counts.h"
 #include "polydem_wall_contact.h"
 #include "polydem_wall_ellipsoid.h"
 
@@ -123,15 +124,6 @@ template <typename T> struct PolyhedronBody : BodyMotion<T> {
   long tag;
 };
 
-// pair polyhedron's counters (PairPolyhedron::CNT_*)
-enum PolyhedronPairCount : int {
-  PP_OVERFLOW,      // overlap workspace overflows (contact skipped)
-  PP_DEGENERATE,    // degenerate overlaps (contact skipped)
-  PP_NOCONV,        // GJK non-convergences (overlap computed anyway)
-  PP_BIGOVERLAP,    // V > overlap_warn x smaller volume
-  PP_CONTACTS,      // pair-steps in contact
-  PP_NCOUNT
-};
 
 // One polyhedron pair (A = the list's i): hist = its CONTACT_HIST values in
 // the pair convention (contact_history_sign), advanced and kept if update
@@ -210,15 +202,6 @@ POLYDEM_FN EllipsoidBody<T> gather_ellipsoid_body(const Atoms &atoms, int k, con
 
 constexpr int ELLIPSOID_HIST = 3;    // tangential displacement s (polydem_contact_law.h)
 
-// pair ellipsoid's counters (PairEllipsoid::CNT_*)
-enum EllipsoidPairCount : int {
-  EP_DEGENERATE,    // coincident centres or NaN (skipped)
-  EP_NOCONV,        // contact search without convergence (skipped)
-  EP_BIGOVERLAP,    // delta > overlap_warn x smallest semi-axis
-  EP_CONTACTS,      // pair-steps in contact (x share)
-  EP_COLLISIONS,    // contacts in their first step, delta < (d delta/dt) dt (x share)
-  EP_NCOUNT
-};
 
 // One ellipsoid pair: hist = its ELLIPSOID_HIST values in the pair
 // convention, or null (frictionless: none kept); share: the part of the pair

@@ -28,6 +28,7 @@
 
 #include "polydem_contact_law.h"
 #include "polydem_ellipsoid.h"
+#include "polydem_rigid.h"    // ellipsoid_inverse_moments, point_inverse_mass
 
 namespace polydem {
 
@@ -123,9 +124,7 @@ POLYDEM_FN T ellipsoid_contact_mass(const EllipsoidContact<T> &c, int overlap,
   for (int k = 0; k < 2; ++k) {
     const EllipsoidPose<T> &e = *body[k];
     const Vec3<T> g = qrotate_inv(e.q, cross(c.c - e.x, P));    // body frame
-    const T a2 = e.axes.x * e.axes.x, b2 = e.axes.y * e.axes.y, c2 = e.axes.z * e.axes.z;
-    const T f = T(5) / mass[k];
-    im += f * (g.x * g.x / (b2 + c2) + g.y * g.y / (a2 + c2) + g.z * g.z / (a2 + b2));
+    im = point_inverse_mass(im, ellipsoid_inverse_moments(mass[k], e.axes), g);
   }
   return T(1) / im;
 }

@@ -199,6 +199,17 @@ void ensure_partners(FixNeighHistory *fix, const Kokkos::View<int *, DeviceType>
   }
 }
 
+// Before the kernel that counts the list entries of each local atom: the
+// counts zeroed, the View grown to nmax where it holds fewer than nlocal.
+template <class DeviceType>
+void reset_partners(Kokkos::View<int *, DeviceType> &npartner, int nlocal, int nmax,
+                    const char *label)
+{
+  if ((int) npartner.extent(0) < nlocal)
+    npartner = Kokkos::View<int *, DeviceType>(std::string(label), nmax);
+  Kokkos::deep_copy(npartner, 0);
+}
+
 // Replaces the pair style's placeholder fix dummy_id by the Kokkos history
 // fix id with nvalues per pair (registered under a run-time style name).
 template <class DeviceType>

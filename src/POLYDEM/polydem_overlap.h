@@ -106,19 +106,11 @@ namespace overlap_detail {
   }
 }    // namespace overlap_detail
 
+// every field zero (value-initialised aggregate), then the status
 template <typename T> POLYDEM_FN void overlap_result_zero(OverlapResult<T> &r, int status)
 {
-  const Vec3<T> z = make_vec3(T(0), T(0), T(0));
+  r = OverlapResult<T>{};
   r.status = status;
-  r.volume = T(0);
-  r.centroid = z;
-  r.S_A = z;
-  r.M_A = z;
-  r.M_B = z;
-  r.area = T(0);
-  r.normal = z;
-  r.depth = T(0);
-  r.nverts = 0;
 }
 
 // Overlap of two posed polyhedra. Call after GJK has reported intersection

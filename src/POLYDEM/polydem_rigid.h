@@ -66,32 +66,38 @@ template <typename T> POLYDEM_FN void free_rotor_step(T h, const T inertia[3], T
   L[2] = ll.z;
 }
 
+// out = R D^{+-1} R^T in for a body with principal diagonal D (the inertia)
+// and orientation q: inverse divides by D (0 where D is 0), else multiplies.
+template <typename T>
+POLYDEM_FN void body_diagonal_apply(const T d[3], bool inverse, const T in[3], const T q[4], T out[3])
+{
+  const Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
+  Vec3<T> b = matTvec(r, make_vec3(in[0], in[1], in[2]));
+  if (inverse) {
+    b.x = d[0] > T(0) ? b.x / d[0] : T(0);
+    b.y = d[1] > T(0) ? b.y / d[1] : T(0);
+    b.z = d[2] > T(0) ? b.z / d[2] : T(0);
+  } else {
+    b.x *= d[0];
+    b.y *= d[1];
+    b.z *= d[2];
+  }
+  const Vec3<T> o = matvec(r, b);
+  out[0] = o.x;
+  out[1] = o.y;
+  out[2] = o.z;
+}
+
 // Lab-frame angular velocity from lab angular momentum: w = R I^-1 R^T L.
 template <typename T> POLYDEM_FN void omega_from_angmom(const T inertia[3], const T L[3], const T q[4], T w[3])
 {
-  const Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
-  Vec3<T> b = matTvec(r, make_vec3(L[0], L[1], L[2]));
-  b.x = inertia[0] > T(0) ? b.x / inertia[0] : T(0);
-  b.y = inertia[1] > T(0) ? b.y / inertia[1] : T(0);
-  b.z = inertia[2] > T(0) ? b.z / inertia[2] : T(0);
-  const Vec3<T> o = matvec(r, b);
-  w[0] = o.x;
-  w[1] = o.y;
-  w[2] = o.z;
+  body_diagonal_apply(inertia, true, L, q, w);
 }
 
 // Lab angular momentum from lab angular velocity: L = R I R^T w.
 template <typename T> POLYDEM_FN void angmom_from_omega(const T inertia[3], const T w[3], const T q[4], T L[3])
 {
-  const Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
-  Vec3<T> b = matTvec(r, make_vec3(w[0], w[1], w[2]));
-  b.x *= inertia[0];
-  b.y *= inertia[1];
-  b.z *= inertia[2];
-  const Vec3<T> o = matvec(r, b);
-  L[0] = o.x;
-  L[1] = o.y;
-  L[2] = o.z;
+  body_diagonal_apply(inertia, false, w, q, L);
 }
 
 // Rotational kinetic energy 1/2 sum_k Lb_k^2 / I_k.
@@ -121,6 +127,62 @@ template <typename T> POLYDEM_FN void scaled_moments(T m, T s, T V, const T J[3]
 {
   const T f = m * s * s / V;
   for (int k = 0; k < 3; k++) I[k] = f * J[k];
+}
+
+
+// Principal moments of a solid ellipsoid of mass m, semi-axes (a, b, c):
+// I = m (b^2 + c^2, a^2 + c^2, a^2 + b^2) / 5; and their inverses.
+template <typename T> POLYDEM_FN Vec3<T> ellipsoid_moments(T m, const Vec3<T> &ax)
+{
+  const T a = ax.x, b = ax.y, c = ax.z;
+  return make_vec3(m * (b * b + c * c) / T(5), m * (a * a + c * c) / T(5), m * (a * a + b * b) / T(5));
+}
+template <typename T> POLYDEM_FN Vec3<T> ellipsoid_inverse_moments(T m, const Vec3<T> &ax)
+{
+  const T a2 = ax.x * ax.x, b2 = ax.y * ax.y, c2 = ax.z * ax.z;
+  return make_vec3(T(5) / (m * (b2 + c2)), T(5) / (m * (a2 + c2)), T(5) / (m * (a2 + b2)));
+}
+
+// Mass a contact point sees (point-mass form of an impulse J along n at
+// r from the centroid: the point's normal velocity changes by J / m_c):
+// 1/m_c = im0 + sum_k (r x n)_k^2 / I_k, rn = r x n in the principal frame,
+// Iinv the inverse principal moments; im0 the translational part (1/m for
+// one body against a wall, |J|^2 (1/m_A + 1/m_B) for a pair). Returns 1/m_c;
+// add the second body's rotational part by calling again with im0 = this.
+template <typename T>
+POLYDEM_FN T point_inverse_mass(T im0, const Vec3<T> &Iinv, const Vec3<T> &rn)
+{
+  return im0 + rn.x * rn.x * Iinv.x + rn.y * rn.y * Iinv.y + rn.z * rn.z * Iinv.z;
+}
+
+// Rigid motion of a mesh (its frame is the lab frame at the time it was
+// defined): p_lab = o + d + Rm (p_mesh - o); wall velocity at p_lab:
+// vw + w x (p_lab - o - d).
+template <typename T> struct MeshPose {
+  Vec3<T> o, d;    // rotation origin (mesh frame = lab at t=0), displacement
+  Mat3<T> R;       // rotation
+  Quat<T> q;       // same rotation as a quaternion
+  Vec3<T> vw, w;   // translation velocity, angular velocity (lab)
+};
+
+// lab -> mesh frame: a point, an orientation
+template <typename T> POLYDEM_FN Vec3<T> mesh_point(const MeshPose<T> &mp, const Vec3<T> &x)
+{
+  return mp.o + matTvec(mp.R, x - mp.o - mp.d);
+}
+template <typename T> POLYDEM_FN Quat<T> mesh_orientation(const MeshPose<T> &mp, const Quat<T> &q)
+{
+  return qmul(qconj(mp.q), q);
+}
+// mesh -> lab frame: the axis point o + d (lab), a point (given the axis point xw)
+template <typename T> POLYDEM_FN Vec3<T> mesh_axis_point(const MeshPose<T> &mp)
+{
+  return mp.o + mp.d;
+}
+template <typename T>
+POLYDEM_FN Vec3<T> lab_point(const MeshPose<T> &mp, const Vec3<T> &xw, const Vec3<T> &p)
+{
+  return xw + matvec(mp.R, p - mp.o);
 }
 
 }    // namespace polydem

@@ -13,6 +13,7 @@
 #include "polydem_shape_template.h"
 
 #include "polydem_shape_template_impl.h"
+#include "polydem_rigid.h"
 
 #include <CGAL/Exact_rational.h>
 
@@ -276,8 +277,8 @@ PolyShapeTemplate PolyShapeTemplate::ellipsoid(double a, double b, double c,
   t.face_start_ = {0};    // no faces, no vertices
   t.volume_ = 4.0 / 3.0 * M_PI * a * b * c;
   t.radius_ = std::max(a, std::max(b, c));
-  t.moments_ = {t.volume_ * (b * b + c * c) / 5.0, t.volume_ * (a * a + c * c) / 5.0,
-                t.volume_ * (a * a + b * b) / 5.0};
+  const Vec3<double> J = ellipsoid_moments(t.volume_, make_vec3(a, b, c));    // at unit density
+  t.moments_ = {J.x, J.y, J.z};
   t.check_mass_properties(name + ": ellipsoid " + fmt_num(a) + " " + fmt_num(b) + " " + fmt_num(c));
   return t;
 }

@@ -119,21 +119,14 @@ PolyShapeTemplate PolyShapeTemplate::from_file(const std::string &path, const Sh
                          " words");
       long n = to_int(t[1], where, "count");
       if (n < 1) throw ShapeError(where + ": '" + key + "' count must be positive, got " + t[1]);
-      if (key == "vertices") {
-        if (vkey)
-          throw ShapeError(where + ": second 'vertices' section (first at line " +
-                           std::to_string(vkey) + ")");
-        vkey = lineno;
-        nv_expect = n;
-        mode = VERTS;
-      } else {
-        if (fkey)
-          throw ShapeError(where + ": second 'faces' section (first at line " +
-                           std::to_string(fkey) + ")");
-        fkey = lineno;
-        nf_expect = n;
-        mode = FACES;
-      }
+      const bool verts = key == "vertices";
+      int &first = verts ? vkey : fkey;
+      if (first)
+        throw ShapeError(where + ": second '" + key + "' section (first at line " +
+                         std::to_string(first) + ")");
+      first = lineno;
+      (verts ? nv_expect : nf_expect) = n;
+      mode = verts ? VERTS : FACES;
       left = n;
     } else if (key == "scale") {
       if (t.size() != 2)

@@ -31,21 +31,13 @@
 #define POLYDEM_WALL_CONTACT_H
 
 #include "polydem_contact_law.h"
+#include "polydem_rigid.h"    // MeshPose, point_inverse_mass
 #include "polydem_wall_patches.h"
 #include "polydem_wall_sides.h"
 
 #include <cmath>
 
 namespace polydem {
-
-// Rigid motion of the mesh: p_lab = o + d + Rm (p_mesh - o); wall velocity
-// at p_lab: vw + w x (p_lab - o - d).
-template <typename T> struct MeshPose {
-  Vec3<T> o, d;    // rotation origin (mesh frame = lab at t=0), displacement
-  Mat3<T> R;       // rotation
-  Quat<T> q;       // same rotation as a quaternion
-  Vec3<T> vw, w;   // translation velocity, angular velocity (lab)
-};
 
 // Normal damping of a wall contact. The pair's damping ratio is that of a
 // face contact (V = A delta, W' ~ V^(1/3)) of a free particle. A corner or
@@ -100,7 +92,7 @@ POLYDEM_FN WallContacts<T> wall_patch_contacts(const WallPatches<T> &P, const Me
 {
   WallContacts<T> C;
   C.n = P.n;
-  const Vec3<T> xw = mp.o + mp.d;    // a point of the wall's rotation axis (lab)
+  const Vec3<T> xw = mesh_axis_point(mp);    // a point of the wall's rotation axis (lab)
   for (int k = 0; k < P.n; ++k) {
     const WallPatch<T> &q = P.p[k];
     const T an = norm(q.S);
@@ -114,9 +106,9 @@ POLYDEM_FN WallContacts<T> wall_patch_contacts(const WallPatches<T> &P, const Me
     g.M_B = make_vec3(T(0), T(0), T(0));
     g.normal = (T(1) / an) * g.S_A;    // from the particle into the wall
     C.key[k] = -matvec(mp.R, q.nseed);
-    C.kpoint[k] = xw + matvec(mp.R, q.p0 - mp.o);
+    C.kpoint[k] = lab_point(mp, xw, q.p0);
     const Vec3<T> cm = q.area > T(0) ? (T(1) / q.area) * q.ac : (T(1) / q.volume) * q.vc;
-    g.centroid = xw + matvec(mp.R, cm - mp.o);
+    g.centroid = lab_point(mp, xw, cm);
     g.gradient_damping = 0;
   }
   return C;
@@ -153,7 +145,7 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
   T newh[WALL_HIST_SIZE];
   for (int i = 0; i < WALL_HIST_SIZE; ++i) newh[i] = T(0);
   bool used[WALL_MAX_PATCH] = {false, false, false, false};
-  const Vec3<T> xw = mp.o + mp.d;    // a point of the wall's rotation axis (lab)
+  const Vec3<T> xw = mesh_axis_point(mp);    // a point of the wall's rotation axis (lab)
   ContactKinematics<T> kin;
   kin.xA = x;
   kin.xB = xw;
@@ -186,8 +178,7 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
       out.fresh |= 1 << k;
     // the mass the contact point sees
     const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
-    const T im = T(1) / m + rn.x * rn.x * Iinv.x + rn.y * rn.y * Iinv.y + rn.z * rn.z * Iinv.z;
-    kin.meff = T(1) / im;
+    kin.meff = T(1) / point_inverse_mass(T(1) / m, Iinv, rn);
     const ContactForce<T> cf = contact_step(g, law, kin, shear, CONTACT_HIST);
     T *h = newh + WALL_HIST * out.ncontact;
     h[0] = key.x;
@@ -223,7 +214,7 @@ template <typename T>
 POLYDEM_FN Vec3<T> wall_reaction_torque(const Vec3<T> &x, const WallForce<T> &wf,
                                         const MeshPose<T> &mp)
 {
-  return -(wf.tau + cross(x - (mp.o + mp.d), wf.f));
+  return -(wf.tau + cross(x - mesh_axis_point(mp), wf.f));
 }
 
 // The sides the contacts kept in hist claim (mesh frame; WallSides)
@@ -264,8 +255,8 @@ wall_particle(const ShapeView<T> &sv, const Pose<T> &lab, const MeshPose<T> &mp,
               WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P, WallNear<T> *near = nullptr)
 {
   Pose<T> pm;
-  pm.x = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
-  pm.q = qmul(qconj(mp.q), lab.q);
+  pm.x = mesh_point(mp, lab.x);
+  pm.q = mesh_orientation(mp, lab.q);
   pm.s = lab.s;
   const PosedShape<T> a = make_posed(sv, pm);
   const WallSides<T> sides = wall_kept_sides(hist, mp, both);

@@ -279,7 +279,7 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
 {
   WallContacts<T> C;
   C.n = P.n;
-  const Vec3<T> xw = mp.o + mp.d;
+  const Vec3<T> xw = mesh_axis_point(mp);
   for (int k = 0; k < P.n; ++k) {
     const WallPatch<T> &q = P.p[k];
     C.on[k] = q.depth > T(0);
@@ -290,10 +290,10 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
     g.S_A = matvec(mp.R, q.S);
     g.normal = (T(1) / norm(g.S_A)) * g.S_A;    // from the particle into the wall
     C.key[k] = -matvec(mp.R, q.nseed);
-    C.kpoint[k] = xw + matvec(mp.R, q.p0 - mp.o);
+    C.kpoint[k] = lab_point(mp, xw, q.p0);
     g.M_A = matvec(mp.R, q.M);
     g.M_B = make_vec3(T(0), T(0), T(0));
-    g.centroid = xw + matvec(mp.R, q.ac - mp.o);
+    g.centroid = lab_point(mp, xw, q.ac);
     g.gradient_damping = 0;
   }
   return C;
@@ -311,15 +311,12 @@ wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T>
                         WallPatches<T> &P)
 {
   WallEllipsoid<T> e;
-  e.c = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
-  e.R = quat_to_mat(qmul(qconj(mp.q), lab.q));
+  e.c = mesh_point(mp, lab.x);
+  e.R = quat_to_mat(mesh_orientation(mp, lab.q));
   e.ax = ax;
   const WallSides<T> sides = wall_kept_sides(hist, mp, both);
   wall_ellipsoid_patches(e, g, cosmax, P, &sides);
-  const T a2 = ax.x * ax.x, b2 = ax.y * ax.y, c2 = ax.z * ax.z;
-  const Vec3<T> Iinv = make_vec3(T(5) / (m * (b2 + c2)), T(5) / (m * (a2 + c2)),
-                                 T(5) / (m * (a2 + b2)));
-  return wall_contact_forces(wall_ellipsoid_contacts(P, mp), mp, law, m, Iinv,
+  return wall_contact_forces(wall_ellipsoid_contacts(P, mp), mp, law, m, ellipsoid_inverse_moments(m, ax),
                              quat_to_mat(lab.q), cosmax, lab.x, v, w, dt, hist, update);
 }
 

@@ -157,8 +157,8 @@ bool WallMesh::insertion_clear(const MeshPose<double> &mp, const InsertBody<doub
 {
   const auto g = grid_view();
   InsertBody<double> b = lab;    // into the mesh frame
-  b.x = mp.o + matTvec(mp.R, lab.x - mp.o - mp.d);
-  const Quat<double> qm = qmul(qconj(mp.q), q);
+  b.x = mesh_point(mp, lab.x);
+  const Quat<double> qm = mesh_orientation(mp, q);
   b.R = quat_to_mat(qm);
   struct Visit {
     const MeshGridView<double> *g;

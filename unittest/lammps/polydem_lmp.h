@@ -145,6 +145,31 @@ class Lmp {
   LAMMPS_NS::LAMMPS *lmp;
 };
 
+// A simple-cubic lattice (spacing 1, LJ units) of nx x ny x nz sites, half
+// cubes (edge 0.95: in-radius 0.475, circumradius 0.82), half dodecahedra
+// (edge 0.43: 0.48 / 0.60), jittered and randomly oriented: the commands from
+// the lattice to the shapes, inserted into `before` ... `after`.
+inline std::vector<std::string> cube_dode_lattice(std::vector<std::string> before, int nx,
+                                                  int ny, int nz,
+                                                  const std::vector<std::string> &after)
+{
+  const std::vector<std::string> lattice = {
+      "lattice sc 1.0",
+      "region box block 0 " + std::to_string(nx) + " 0 " + std::to_string(ny) + " 0 " +
+          std::to_string(nz),
+      "create_box 2 box",
+      "polyhedron_shape cube " + potentials() + "/cube.shape",
+      "polyhedron_shape dode " + potentials() + "/dodecahedron.shape",
+      "create_atoms 1 box",
+      "set type 1 type/fraction 2 0.5 8123",
+      "displace_atoms all random 0.04 0.04 0.04 4242 units box",
+      "polyhedron_set type 1 shape cube scale 0.95 density 1.0 quat/random 17",
+      "polyhedron_set type 2 shape dode scale 0.43 density 1.5 quat/random 18"};
+  before.insert(before.end(), lattice.begin(), lattice.end());
+  before.insert(before.end(), after.begin(), after.end());
+  return before;
+}
+
 }    // namespace polydem_test
 
 #endif

@@ -155,22 +155,17 @@ namespace {
 // sites), with friction, moving and spinning
 std::vector<std::string> dense(const std::string &newton)
 {
-  return {"units lj",
+  return polydem_test::cube_dode_lattice(
+      {
+          "units lj",
           "atom_style polyhedron",
           "atom_modify map array",
           "comm_modify vel yes",
           "newton " + newton,
           "boundary p p p",
-          "lattice sc 1.0",
-          "region box block 0 5 0 5 0 4",
-          "create_box 2 box",
-          "polyhedron_shape cube " + potentials() + "/cube.shape",
-          "polyhedron_shape dode " + potentials() + "/dodecahedron.shape",
-          "create_atoms 1 box",
-          "set type 1 type/fraction 2 0.5 8123",
-          "displace_atoms all random 0.04 0.04 0.04 4242 units box",
-          "polyhedron_set type 1 shape cube scale 0.95 density 1.0 quat/random 17",
-          "polyhedron_set type 2 shape dode scale 0.43 density 1.5 quat/random 18",
+      },
+      5, 5, 4,
+      {
           "polyhedron_set group all omega 3.0 -1.0 2.0",
           "velocity all create 2.0 5151 loop geom",
           "pair_style polyhedron overlap/warn 1.0",
@@ -183,7 +178,8 @@ std::vector<std::string> dense(const std::string &newton)
           "compute cs all contact/polyhedron",
           "thermo_style custom step pe c_cs[1] c_cs[3]",
           "thermo_modify norm no",
-          "thermo 10"};
+          "thermo 10",
+      });
 }
 
 struct Dense {
@@ -208,7 +204,8 @@ Dense run_dense(const std::vector<std::string> &extra, const std::string &newton
     for (int i = 0; i < a->nlocal; i++)
       mine.insert(mine.end(), {(double) a->tag[i], a->f[i][0], a->f[i][1], a->f[i][2]});
     const std::vector<double> all = allgather(mine);
-    for (size_t k = 0; k < all.size(); k += 4) d.f[(long) all[k]] = {all[k + 1], all[k + 2], all[k + 3]};
+    for (size_t k = 0; k < all.size(); k += 4)
+      d.f[(long) all[k]] = {all[k + 1], all[k + 2], all[k + 3]};
   }
   return d;
 }

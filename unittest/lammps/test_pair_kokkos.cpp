@@ -47,22 +47,17 @@ const std::vector<std::string> KK =
 // Contact time (printed by the pair style) about 0.02, dt = 1e-4.
 std::vector<std::string> setup()
 {
-  return {"units lj",
+  return polydem_test::cube_dode_lattice(
+      {
+          "units lj",
           "atom_style polyhedron",
           "atom_modify map array sort 50 0.0",
           "comm_modify vel yes",
           "newton off",
           "boundary p p p",
-          "lattice sc 1.0",
-          "region box block 0 8 0 8 0 6",
-          "create_box 2 box",
-          "polyhedron_shape cube " + potentials() + "/cube.shape",
-          "polyhedron_shape dode " + potentials() + "/dodecahedron.shape",
-          "create_atoms 1 box",
-          "set type 1 type/fraction 2 0.5 8123",
-          "displace_atoms all random 0.04 0.04 0.04 4242 units box",
-          "polyhedron_set type 1 shape cube scale 0.95 density 1.0 quat/random 17",
-          "polyhedron_set type 2 shape dode scale 0.43 density 1.5 quat/random 18",
+      },
+      8, 8, 6,
+      {
           "variable m0 atom id%4==0",
           "variable m1 atom id%4==1",
           "variable m2 atom id%4==2",
@@ -81,7 +76,8 @@ std::vector<std::string> setup()
           "fix 1 all nve/polyhedron",
           "timestep 1.0e-4",
           "thermo_style custom step pe ke press",
-          "thermo 50"};
+          "thermo 50",
+      });
 }
 
 // per atom, sorted by ID, gathered to every rank: id, x, v, f, torque
@@ -152,7 +148,7 @@ double peratom(const std::vector<double> &a, const std::vector<double> &b, int o
 double contacts(Lmp &l)
 {
   auto *p = dynamic_cast<LAMMPS_NS::PairPolyhedron *>(l.lmp->force->pair);
-  return p ? p->counters[LAMMPS_NS::PairPolyhedron::CNT_CONTACTS] : -1.0;
+  return p ? p->counters[polydem::PP_CONTACTS] : -1.0;
 }
 
 int me()
@@ -195,8 +191,8 @@ void compare(Lmp &plain, Lmp &kk, const char *when, bool positions)
   for (Lmp *l : {&plain, &kk}) {
     auto *p = dynamic_cast<LAMMPS_NS::PairPolyhedron *>(l->lmp->force->pair);
     ASSERT_NE(p, nullptr);
-    EXPECT_EQ(p->counters[LAMMPS_NS::PairPolyhedron::CNT_OVERFLOW], 0.0);
-    EXPECT_EQ(p->counters[LAMMPS_NS::PairPolyhedron::CNT_DEGENERATE], 0.0);
+    EXPECT_EQ(p->counters[polydem::PP_OVERFLOW], 0.0);
+    EXPECT_EQ(p->counters[polydem::PP_DEGENERATE], 0.0);
   }
 }
 

@@ -242,15 +242,7 @@ TEST(WallMesh, NearListsGiveTheSameForces)
   for (const std::string c : {"", "cache 3", "cache/skin 0.005", "cache 200 cache/skin 0.5"}) {
     const Out o = run(c);
     ASSERT_EQ(o.atoms.size(), ref.atoms.size());
-    double fmax = 0, df = 0, dx = 0;
-    for (auto &kv : ref.atoms) {
-      const auto &q = o.atoms.at(kv.first);
-      for (int m = 0; m < 6; m++) {
-        fmax = std::fmax(fmax, std::fabs(kv.second[m]));
-        df = std::fmax(df, std::fabs(kv.second[m] - q[m]));
-      }
-      for (int m = 6; m < 12; m++) dx = std::fmax(dx, std::fabs(kv.second[m] - q[m]));
-    }
+    const auto [fmax, df, dx] = record_diff(ref.atoms, o.atoms);
     std::printf("[ wall     ] near lists '%s': %.0f builds in 21,600 particle-steps, %.0f "
                 "overflows; max |d f,torque| %.3g of %.3g, max |d x,v| %.3g\n", c.c_str(),
                 o.builds, o.overflows, df, fmax, dx);

@@ -13,38 +13,10 @@ namespace wall_test {
 
 constexpr double EB = 0.03;    // box edge [m]
 
+// scale 3 mm, thrown down at 1.5 m/s, spinning at ~10 rad/s
 inline std::string ellipsoid_scene_data(const std::string &file, unsigned seed)
 {
-  int me;
-  MPI_Comm_rank(MPI_COMM_WORLD, &me);
-  if (me == 0) {
-    std::mt19937_64 rng(seed);
-    std::uniform_real_distribution<double> g(-1.0, 1.0);
-    std::ofstream o(file);
-    o.precision(17);
-    const int nx = 3, n = nx * nx * 2;
-    o << "wall ellipsoid scene\n\n" << n << " atoms\n1 atom types\n0 " << EB << " xlo xhi\n0 "
-      << EB << " ylo yhi\n0 " << EB << " zlo zhi\n\nAtoms # polyhedron\n\n";
-    int id = 0;
-    const double h = EB / nx;
-    for (int k = 0; k < 2; k++)
-      for (int j = 0; j < nx; j++)
-        for (int i = 0; i < nx; i++) {
-          double q[4], qn = 0;
-          for (double &c : q) c = g(rng), qn += c * c;
-          o << ++id << " 1 1 0.003 1500 " << (i + 0.5) * h << " " << (j + 0.5) * h << " "
-            << 0.0032 + k * 0.007;
-          for (double c : q) o << " " << c / std::sqrt(qn);
-          o << "\n";
-        }
-    o << "\nVelocities\n\n";
-    for (int i = 1; i <= n; i++)
-      o << i << " " << 3.0 * g(rng) << " " << 1.5 * g(rng) << " " << -1.5 << " "
-        << 1e-9 * g(rng) << " " << 1e-9 * g(rng) << " " << 1e-9 * g(rng)
-        << "\n";    // angmom: ~10 rad/s
-  }
-  MPI_Barrier(MPI_COMM_WORLD);
-  return file;
+  return layered_data(file, "wall ellipsoid scene", 3, EB, seed, 0.003, 0.0032, 0.007, -1.5, 1e-9);
 }
 
 // commands up to (not including) the wall fix and the run

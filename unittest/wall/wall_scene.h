@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -46,7 +47,13 @@ inline Tris closed_box(double B, int n)
   return out;
 }
 
-inline std::string scene_data(const std::string &file, int nx, double B, unsigned seed)
+// Rank 0 writes a data file: two layers (heights z0, z0 + dz) of nx x nx
+// particles of scale s and density 1500 in a box of edge B, randomly
+// oriented, thrown with velocity (3 g, 1.5 g, vz) and angular momentum L g
+// (g uniform in [-1, 1], from seed), so that atom IDs do not depend on the
+// rank count.
+inline std::string layered_data(const std::string &file, const char *title, int nx, double B,
+                                unsigned seed, double s, double z0, double dz, double vz, double L)
 {
   int me;
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
@@ -56,7 +63,7 @@ inline std::string scene_data(const std::string &file, int nx, double B, unsigne
     std::ofstream o(file);
     o.precision(17);
     const int n = nx * nx * 2;
-    o << "wall scene\n\n" << n << " atoms\n1 atom types\n0 " << B << " xlo xhi\n0 " << B
+    o << title << "\n\n" << n << " atoms\n1 atom types\n0 " << B << " xlo xhi\n0 " << B
       << " ylo yhi\n0 " << B << " zlo zhi\n\nAtoms # polyhedron\n\n";
     int id = 0;
     const double h = B / nx;
@@ -65,18 +72,24 @@ inline std::string scene_data(const std::string &file, int nx, double B, unsigne
         for (int i = 0; i < nx; i++) {
           double q[4], qn = 0;
           for (double &c : q) c = g(rng), qn += c * c;
-          o << ++id << " 1 1 0.004 1500 " << (i + 0.5) * h << " " << (j + 0.5) * h << " "
-            << 0.008 + k * 0.014;
+          o << ++id << " 1 1 " << s << " 1500 " << (i + 0.5) * h << " " << (j + 0.5) * h << " "
+            << z0 + k * dz;
           for (double c : q) o << " " << c / std::sqrt(qn);
           o << "\n";
         }
     o << "\nVelocities\n\n";
     for (int i = 1; i <= n; i++)
-      o << i << " " << 3.0 * g(rng) << " " << 1.5 * g(rng) << " " << -0.5 << " "
-        << 3e-7 * g(rng) << " " << 3e-7 * g(rng) << " " << 3e-7 * g(rng) << "\n";    // angmom, ~40 rad/s
+      o << i << " " << 3.0 * g(rng) << " " << 1.5 * g(rng) << " " << vz << " " << L * g(rng)
+        << " " << L * g(rng) << " " << L * g(rng) << "\n";
   }
   MPI_Barrier(MPI_COMM_WORLD);
   return file;
+}
+
+// dodecahedra of scale 4 mm, thrown down at 0.5 m/s, spinning at ~40 rad/s
+inline std::string scene_data(const std::string &file, int nx, double B, unsigned seed)
+{
+  return layered_data(file, "wall scene", nx, B, seed, 0.004, 0.008, 0.014, -0.5, 3e-7);
 }
 
 // commands up to (not including) the wall fix and the run
@@ -114,6 +127,26 @@ inline StateDiff state_diff(const std::vector<double> &a, const std::vector<doub
   for (size_t i = 0; i + 7 <= a.size() && i + 7 <= b.size(); i += 7) {
     for (int k = 1; k <= 3; k++) d.dx = std::max(d.dx, std::abs(a[i + k] - b[i + k]));
     for (int k = 4; k <= 6; k++) d.dv = std::max(d.dv, std::abs(a[i + k] - b[i + k]));
+  }
+  return d;
+}
+
+// two runs' per-atom records by atom ID (f, torque, x, v: 12 values each):
+// the largest |f, torque|, the largest |d f, torque| and |d x, v|
+struct RecordDiff {
+  double fmax = 0.0, df = 0.0, dx = 0.0;
+};
+inline RecordDiff record_diff(const std::map<long, std::vector<double>> &a,
+                              const std::map<long, std::vector<double>> &b)
+{
+  RecordDiff d;
+  for (auto &kv : a) {
+    const auto &q = b.at(kv.first);
+    for (int m = 0; m < 6; m++) {
+      d.fmax = std::fmax(d.fmax, std::fabs(kv.second[m]));
+      d.df = std::fmax(d.df, std::fabs(kv.second[m] - q[m]));
+    }
+    for (int m = 6; m < 12; m++) d.dx = std::fmax(d.dx, std::fabs(kv.second[m] - q[m]));
   }
   return d;
 }
