@@ -75,6 +75,37 @@ void expect_same_state(const std::map<long, Lmp::State> &a, const std::map<long,
   }
 }
 
+// a legacy VTK polydata file as dump polyhedron/vtk writes it: its point
+// count and points, its polygon count
+struct VtkFile {
+  bool ok = false;
+  long npoints = -1, npolys = -1;
+  std::vector<std::array<double, 3>> points;
+};
+
+VtkFile read_vtk(const std::string &path)
+{
+  VtkFile v;
+  std::ifstream in(path);
+  v.ok = in.good();
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string w;
+    ls >> w;
+    if (w == "POINTS") {
+      ls >> v.npoints;
+      for (long i = 0; i < v.npoints; i++) {
+        std::array<double, 3> p;
+        in >> p[0] >> p[1] >> p[2];
+        v.points.push_back(p);
+      }
+    } else if (w == "POLYGONS")
+      ls >> v.npolys;
+  }
+  return v;
+}
+
 }    // namespace
 
 // Free fall under fix gravity: velocity Verlet is exact for a constant force,
@@ -199,25 +230,10 @@ TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
   l.cmds({"dump d all polyhedron/vtk 10 " + vfile, "dump_modify d sort id", "run 10"});
   l.cmd("undump d");
   const std::string f10 = tmpfile("snap.10.vtk");
-  std::ifstream in(f10);
-  ASSERT_TRUE(in.good()) << f10;
-  std::string line;
-  long npoints = -1, npolys = -1;
-  std::vector<std::array<double, 3>> pts;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string w;
-    ls >> w;
-    if (w == "POINTS") {
-      ls >> npoints;
-      for (long i = 0; i < npoints; i++) {
-        std::array<double, 3> p;
-        in >> p[0] >> p[1] >> p[2];
-        pts.push_back(p);
-      }
-    } else if (w == "POLYGONS")
-      ls >> npolys;
-  }
+  const VtkFile vtk = read_vtk(f10);
+  ASSERT_TRUE(vtk.ok) << f10;
+  const long npoints = vtk.npoints, npolys = vtk.npolys;
+  const auto &pts = vtk.points;
   // 5 cubes (8 vertices, 6 faces) + 5 dodecahedra (20 vertices, 12 faces)
   EXPECT_EQ(npoints, 5 * 8 + 5 * 20);
   EXPECT_EQ(npolys, 5 * 6 + 5 * 12);
@@ -286,25 +302,10 @@ TEST(AtomStyle, DumpVTKDrawsEllipsoids)
           "dump d all polyhedron/vtk 1 " + vfile, "dump_modify d sort id", "run 0"});
   l.cmd("undump d");
   const std::string f0 = tmpfile("ell.0.vtk");
-  std::ifstream in(f0);
-  ASSERT_TRUE(in.good()) << f0;
-  std::string line;
-  long npoints = -1, npolys = -1;
-  std::vector<std::array<double, 3>> pts;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string w;
-    ls >> w;
-    if (w == "POINTS") {
-      ls >> npoints;
-      for (long i = 0; i < npoints; i++) {
-        std::array<double, 3> p;
-        in >> p[0] >> p[1] >> p[2];
-        pts.push_back(p);
-      }
-    } else if (w == "POLYGONS")
-      ls >> npolys;
-  }
+  const VtkFile vtk = read_vtk(f0);
+  ASSERT_TRUE(vtk.ok) << f0;
+  const long npoints = vtk.npoints, npolys = vtk.npolys;
+  const auto &pts = vtk.points;
   EXPECT_EQ(npoints, 2 * 114);
   EXPECT_EQ(npolys, 2 * 128);
   auto st = l.local_state();

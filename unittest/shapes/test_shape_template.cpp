@@ -441,58 +441,43 @@ TEST(ShapeTemplate, FileScaleAndOptionScale)
 TEST(ShapeTemplateErrors, BadFiles)
 {
   const std::string d = tmpdir() + "/";
-  std::string m;
-
-  m = load_error("missing.shape", "# no vertices\nvertices 8\n0 0 0\n1 0\n");
-  EXPECT_MSG(m, d + "missing.shape:4: expected 3 numbers, got 2");
-
-  m = load_error("extra.shape", "vertices 4\n0 0 0 0\n");
-  EXPECT_MSG(m, d + "extra.shape:2: expected 3 numbers, got 4");
-
-  m = load_error("word.shape", "vertices 4\n0 0 0\n1 x 0\n");
-  EXPECT_MSG(m, d + "word.shape:3: coordinate 'x' is not a number");
-
-  m = load_error("nan.shape", "vertices 4\n0 0 0\n1 0 0\n0 nan 1\n0 0 1\n");
-  EXPECT_MSG(m, d + "nan.shape:4: coordinate 'nan' is not finite");
-
-  m = load_error("inf.shape", "vertices 4\n0 0 0\n1 0 0\n0 1 0\n0 0 -inf\n");
-  EXPECT_MSG(m, d + "inf.shape:5: coordinate '-inf' is not finite");
-
-  m = load_error("three.shape", "# triangle\n\nvertices 3\n0 0 0\n1 0 0\n0 1 0\n");
-  EXPECT_MSG(m, d + "three.shape:3: a polyhedron needs at least 4 vertices, got 3");
-
-  m = load_error("flat.shape", "vertices 5\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.25 0\n");
-  EXPECT_MSG(m, d + "flat.shape:1: all 5 vertices are coplanar (zero volume)");
-
-  m = load_error("line.shape", "vertices 4\n0 0 0\n1 1 1\n2 2 2\n3 3 3\n");
-  EXPECT_MSG(m, d + "line.shape:1: all 4 vertices are collinear (zero volume)");
-
-  m = load_error("dup.shape", std::string("vertices 9\n") + CUBE8 + "1 0 0\n");
-  EXPECT_MSG(m, d + "dup.shape:10: vertex 8 duplicates vertex 1 (line 3)");
-
-  m = load_error("key.shape", std::string("vertexes 8\n") + CUBE8);
-  EXPECT_MSG(m, d + "key.shape:1: unknown keyword 'vertexes'");
-
-  m = load_error("count.shape", "vertices eight\n");
-  EXPECT_MSG(m, d + "count.shape:1: count 'eight' is not an integer");
-
-  m = load_error("eof.shape", "vertices 8\n0 0 0\n1 0 0\n");
-  EXPECT_MSG(m, d + "eof.shape:3: end of file after 2 of 8 vertex lines");
-
-  m = load_error("none.shape", "# nothing\nscale 2\n");
-  EXPECT_MSG(m, d + "none.shape:2: no 'vertices' section");
-
-  m = load_error("range.shape", std::string("vertices 8\n") + CUBE8 + "faces 1\n0 1 9\n");
-  EXPECT_MSG(m, d + "range.shape:11: vertex index 9 out of range 0..7");
-
-  m = load_error("badface.shape", std::string("vertices 8\n") + CUBE8 + "faces 1\n0 1\n");
-  EXPECT_MSG(m, d + "badface.shape:11: a face needs at least 3 vertex indices, got 2");
-
-  m = load_error("scale.shape", std::string("scale -1\nvertices 8\n") + CUBE8);
-  EXPECT_MSG(m, d + "scale.shape:1: scale must be positive, got -1");
-
-  m = load_error("twice.shape", std::string("vertices 8\n") + CUBE8 + "vertices 8\n" + CUBE8);
-  EXPECT_MSG(m, d + "twice.shape:10: second 'vertices' section (first at line 1)");
+  // file name, text, the message after "<dir>/<file>"
+  const struct {
+    const char *file;
+    std::string text, msg;
+  } cases[] = {
+      {"missing.shape", "# no vertices\nvertices 8\n0 0 0\n1 0\n", ":4: expected 3 numbers, got 2"},
+      {"extra.shape", "vertices 4\n0 0 0 0\n", ":2: expected 3 numbers, got 4"},
+      {"word.shape", "vertices 4\n0 0 0\n1 x 0\n", ":3: coordinate 'x' is not a number"},
+      {"nan.shape", "vertices 4\n0 0 0\n1 0 0\n0 nan 1\n0 0 1\n",
+       ":4: coordinate 'nan' is not finite"},
+      {"inf.shape", "vertices 4\n0 0 0\n1 0 0\n0 1 0\n0 0 -inf\n",
+       ":5: coordinate '-inf' is not finite"},
+      {"three.shape", "# triangle\n\nvertices 3\n0 0 0\n1 0 0\n0 1 0\n",
+       ":3: a polyhedron needs at least 4 vertices, got 3"},
+      {"flat.shape", "vertices 5\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0.5 0.25 0\n",
+       ":1: all 5 vertices are coplanar (zero volume)"},
+      {"line.shape", "vertices 4\n0 0 0\n1 1 1\n2 2 2\n3 3 3\n",
+       ":1: all 4 vertices are collinear (zero volume)"},
+      {"dup.shape", std::string("vertices 9\n") + CUBE8 + "1 0 0\n",
+       ":10: vertex 8 duplicates vertex 1 (line 3)"},
+      {"key.shape", std::string("vertexes 8\n") + CUBE8, ":1: unknown keyword 'vertexes'"},
+      {"count.shape", "vertices eight\n", ":1: count 'eight' is not an integer"},
+      {"eof.shape", "vertices 8\n0 0 0\n1 0 0\n", ":3: end of file after 2 of 8 vertex lines"},
+      {"none.shape", "# nothing\nscale 2\n", ":2: no 'vertices' section"},
+      {"range.shape", std::string("vertices 8\n") + CUBE8 + "faces 1\n0 1 9\n",
+       ":11: vertex index 9 out of range 0..7"},
+      {"badface.shape", std::string("vertices 8\n") + CUBE8 + "faces 1\n0 1\n",
+       ":11: a face needs at least 3 vertex indices, got 2"},
+      {"scale.shape", std::string("scale -1\nvertices 8\n") + CUBE8,
+       ":1: scale must be positive, got -1"},
+      {"twice.shape", std::string("vertices 8\n") + CUBE8 + "vertices 8\n" + CUBE8,
+       ":10: second 'vertices' section (first at line 1)"},
+      {"twice_faces.shape",
+       std::string("vertices 8\n") + CUBE8 + "faces 1\n0 1 2 3\nfaces 1\n0 1 2 3\n",
+       ":12: second 'faces' section (first at line 10)"},
+  };
+  for (const auto &c : cases) EXPECT_MSG(load_error(c.file, c.text), d + c.file + c.msg);
 
   std::string nofile = d + "does_not_exist.shape";
   try {
