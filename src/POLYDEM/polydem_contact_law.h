@@ -218,16 +218,7 @@ POLYDEM_FN ContactKinematics<T> make_kinematics(const Vec3<T> &xA, const Vec3<T>
                                                 const Vec3<T> &vA, const Vec3<T> &vB,
                                                 const Vec3<T> &wA, const Vec3<T> &wB, T meff, T dt)
 {
-  ContactKinematics<T> k;
-  k.xA = xA;
-  k.xB = xB;
-  k.vA = vA;
-  k.vB = vB;
-  k.wA = wA;
-  k.wB = wB;
-  k.meff = meff;
-  k.dt = dt;
-  return k;
+  return ContactKinematics<T>{xA, xB, vA, vB, wA, wB, meff, dt};    // in the members' order
 }
 
 constexpr int CONTACT_HIST = 5;    // s (3), k_old, phi
