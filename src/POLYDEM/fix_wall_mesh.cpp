@@ -37,7 +37,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
-    wall_mu(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
+    wall_mu(-1.0), wall_mur(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
     overlap_warn(0.05), elapsed(0.0), hist(nullptr),
     ellipsoids(0), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
     near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
@@ -164,8 +164,11 @@ void FixWallMesh::init()
   // the tangential ratios (pair_style ellipsoid); e and mu from either
   int dim = 0;
   double *E = nullptr, *nu = nullptr, **e = nullptr, **mu = nullptr, **kn = nullptr;
-  double *ktr = nullptr, *gtr = nullptr;
+  double *ktr = nullptr, *gtr = nullptr, **mur = nullptr, *rkr = nullptr, *reta = nullptr;
   if (force->pair) {
+    mur = (double **) force->pair->extract("rolling", dim);
+    rkr = (double *) force->pair->extract("rolling_kr", dim);
+    reta = (double *) force->pair->extract("rolling_eta", dim);
     E = (double *) force->pair->extract("youngs", dim);
     nu = (double *) force->pair->extract("poisson", dim);
     e = (double **) force->pair->extract("restitution", dim);
@@ -198,6 +201,8 @@ void FixWallMesh::init()
   laws.twist = twist;
   laws.kt_ratio = ellipsoids ? *ktr : 0.0;
   laws.gt_ratio = ellipsoids ? *gtr : 0.0;
+  if (rkr) laws.roll_kr = *rkr;
+  if (reta) laws.roll_eta = *reta;
   for (int t = 1; t <= nt; t++) {
     auto &L = law_entries[t];
     if (ellipsoids) {
@@ -210,6 +215,7 @@ void FixWallMesh::init()
     }
     const double et = wall_e > 0.0 ? wall_e : e[t][t];
     L.mu = wall_mu >= 0.0 ? wall_mu : mu[t][t];
+    L.mu_r = wall_mur >= 0.0 ? wall_mur : (mur ? mur[t][t] : 0.0);
     if (!(ellipsoids ? L.kn > 0.0 : L.E1 > 0.0) || !(et > 0.0))
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} {})",
                  t, t, t, ellipsoids ? "kn e mu" : "E nu e mu");
@@ -585,16 +591,24 @@ void FixWallMesh::unpack_restart(int nlocal, int nth)
   double **extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  // a file from a version with another history layout (7 values per
-  // contact before the two-sided walls) cannot be read as this one
-  if (static_cast<int>(extra[nlocal][m]) != NH + 1) {
+  // the layout before rolling resistance (4 + CONTACT_HIST values per
+  // patch) is read with the rolling torques zero; a file from a version
+  // with another layout (7 values per contact before the two-sided walls)
+  // cannot be read as this one
+  constexpr int OLD_PATCH = 4 + polydem::CONTACT_HIST;
+  constexpr int OLD_NH = polydem::WALL_MAX_PATCH * OLD_PATCH;
+  const int nread = static_cast<int>(extra[nlocal][m]) - 1;
+  if (nread != NH && nread != OLD_NH) {
     error->one(FLERR,
                "fix wall/mesh {}: the restart file keeps {} wall-history values per atom, "
                "this version {}: define the fix with another ID to start without history",
-               id, static_cast<int>(extra[nlocal][m]) - 1, NH);
+               id, nread, NH);
   }
   m++;
-  for (int k = 0; k < NH; k++) hist[nlocal][k] = extra[nlocal][m++];
+  const int per = nread == NH ? polydem::WALL_HIST : OLD_PATCH;
+  for (int k = 0; k < NH; k++) hist[nlocal][k] = 0.0;
+  for (int p = 0; p < polydem::WALL_MAX_PATCH; p++)
+    for (int k = 0; k < per; k++) hist[nlocal][p * polydem::WALL_HIST + k] = extra[nlocal][m++];
 }
 
 int FixWallMesh::size_restart(int /*nlocal*/)

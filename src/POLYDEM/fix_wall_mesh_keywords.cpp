@@ -118,6 +118,12 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
       if (!(wall_mu >= 0.0) || !std::isfinite(wall_mu))
         error->all(FLERR, "fix wall/mesh: friction must be >= 0, got '{}'", arg[iarg + 1]);
       iarg += 2;
+    } else if (kw == "rolling") {
+      need(iarg, 1, "mu_r");
+      wall_mur = num(iarg + 1);
+      if (!(wall_mur >= 0.0) || !std::isfinite(wall_mur))
+        error->all(FLERR, "fix wall/mesh: rolling must be >= 0, got '{}'", arg[iarg + 1]);
+      iarg += 2;
     } else if (kw == "core") {
       need(iarg, 1, "fraction");
       core = num(iarg + 1);

@@ -76,11 +76,13 @@ void PairEllipsoid::allocate()
       setflag[i][j] = 0;
       kn[i][j] = restitution[i][j] = friction[i][j] = 0.0;
     }
+  allocate_rolling();
 }
 
 /* ----------------------------------------------------------------------
    pair_style ellipsoid [overlap centre|chord] [damping reduced|contact] [overlap/warn f]
                         [tangential kt/kn gammat/gamman]
+                        [rolling/stiffness f] [rolling/damping eta]
 ------------------------------------------------------------------------- */
 
 void PairEllipsoid::settings(int narg, char **arg)
@@ -90,7 +92,10 @@ void PairEllipsoid::settings(int narg, char **arg)
   damping_mass = polydem::DAMPING_REDUCED;
   kt_ratio = 2.0 / 7.0;
   gt_ratio = 0.5;
+  roll_kr = polydem::RollingLaw<double>().kr;
+  roll_eta = polydem::RollingLaw<double>().eta;
   for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (settings_rolling(narg, arg, iarg)) continue;
     if (strcmp(arg[iarg], "overlap") == 0) {
       const std::string v = iarg + 1 < narg ? arg[iarg + 1] : "";
       if (v == "centre") overlap = polydem::OVERLAP_CENTRE;
@@ -125,15 +130,19 @@ void PairEllipsoid::settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J kn e [mu] : normal stiffness (force/length), restitution,
-   Coulomb friction (default 0: frictionless, the seed's model)
+   pair_coeff I J kn e [mu] [rolling mu_r] : normal stiffness (force/length),
+   restitution, Coulomb friction (default 0: frictionless, the seed's
+   model), rolling friction (default 0: none)
 ------------------------------------------------------------------------- */
 
-void PairEllipsoid::coeff(int narg, char **arg)
+void PairEllipsoid::coeff(int nargs, char **arg)
 {
-  if (narg != 4 && narg != 5)
-    error->all(FLERR, "pair_coeff ellipsoid: expected 'I J kn e [mu]', got {} values", narg);
   if (!allocated) allocate();
+  double mu_r = 0.0;
+  const int narg = coeff_rolling(nargs, arg, mu_r);
+  if (narg != 4 && narg != 5)
+    error->all(FLERR, "pair_coeff ellipsoid: expected 'I J kn e [mu] [rolling mu_r]', got {} "
+               "values", nargs);
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
@@ -152,6 +161,7 @@ void PairEllipsoid::coeff(int narg, char **arg)
       kn[i][j] = k;
       restitution[i][j] = e;
       friction[i][j] = mu;
+      rolling[i][j] = mu_r;
       setflag[i][j] = 1;
       count++;
     }
@@ -163,8 +173,9 @@ void PairEllipsoid::coeff(int narg, char **arg)
 void PairEllipsoid::init_style()
 {
   // friction: per-pair tangential history (kept once created, e.g. from a restart)
-  use_history = friction_used() || fix_history != nullptr;
+  use_history = friction_used() || rolling_used() || fix_history != nullptr;
   init_common(use_history);
+  choose_history_size();
   // mixed polyhedron-ellipsoid contacts are not supported
   int npoly = 0, first = -1;
   for (int i = 0; i < atom->nlocal; i++)
@@ -199,6 +210,9 @@ void PairEllipsoid::init_style()
   laws.overlap = overlap;
   laws.damping_mass = damping_mass;
   laws.overlap_warn = overlap_warn;
+  laws.roll_kr = roll_kr;
+  laws.roll_eta = roll_eta;
+  laws.nhist = nhistory;
 
   check_timestep();
 }
@@ -226,15 +240,18 @@ double PairEllipsoid::init_one(int i, int j)
     kn[i][j] = sqrt(kn[i][i] * kn[j][j]);
     restitution[i][j] = sqrt(restitution[i][i] * restitution[j][j]);
     friction[i][j] = sqrt(friction[i][i] * friction[j][j]);
+    rolling[i][j] = sqrt(rolling[i][i] * rolling[j][j]);
   }
   kn[j][i] = kn[i][j];
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
+  rolling[j][i] = rolling[i][j];
   // the law table's entries of the pair (friction only with a history)
   const int nt = atom->ntypes + 1;
   polydem::LawEntry<double> e = polydem::LawEntry<double>();
   e.kn = kn[i][j];
   e.mu = use_history ? friction[i][j] : 0.0;
+  e.mu_r = use_history ? rolling[i][j] : 0.0;
   e.damping = polydem::damping_law(restitution[i][j], 1);
   law_entries[i * nt + j] = law_entries[j * nt + i] = e;
   return size_cutoff();
@@ -284,7 +301,7 @@ void PairEllipsoid::compute(int eflag, int vflag)
     const int jnum = numneigh[i];
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      double *shear = use_history ? &firstshear[i][SIZE_HISTORY * jj] : nullptr;
+      double *shear = use_history ? &firstshear[i][nhistory * jj] : nullptr;
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
       const double radsum = radius[i] + radius[j];
       // a pair with a ghost j is seen on two ranks when newton_pair is off
@@ -292,7 +309,7 @@ void PairEllipsoid::compute(int eflag, int vflag)
       polydem::PairContactResult<double> c;
       c.contact = 0;
       if (delx * delx + dely * dely + delz * delz >= radsum * radsum)
-        polydem::history_release(shear, SIZE_HISTORY);
+        polydem::history_release(shear, nhistory);
       else
         c = polydem::ellipsoid_pair_contact(A, body(j), laws, update->dt, update_history, shear,
                                             to_j ? 1.0 : 0.5, local_counts);
@@ -349,6 +366,7 @@ void PairEllipsoid::coeff_fields(RestartFields &io)
         io(kn[i][j]);
         io(restitution[i][j]);
         io(friction[i][j]);
+        rolling_coeff_fields(io, i, j);
       }
     }
 }
@@ -359,10 +377,13 @@ void *PairEllipsoid::extract(const char *str, int &dim)
   if (strcmp(str, "kn") == 0) return (void *) kn;
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
   if (strcmp(str, "friction") == 0) return (void *) friction;
+  if (strcmp(str, "rolling") == 0) return (void *) rolling;
   dim = 1;
   if (strcmp(str, "counters") == 0) return (void *) counters;
   dim = 0;    // tangential k_t / k_n and gamma_t / gamma_n (fix wall/mesh)
   if (strcmp(str, "kt_ratio") == 0) return (void *) &kt_ratio;
   if (strcmp(str, "gt_ratio") == 0) return (void *) &gt_ratio;
+  if (strcmp(str, "rolling_kr") == 0) return (void *) &roll_kr;
+  if (strcmp(str, "rolling_eta") == 0) return (void *) &roll_eta;
   return nullptr;
 }

@@ -81,7 +81,7 @@ template <class DeviceType> struct EllContactFunctor : PolyBodyViews<DeviceType>
         Kokkos::atomic_increment(&npartner(i));
         if (j < nlocal) Kokkos::atomic_increment(&npartner(j));
       }
-      double *shear = use_history ? &firstshear(i, polydem::ELLIPSOID_HIST * jj) : nullptr;
+      double *shear = use_history ? &firstshear(i, laws.nhist * jj) : nullptr;
       const auto &x = this->x;
       const double delx = x(i, 0) - x(j, 0), dely = x(i, 1) - x(j, 1), delz = x(i, 2) - x(j, 2);
       const double radsum = radius(i) + radius(j);
@@ -89,7 +89,7 @@ template <class DeviceType> struct EllContactFunctor : PolyBodyViews<DeviceType>
       polydem::PairContactResult<double> c;
       c.contact = 0;
       if (delx * delx + dely * dely + delz * delz >= radsum * radsum)
-        polydem::history_release(shear, polydem::ELLIPSOID_HIST);
+        polydem::history_release(shear, laws.nhist);
       else
         c = polydem::ellipsoid_pair_contact(A, body(j), laws, dt, shearupdate != 0, shear,
                                             to_j ? 1.0 : 0.5, red.cnt);
@@ -125,7 +125,7 @@ template <class DeviceType> PairEllipsoidKokkos<DeviceType>::~PairEllipsoidKokko
 
 template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::init_style()
 {
-  avecKK = kk_init_before<DeviceType>(friction_used());
+  avecKK = kk_init_before<DeviceType>(friction_used() || rolling_used());
   PairEllipsoid::init_style();
   kk_init_after<DeviceType>();
   params_dirty = 1;

@@ -10,25 +10,34 @@
 #include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
+#include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
 #include "poly_roles.h"
 #include "poly_shape_library.h"
 #include "update.h"
 
+#include "polydem_contact_law.h"
 #include "polydem_history.h"
+#include "polydem_parse.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 
 using namespace LAMMPS_NS;
 
 // first value of the restart settings: the layout since the history
-// convention of polydem_contact_law.h (older files begin with overlap/warn > 0)
-static constexpr double RESTART_VERSION = -2.0;
+// convention of polydem_contact_law.h (older files begin with overlap/warn > 0);
+// -3 adds rolling resistance (files of -2 are read with none)
+static constexpr double RESTART_VERSION = -3.0;
+static constexpr double RESTART_VERSION_NO_ROLLING = -2.0;
 
 PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nhist, int ncnt) :
-    Pair(lmp), style_name(style), history_tag(tag), nhistory(nhist), ncount(ncnt), avec(nullptr),
-    fix_dummy(nullptr), fix_history(nullptr), history_id(0)
+    Pair(lmp), style_name(style), history_tag(tag), nhistory_base(nhist), nhistory(nhist),
+    nhistory_restart(0), restart_format(3), nhistory_fix(0), ncount(ncnt), rolling(nullptr), roll_kr(polydem::RollingLaw<double>().kr),
+    roll_eta(polydem::RollingLaw<double>().eta), avec(nullptr), fix_dummy(nullptr),
+    fix_history(nullptr), history_id(0)
 {
   if (ncount > MAXCOUNT) error->all(FLERR, "pair_style {}: too many counters", style_name);
   single_enable = 0;
@@ -50,7 +59,91 @@ PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nh
 PairPolydem::~PairPolydem()
 {
   if (copymode) return;
+  memory->destroy(rolling);
   modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
+}
+
+/* ----------------------------------------------------------------------
+   rolling resistance: coefficients, settings, history size, restart
+------------------------------------------------------------------------- */
+
+void PairPolydem::allocate_rolling()
+{
+  const int n = atom->ntypes;
+  memory->destroy(rolling);
+  memory->create(rolling, n + 1, n + 1, "pair:rolling");
+  for (int i = 0; i <= n; i++)
+    for (int j = 0; j <= n; j++) rolling[i][j] = 0.0;
+}
+
+int PairPolydem::coeff_rolling(int narg, char **arg, double &mu_r)
+{
+  mu_r = 0.0;
+  for (int k = 2; k < narg; k++)
+    if (strcmp(arg[k], "rolling") == 0) {
+      if (k + 2 != narg)
+        error->all(FLERR, "pair_coeff {}: 'rolling' takes one value, mu_r, and ends the line",
+                   style_name);
+      mu_r = polydem_parse::numeric(FLERR, arg[k + 1], lmp);
+      if (!(mu_r >= 0.0) || !std::isfinite(mu_r))
+        error->all(FLERR, "pair_coeff {}: rolling friction mu_r must be >= 0, got '{}'",
+                   style_name, arg[k + 1]);
+      return k;
+    }
+  return narg;
+}
+
+int PairPolydem::settings_rolling(int narg, char **arg, int iarg)
+{
+  const bool stiff = strcmp(arg[iarg], "rolling/stiffness") == 0;
+  if (!stiff && strcmp(arg[iarg], "rolling/damping") != 0) return 0;
+  if (iarg + 1 >= narg) error->all(FLERR, "pair_style {}: {} needs a value", style_name, arg[iarg]);
+  const double v = polydem_parse::numeric(FLERR, arg[iarg + 1], lmp);
+  if (!(stiff ? v > 0.0 : v >= 0.0) || !std::isfinite(v))
+    error->all(FLERR, "pair_style {}: {} must be {} 0, got '{}'", style_name, arg[iarg],
+               stiff ? ">" : ">=", arg[iarg + 1]);
+  (stiff ? roll_kr : roll_eta) = v;
+  return 1;
+}
+
+int PairPolydem::rolling_used() const
+{
+  if (!rolling) return 0;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = 1; j <= atom->ntypes; j++)
+      if (rolling[i][j] > 0.0) return 1;
+  return 0;
+}
+
+void PairPolydem::choose_history_size()
+{
+  nhistory = rolling_used() ? polydem::CONTACT_HIST_ROLL : nhistory_base;
+  const char *why = "rolling resistance (pair_coeff ... rolling mu_r) is on for some type pair "
+                    "in one and off for all in the other";
+  if (fix_history && nhistory_fix != nhistory)
+    error->all(FLERR, "pair_style {}: the contact history of the previous run keeps {} values "
+               "per pair, this run needs {}: {}; define pair_style again to start without "
+               "history", style_name, nhistory_fix, nhistory, why);
+  if (!fix_history && nhistory_restart > 0 && nhistory_restart != nhistory)
+    error->all(FLERR, "pair_style {}: the restart file's contact history keeps {} values per "
+               "pair, this run needs {}: {}", style_name, nhistory_restart, nhistory, why);
+}
+
+void PairPolydem::rolling_settings_fields(RestartFields &io)
+{
+  if (!io.has_rolling()) {
+    nhistory_restart = nhistory_base;
+    return;
+  }
+  io(roll_kr);
+  io(roll_eta);
+  io(nhistory);
+  nhistory_restart = nhistory;
+}
+
+void PairPolydem::rolling_coeff_fields(RestartFields &io, int i, int j)
+{
+  if (io.has_rolling()) io(rolling[i][j]);
 }
 
 std::string PairPolydem::history_fix_id() const
@@ -79,6 +172,7 @@ void PairPolydem::setup_history_fix()
     fix_history = polydem_history::create_history_fix(modify, history_fix_id(), dummy_fix_id(),
                                                       nhistory);
     fix_history->pair = this;
+    nhistory_fix = nhistory;
   }
   const int ifix = modify->find_fix(history_fix_id());
   if (ifix < 0) error->all(FLERR, "pair_style {}: history fix not found", style_name);
@@ -156,27 +250,31 @@ void PairPolydem::RestartFields::flag_as_double(int &v)
 void PairPolydem::write_restart_settings(FILE *fp)
 {
   double version = RESTART_VERSION;
-  RestartFields io(this, fp, false);
+  RestartFields io(this, fp, false, 3);
   io(version);
   settings_fields(io);
+  rolling_settings_fields(io);
 }
 
 void PairPolydem::read_restart_settings(FILE *fp)
 {
   double version = 0.0;
-  RestartFields io(this, fp, true);
-  io(version);
-  if (version != RESTART_VERSION)
+  RestartFields head(this, fp, true, 0);
+  head(version);
+  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_ROLLING)
     error->all(FLERR, "pair_style {}: this restart file was written by an older POLYDEM ({}); "
                "restart it with that version, or write a data file there and start from it",
                style_name, restart_version_text());
+  restart_format = version == RESTART_VERSION ? 3 : 2;
+  RestartFields io(this, fp, true, restart_format);
   settings_fields(io);
+  rolling_settings_fields(io);
 }
 
 void PairPolydem::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
-  RestartFields io(this, fp, false);
+  RestartFields io(this, fp, false, 3);
   coeff_fields(io);
 }
 
@@ -184,6 +282,6 @@ void PairPolydem::read_restart(FILE *fp)
 {
   read_restart_settings(fp);
   allocate();
-  RestartFields io(this, fp, true);
+  RestartFields io(this, fp, true, restart_format);
   coeff_fields(io);
 }

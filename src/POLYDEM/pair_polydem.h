@@ -38,15 +38,20 @@ class PairPolydem : public Pair {
   // then broadcast)
   class RestartFields {
    public:
-    RestartFields(PairPolydem *p, FILE *f, bool r) : pair(p), fp(f), reading(r) {}
+    RestartFields(PairPolydem *p, FILE *f, bool r, int v) : pair(p), fp(f), reading(r), version(v)
+    {
+    }
     void operator()(double &v);
     void operator()(int &v);
     void flag_as_double(int &v);    // a 0/1 flag stored as a double
+    // the file has the rolling-resistance fields (written since format 3)
+    bool has_rolling() const { return version >= 3; }
 
    private:
     PairPolydem *pair;
     FILE *fp;
     bool reading;
+    int version;
     // v written, or read on rank 0 and broadcast as `type`
     template <class V> void field(V &v, MPI_Datatype type);
   };
@@ -54,8 +59,16 @@ class PairPolydem : public Pair {
  protected:
   const std::string style_name;
   const std::string history_tag;
-  const int nhistory;
+  const int nhistory_base;    // values per pair without rolling resistance
+  int nhistory;               // values per pair (set in init_style: choose_history_size)
+  int nhistory_restart;       // the restart file's (0: none read)
+  int restart_format;         // the restart file's format (2, 3) while it is read
+  int nhistory_fix;           // values per pair of the history fix made (0: none yet)
   const int ncount;
+  // rolling resistance (polydem_contact_law.h RollingLaw): mu_r per type
+  // pair (pair_coeff ... rolling mu_r; 0: none), k_r factor, dashpot ratio
+  double **rolling;
+  double roll_kr, roll_eta;
   class PolyShapeLibrary *avec;
   class FixDummy *fix_dummy;
   class FixNeighHistory *fix_history;
@@ -67,6 +80,22 @@ class PairPolydem : public Pair {
   double reported[MAXCOUNT];
 
   virtual void allocate() = 0;
+  void allocate_rolling();
+  // pair_coeff's trailing 'rolling mu_r' (default 0): the count of the
+  // values before it
+  int coeff_rolling(int narg, char **arg, double &mu_r);
+  // pair_style's rolling/stiffness and rolling/damping keywords at arg[iarg]:
+  // the values taken (0: not one of them)
+  int settings_rolling(int narg, char **arg, int iarg);
+  // some type pair has rolling resistance (coefficients are global)
+  int rolling_used() const;
+  // nhistory for this run: nhistory_base, or CONTACT_HIST_ROLL with rolling
+  // resistance; an error where an existing history (this run's fix or the
+  // restart file's) has another size
+  void choose_history_size();
+  // restart: the rolling settings, and the pair's mu_r
+  void rolling_settings_fields(RestartFields &io);
+  void rolling_coeff_fields(RestartFields &io, int i, int j);
   // the style's settings and per-type coefficients, in file order
   virtual void settings_fields(RestartFields &) = 0;
   virtual void coeff_fields(RestartFields &) = 0;

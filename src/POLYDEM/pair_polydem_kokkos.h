@@ -98,10 +98,12 @@ template <class DeviceType> AtomVecPolyhedronKokkos *PairPolydem::kk_init_before
     error->all(FLERR,
                "pair_style {}/kk requires newton pair off: use '-pk kokkos newton off' or "
                "'package kokkos newton off' (default on GPUs)", style_name);
+  choose_history_size();
   if (history && fix_history == nullptr) {
     fix_history = polydem_kk::create_history_fix<DeviceType>(
         modify, history_fix_id(), dummy_fix_id(), nhistory, execution_space == Device);
     fix_history->pair = this;
+    nhistory_fix = nhistory;
   }
   return avecKK;
 }

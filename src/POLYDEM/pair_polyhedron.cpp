@@ -85,10 +85,12 @@ void PairPolyhedron::allocate()
       restitution[i][j] = friction[i][j] = 0.0;
     }
   }
+  allocate_rolling();
 }
 
 /* ----------------------------------------------------------------------
    pair_style polyhedron [overlap/warn f] [core f] [twist yes|no]
+                         [rolling/stiffness f] [rolling/damping eta]
 ------------------------------------------------------------------------- */
 
 void PairPolyhedron::settings(int narg, char **arg)
@@ -96,7 +98,10 @@ void PairPolyhedron::settings(int narg, char **arg)
   overlap_warn = 0.05;
   core = 1.0e-4;
   twist = 0;
+  roll_kr = polydem::RollingLaw<double>().kr;
+  roll_eta = polydem::RollingLaw<double>().eta;
   for (int iarg = 0; iarg < narg; iarg += 2) {
+    if (settings_rolling(narg, arg, iarg)) continue;
     if (strcmp(arg[iarg], "twist") == 0) {
       if (iarg + 1 >= narg || (strcmp(arg[iarg + 1], "yes") && strcmp(arg[iarg + 1], "no")))
         error->all(FLERR, "pair_style polyhedron: twist expects yes or no");
@@ -126,10 +131,14 @@ void PairPolyhedron::settings(int narg, char **arg)
    pair_coeff I J E nu e mu : material (E, nu) of the types in I and J,
                               restitution e and friction mu of the pairs
    pair_coeff I J e mu      : e and mu of unlike pairs (I != J) only
+   either ending in 'rolling mu_r': rolling resistance of the pairs
 ------------------------------------------------------------------------- */
 
-void PairPolyhedron::coeff(int narg, char **arg)
+void PairPolyhedron::coeff(int nargs, char **arg)
 {
+  if (!allocated) allocate();
+  double mu_r = 0.0;
+  const int narg = coeff_rolling(nargs, arg, mu_r);
   if (narg != 4 && narg != 6)
     error->all(FLERR, "pair_coeff polyhedron: expected 'I J E nu e mu' or 'I J e mu', got {} "
                "values", narg);
@@ -169,6 +178,7 @@ void PairPolyhedron::coeff(int narg, char **arg)
       }
       restitution[i][j] = e;
       friction[i][j] = mu;
+      rolling[i][j] = mu_r;
       pairset[i][j] = 1;
       setflag[i][j] = 1;
       count++;
@@ -206,7 +216,10 @@ void PairPolyhedron::init_style()
   laws.core = core;
   laws.twist = twist;
   laws.overlap_warn = overlap_warn;
-
+  laws.roll_kr = roll_kr;
+  laws.roll_eta = roll_eta;
+  choose_history_size();
+  laws.nhist = nhistory;
   setup_history_fix();
   check_timestep();
 }
@@ -225,9 +238,11 @@ double PairPolyhedron::init_one(int i, int j)
   if (!pairset[i][j]) {
     restitution[i][j] = sqrt(restitution[i][i] * restitution[j][j]);
     friction[i][j] = sqrt(friction[i][i] * friction[j][j]);
+    rolling[i][j] = sqrt(rolling[i][i] * rolling[j][j]);
   }
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
+  rolling[j][i] = rolling[i][j];
   // the law table's entries of the pair, damping in closed form (polydem_damping.h)
   const int nt = atom->ntypes + 1;
   const auto damp = polydem::damping_law(restitution[i][j], 1);
@@ -240,6 +255,7 @@ double PairPolyhedron::init_one(int i, int j)
     e.kn = 0.0;
     e.mu = friction[i][j];
     e.damping = damp;
+    e.mu_r = rolling[i][j];
   };
   fill(i, j);
   fill(j, i);
@@ -313,13 +329,13 @@ void PairPolyhedron::compute(int eflag, int vflag)
 
     for (int jj = 0; jj < jnum; jj++) {
       const int j = jlist[jj] & NEIGHMASK;
-      double *shear = &allshear[SIZE_HISTORY * jj];
+      double *shear = &allshear[nhistory * jj];
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1],
                    delz = x[i][2] - x[j][2];
       const double radsum = radius[i] + radius[j];
       if (delx * delx + dely * dely + delz * delz >= radsum * radsum) {
         touch[jj] = 0;
-        polydem::history_release(shear, SIZE_HISTORY);
+        polydem::history_release(shear, nhistory);
         continue;
       }
       const auto vj = avec->shape(pshape[j]).view();
@@ -415,6 +431,7 @@ void PairPolyhedron::coeff_fields(RestartFields &io)
       io(pairset[i][j]);
       io(restitution[i][j]);
       io(friction[i][j]);
+      rolling_coeff_fields(io, i, j);
     }
   }
 }
@@ -426,10 +443,14 @@ void *PairPolyhedron::extract(const char *str, int &dim)
   dim = 2;
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
   if (strcmp(str, "friction") == 0) return (void *) friction;
+  if (strcmp(str, "rolling") == 0) return (void *) rolling;
   dim = 1;
   if (strcmp(str, "youngs") == 0) return (void *) youngs;
   if (strcmp(str, "poisson") == 0) return (void *) poisson;
   if (strcmp(str, "counters") == 0) return (void *) counters;
+  dim = 0;    // rolling k_r factor and dashpot ratio (fix wall/mesh)
+  if (strcmp(str, "rolling_kr") == 0) return (void *) &roll_kr;
+  if (strcmp(str, "rolling_eta") == 0) return (void *) &roll_eta;
   return nullptr;
 }
 

@@ -37,7 +37,6 @@ using namespace LAMMPS_NS;
 
 namespace {
 
-constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // as the plain style
 
 template <class DeviceType> struct PolyKK {
   typedef ArrayTypes<DeviceType> AT;
@@ -64,7 +63,8 @@ template <class DeviceType> struct PolyCandidateFunctor {
   Kokkos::View<int *[2], DeviceType> pairs;
   Kokkos::View<int *, DeviceType> npartner;    // list entries per local atom (both sides)
   int nlocal, count_partners;
-  int fill;    // 0: count the candidates (and release the others' history), 1: list them
+  int fill;     // 0: count the candidates (and release the others' history), 1: list them
+  int nhist;    // history values per pair
 
   KOKKOS_INLINE_FUNCTION void operator()(const int ii) const
   {
@@ -85,7 +85,7 @@ template <class DeviceType> struct PolyCandidateFunctor {
       if (rsq >= radsum * radsum) {
         if (!fill) {
           firsttouch(i, jj) = 0;
-          for (int k = 0; k < SIZE_HISTORY; k++) firstshear(i, SIZE_HISTORY * jj + k) = 0.0;
+          for (int k = 0; k < nhist; k++) firstshear(i, nhist * jj + k) = 0.0;
         }
         continue;
       }
@@ -157,7 +157,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
     // the history is that of the lower-tag atom (polydem_contact_law.h);
     // FixNeighHistoryKokkos copies it to the partner unchanged
     const auto c = polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate != 0,
-                                                    &firstshear(i, SIZE_HISTORY * jj), ws, red.cnt);
+                                                    &firstshear(i, laws.nhist * jj), ws, red.cnt);
     firsttouch(i, jj) = c.contact;
     if (!c.contact) return;
     polydem_kk::scatter_contact(this->f, this->torque, i, j, newton_pair || j < nlocal, c.cf);
@@ -278,6 +278,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
   cnt.firstshear = fix_historyKK->k_firstvalue.template view<DeviceType>();
   cnt.count = d_count;
   cnt.offset = d_offset;
+  cnt.nhist = nhistory;
   const int nlocal = atom->nlocal;
   cnt.count_partners = neighbor->ago == 0;
   if (cnt.count_partners)

@@ -66,9 +66,28 @@
    torque of a uniform pressure on the disk, mu F_n r_eff, r_eff = 2/3 a
    (a square face: the exact lever is 0.3826 L, the disk's 0.3761 L).
 
-   History of one contact (CONTACT_HIST values): s (3), k_old (1), phi (1).
-   One sign convention everywhere: a pair's s is that of its lower-tag
-   particle relative to the other (contact_history_sign); k_old is a
+   Rolling resistance (pair_coeff ... rolling mu_r; fix wall/mesh rolling):
+   the elastic-plastic spring-dashpot (EPSD) model, Ai, Chen, Rotter and
+   Ooi, Powder Technol. 206 (2011) 269, model C (Eqs. 12-18). The relative
+   rolling spin w_r = (w_A - w_B) - ((w_A - w_B).n) n loads a torque spring
+   incrementally, M_k <- M_k - k_r w_r dt, k_r = k_rf k mu_r^2 R_r^2 (Eq. 13,
+   k_rf = 2.25; k the normal stiffness of the damping coordinate), with a
+   dashpot M_d = -C_r w_r, C_r = 2 eta_r sqrt(I_r k_r) (Eqs. 16-17),
+   I_r^{-1} = sum_k (7/5 m_k r_k^2)^{-1} (a sphere's moment about the contact
+   point; a wall has none). The torque M_k + M_d is capped at
+   M_m = mu_r R_r F_n (Eq. 14) and the spring then reset to the capped torque
+   less the dashpot's, as the tangential part does (and LAMMPS's rolling
+   sds): a fully mobilised contact resists with exactly M_m (model C), and
+   the dashpot cannot exceed the limit while the spring loads. Rolling radius R_r = r_A r_B / (r_A + r_B), r_k
+   the distance from body k's centre to the contact point (on a wall
+   R_r = r_A): the radii for spheres. M_k is kept in the tangent plane with
+   its length, like s. The torque M_k + M_d acts on A, its opposite on B;
+   the spring stores |M_k|^2 / (2 k_r) (counted with spring_energy).
+
+   History of one contact (CONTACT_HIST values, CONTACT_HIST_ROLL with rolling):
+   s (3), k_old (1), phi (1), M_k (3).
+   One sign convention everywhere: a pair's s and M_k are those of its
+   lower-tag particle relative to the other (contact_history_sign); k_old is a
    magnitude, phi the same seen from either particle. Walls keep theirs per particle.
 ------------------------------------------------------------------------- */
 
@@ -197,10 +216,18 @@ template <typename T> struct TangentialLaw {
   int spring_energy; // 1/2 k_t |s|^2 counted in the contact energy
 };
 
+// rolling resistance (EPSD, Ai et al. 2011); mu_r = 0: none
+template <typename T> struct RollingLaw {
+  T mu_r = T(0);    // rolling friction coefficient (M_m = mu_r R_r F_n)
+  T kr = T(2.25);   // k_r = kr k mu_r^2 R_r^2 (Ai et al. Eq. 13)
+  T eta = T(0.3);   // dashpot C_r = 2 eta sqrt(I_r k_r) (Eq. 17)
+};
+
 template <typename T> struct ContactLaw {
   NormalLaw<T> normal;
   DampingLaw<T> damping;
   TangentialLaw<T> tangential;
+  RollingLaw<T> rolling;
 };
 
 // ---------------------------------------------------------------------------
@@ -211,18 +238,21 @@ template <typename T> struct ContactKinematics {
   Vec3<T> vA, vB, wA, wB;
   T meff;            // mass the contact sees (reduced mass, or contact-point mass)
   T dt;              // time step; 0: no increment of the history (setup)
+  T mA = T(0), mB = T(0);    // the bodies' masses (rolling); mB = 0: B is a wall
 };
 
 template <typename T>
 POLYDEM_FN ContactKinematics<T> make_kinematics(const Vec3<T> &xA, const Vec3<T> &xB,
                                                 const Vec3<T> &vA, const Vec3<T> &vB,
-                                                const Vec3<T> &wA, const Vec3<T> &wB, T meff, T dt)
+                                                const Vec3<T> &wA, const Vec3<T> &wB, T meff, T dt,
+                                                T mA = T(0), T mB = T(0))
 {
-  return ContactKinematics<T>{xA, xB, vA, vB, wA, wB, meff, dt};    // in the members' order
+  return ContactKinematics<T>{xA, xB, vA, vB, wA, wB, meff, dt, mA, mB};    // in the members' order
 }
 
-constexpr int CONTACT_HIST = 5;    // s (3), k_old, phi
-constexpr int HIST_K = 3, HIST_TWIST = 4;
+constexpr int CONTACT_HIST = 5;         // s (3), k_old, phi
+constexpr int CONTACT_HIST_ROLL = 8;    // + M_k (3) of rolling resistance
+constexpr int HIST_K = 3, HIST_TWIST = 4, HIST_ROLL = 5;
 
 template <typename T> struct ContactForce {
   Vec3<T> F_A;      // force on A (B gets -F_A)
@@ -235,8 +265,8 @@ template <typename T> struct ContactForce {
 };
 
 // a pair's history is that of its lower-tag particle relative to the other:
-// s changes sign with the order; k_old and phi do not (phi is the twist of
-// A relative to B about n, and swapping A and B negates both)
+// s and M_k change sign with the order; k_old and phi do not (phi is the
+// twist of A relative to B about n, and swapping A and B negates both)
 POLYDEM_FN double contact_history_sign(long tag_i, long tag_j)
 {
   return tag_i < tag_j ? 1.0 : -1.0;
@@ -244,6 +274,7 @@ POLYDEM_FN double contact_history_sign(long tag_i, long tag_j)
 template <typename T> POLYDEM_FN void history_orient(T *h, int n, T sign)
 {
   for (int k = 0; k < n && k < 3; ++k) h[k] *= sign;
+  for (int k = HIST_ROLL; k < n && k < HIST_ROLL + 3; ++k) h[k] *= sign;
 }
 
 // velocity of A's material point at the contact point relative to B's
@@ -264,9 +295,52 @@ POLYDEM_FN T contact_rate(const ContactGeometry<T> &g, const ContactKinematics<T
   return dot(contact_relative_velocity(g, kin), g.normal);
 }
 
+// Rolling resistance of one contact (EPSD, see above): the torque on A
+// (B gets its opposite) from the spring M_k in hist[0..2], updated in place;
+// fn the normal force, k the normal stiffness; energy += the spring's
+// (spring_energy).
+template <typename T>
+POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<T> &rl,
+                                  const ContactKinematics<T> &kin, T fn, T k, int spring_energy,
+                                  T *hist, T &energy)
+{
+  const Vec3<T> n = g.normal;
+  const T rA = norm(g.centroid - kin.xA), rB = norm(g.centroid - kin.xB);
+  const T Rr = kin.mB > T(0) ? rA * rB / (rA + rB) : rA;
+  const T kr = rl.kr * k * rl.mu_r * rl.mu_r * Rr * Rr;
+  // M_k in the current tangent plane, its length kept
+  Vec3<T> M = make_vec3(hist[0], hist[1], hist[2]);
+  const T m0 = norm(M);
+  M -= dot(M, n) * n;
+  const T m1 = norm(M);
+  if (m1 > T(0)) M = (m0 / m1) * M;
+  const Vec3<T> dw = kin.wA - kin.wB;
+  const Vec3<T> wr = dw - dot(dw, n) * n;
+  M -= (kr * kin.dt) * wr;
+  T Cr = T(0);
+  if (kin.mA > T(0) && rA > T(0)) {
+    T iIr = T(5) / (T(7) * kin.mA * rA * rA);
+    if (kin.mB > T(0) && rB > T(0)) iIr += T(5) / (T(7) * kin.mB * rB * rB);
+    Cr = T(2) * rl.eta * sqrt(kr / iIr);
+  }
+  const Vec3<T> Md = (-Cr) * wr;
+  Vec3<T> Mt = M + Md;
+  const T mmax = rl.mu_r * Rr * (fn > T(0) ? fn : T(0));
+  const T mt = norm(Mt);
+  if (mt > mmax) {    // fully mobilised: M_m, the spring reset to it less the dashpot
+    Mt = (mt > T(0) ? mmax / mt : T(0)) * Mt;
+    M = Mt - Md;
+  }
+  hist[0] = M.x;
+  hist[1] = M.y;
+  hist[2] = M.z;
+  if (spring_energy && kr > T(0)) energy += T(0.5) * norm2(M) / kr;
+  return Mt;
+}
+
 // Forces of one contact. hist: the contact's history, nhist values in use
-// (3: s only; 4: + k_old; 5: + phi), updated in place (the caller keeps it
-// or not, e.g. at setup).
+// (3: s only; 4: + k_old; 5: + phi; 8: + M_k of rolling), updated in place
+// (the caller keeps it or not, e.g. at setup).
 template <typename T>
 POLYDEM_FORCE_FN ContactForce<T> contact_step(const ContactGeometry<T> &g,
                                               const ContactLaw<T> &law,
@@ -304,9 +378,20 @@ POLYDEM_FORCE_FN ContactForce<T> contact_step(const ContactGeometry<T> &g,
   }
   out.ft = T(0);
 
+  // rolling resistance (EPSD)
+  if (nhist >= HIST_ROLL + 3) {
+    if (law.rolling.mu_r > T(0)) {
+      const Vec3<T> Mr = rolling_torque(g, law.rolling, kin, out.fn, nv.k,
+                                        law.tangential.spring_energy, hist + HIST_ROLL, out.energy);
+      out.tau_A += Mr;
+      out.tau_B -= Mr;
+    } else
+      for (int k = HIST_ROLL; k < HIST_ROLL + 3; ++k) hist[k] = T(0);
+  }
+
   const TangentialLaw<T> &tl = law.tangential;
   if (!(tl.mu > T(0))) {
-    for (int k = 0; k < nhist; ++k) hist[k] = T(0);
+    for (int k = 0; k < nhist && k < HIST_ROLL; ++k) hist[k] = T(0);
     return out;
   }
 
@@ -374,7 +459,7 @@ POLYDEM_FN ContactForce<T> pair_contact_step(const ContactGeometry<T> &g, const 
                                              const ContactKinematics<T> &kin, T *stored, int n,
                                              T sign, bool keep)
 {
-  T h[CONTACT_HIST];
+  T h[CONTACT_HIST_ROLL];
   for (int k = 0; k < n; ++k) h[k] = stored ? stored[k] : T(0);
   history_orient(h, n, sign);
   const ContactForce<T> cf = contact_step(g, law, kin, h, n);

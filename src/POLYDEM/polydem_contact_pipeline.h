@@ -125,7 +125,7 @@ template <typename T> struct PolyhedronBody : BodyMotion<T> {
 };
 
 
-// One polyhedron pair (A = the list's i): hist = its CONTACT_HIST values in
+// One polyhedron pair (A = the list's i): hist = its tab.nhist values in
 // the pair convention (contact_history_sign), advanced and kept if update
 // (not at setup, where dt does not increment it); ws: the overlap workspace;
 // count[PP_*] incremented.
@@ -139,7 +139,7 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   r.contact = 0;
   const auto g = gjk_intersect(A.shape, B.shape);
   if (g.status == STATUS_SEPARATED) {
-    history_release(hist, CONTACT_HIST);
+    history_release(hist, tab.nhist);
     return r;
   }
   if (g.status != STATUS_OK) count[PP_NOCONV] += C(1);
@@ -149,7 +149,7 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
       count[PP_OVERFLOW] += C(1);
     else if (ov.status == STATUS_DEGENERATE)
       count[PP_DEGENERATE] += C(1);
-    history_release(hist, CONTACT_HIST);
+    history_release(hist, tab.nhist);
     return r;
   }
   r.contact = 1;
@@ -161,9 +161,10 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
 
   const ContactLaw<T> law = polyhedron_pair_law(tab, A.type, B.type, Vi, Vj);
   const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
-                                                   A.m * B.m / (A.m + B.m), update ? dt : T(0));
+                                                   A.m * B.m / (A.m + B.m), update ? dt : T(0),
+                                                   A.m, B.m);
   r.geo = contact_geometry<T>(ov);
-  r.cf = pair_contact_step(r.geo, law, kin, hist, CONTACT_HIST,
+  r.cf = pair_contact_step(r.geo, law, kin, hist, tab.nhist,
                            T(contact_history_sign(A.tag, B.tag)), update);
   return r;
 }
@@ -201,9 +202,10 @@ POLYDEM_FN EllipsoidBody<T> gather_ellipsoid_body(const Atoms &atoms, int k, con
 }
 
 constexpr int ELLIPSOID_HIST = 3;    // tangential displacement s (polydem_contact_law.h)
+// (CONTACT_HIST_ROLL with rolling resistance: slots 3 and 4 unused)
 
 
-// One ellipsoid pair: hist = its ELLIPSOID_HIST values in the pair
+// One ellipsoid pair: hist = its tab.nhist values in the pair
 // convention, or null (frictionless: none kept); share: the part of the pair
 // this call counts in the contact statistics (1/2 for a pair seen on two
 // ranks); count[EP_*] incremented.
@@ -218,7 +220,7 @@ ellipsoid_pair_contact(const EllipsoidBody<T> &A, const EllipsoidBody<T> &B, con
   if (c.status != STATUS_OK) {
     if (c.status != STATUS_SEPARATED)
       count[c.status == STATUS_NO_CONVERGENCE ? EP_NOCONV : EP_DEGENERATE] += C(1);
-    history_release(hist, ELLIPSOID_HIST);
+    history_release(hist, tab.nhist);
     return r;
   }
   r.contact = 1;
@@ -233,10 +235,10 @@ ellipsoid_pair_contact(const EllipsoidBody<T> &A, const EllipsoidBody<T> &B, con
                       tab.damping_mass == DAMPING_CONTACT
                           ? ellipsoid_contact_mass(c, tab.overlap, A.pose, B.pose, A.m, B.m)
                           : A.m * B.m / (A.m + B.m),
-                      update ? dt : T(0));
+                      update ? dt : T(0), A.m, B.m);
   r.geo = ellipsoid_geometry(c, tab.overlap, A.pose.x, B.pose.x);
   const ContactLaw<T> law = ellipsoid_pair_law(tab, A.type, B.type);
-  r.cf = pair_contact_step(r.geo, law, kin, hist, ELLIPSOID_HIST,
+  r.cf = pair_contact_step(r.geo, law, kin, hist, tab.nhist,
                            T(contact_history_sign(A.tag, B.tag)), update);
   if (r.geo.volume > tab.overlap_warn * amin) count[EP_BIGOVERLAP] += C(1);
   if (r.geo.volume < r.cf.rate * dt) count[EP_COLLISIONS] += share;

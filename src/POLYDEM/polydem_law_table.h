@@ -25,12 +25,18 @@ template <typename T> struct LawEntry {
   T kn;                     // linear: normal stiffness k_n [force/length]
   T mu;                     // Coulomb friction (0: frictionless, no history kept)
   DampingLaw<T> damping;    // restitution as a damping law (damping_law of e, host)
+  T mu_r;                   // rolling friction (0: no rolling resistance)
 };
 
 template <typename T> struct LawTable {
   const LawEntry<T> *entry;    // pairs: (ntypes+1)^2, [i (ntypes+1) + j]; walls: ntypes+1, [t]
   int ntypes;
   int nentry;    // entries in entry
+  // values kept per pair contact (CONTACT_HIST, ELLIPSOID_HIST, or
+  // CONTACT_HIST_ROLL when a type pair has rolling resistance)
+  int nhist;
+  // rolling resistance (RollingLaw): k_r factor and dashpot ratio eta_r
+  T roll_kr, roll_eta;
   // Feng (polyhedra): polynomial core V0 = core x smaller volume; twisting friction
   T core;
   int twist;
@@ -61,7 +67,21 @@ template <typename T> inline LawTable<T> law_table(const LawEntry<T> *entry, int
   t.overlap = OVERLAP_CENTRE;
   t.damping_mass = DAMPING_REDUCED;
   t.overlap_warn = T(1);
+  t.nhist = CONTACT_HIST;
+  const RollingLaw<T> r;
+  t.roll_kr = r.kr;
+  t.roll_eta = r.eta;
   return t;
+}
+
+// the rolling part of an entry's law
+template <typename T>
+POLYDEM_FN ContactLaw<T> with_rolling(ContactLaw<T> L, const LawTable<T> &tab, const LawEntry<T> &e)
+{
+  L.rolling.mu_r = e.mu_r;
+  L.rolling.kr = tab.roll_kr;
+  L.rolling.eta = tab.roll_eta;
+  return L;
 }
 
 // Feng law of polyhedra of types i, j and (scaled) volumes Vi, Vj (Eqs. 13, 19, 20)
@@ -69,7 +89,8 @@ template <typename T>
 POLYDEM_FN ContactLaw<T> polyhedron_pair_law(const LawTable<T> &tab, int i, int j, T Vi, T Vj)
 {
   const LawEntry<T> &e = tab.pair(i, j);
-  return feng_law(e.E1, e.nu1, Vi, e.E2, e.nu2, Vj, e.damping, e.mu, tab.core, tab.twist);
+  return with_rolling(
+      feng_law(e.E1, e.nu1, Vi, e.E2, e.nu2, Vj, e.damping, e.mu, tab.core, tab.twist), tab, e);
 }
 
 // linear law of ellipsoids of types i, j (ellipsoid seed Eqs. 23-24)
@@ -77,7 +98,7 @@ template <typename T>
 POLYDEM_FN ContactLaw<T> ellipsoid_pair_law(const LawTable<T> &tab, int i, int j)
 {
   const LawEntry<T> &e = tab.pair(i, j);
-  return ellipsoid_law(e.kn, e.damping, e.mu, tab.kt_ratio, tab.gt_ratio);
+  return with_rolling(ellipsoid_law(e.kn, e.damping, e.mu, tab.kt_ratio, tab.gt_ratio), tab, e);
 }
 
 // Wall law of a particle (volume V, material E, nu) on the wall (wE, wnu):
@@ -96,12 +117,13 @@ template <typename T>
 POLYDEM_FN ContactLaw<T> wall_polyhedron_law(const LawTable<T> &tab, int t, T V)
 {
   const LawEntry<T> &e = tab.wall(t);
-  return wall_law(e.E1, e.nu1, e.E2, e.nu2, V, e.damping, e.mu, tab.core, tab.twist);
+  return with_rolling(wall_law(e.E1, e.nu1, e.E2, e.nu2, V, e.damping, e.mu, tab.core, tab.twist),
+                      tab, e);
 }
 template <typename T> POLYDEM_FN ContactLaw<T> wall_ellipsoid_law(const LawTable<T> &tab, int t)
 {
   const LawEntry<T> &e = tab.wall(t);
-  return ellipsoid_law(e.kn, e.damping, e.mu, tab.kt_ratio, tab.gt_ratio);
+  return with_rolling(ellipsoid_law(e.kn, e.damping, e.mu, tab.kt_ratio, tab.gt_ratio), tab, e);
 }
 
 }    // namespace polydem

@@ -154,6 +154,8 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
   kin.wA = w;
   kin.wB = mp.w;
   kin.dt = dt;
+  kin.mA = m;
+  kin.mB = T(0);    // the wall: no rolling inertia, R_r = r_A
   for (int k = 0; k < C.n; ++k) {
     if (!C.on[k]) continue;
     const ContactGeometry<T> &g = C.g[k];
@@ -169,23 +171,23 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
         best = s;
       }
     }
-    T shear[CONTACT_HIST];
-    for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = T(0);
+    T shear[CONTACT_HIST_ROLL];
+    for (int i = 0; i < CONTACT_HIST_ROLL; ++i) shear[i] = T(0);
     if (best >= 0) {
       used[best] = true;
-      for (int i = 0; i < CONTACT_HIST; ++i) shear[i] = hist[WALL_HIST * best + 4 + i];
+      for (int i = 0; i < CONTACT_HIST_ROLL; ++i) shear[i] = hist[WALL_HIST * best + 4 + i];
     } else
       out.fresh |= 1 << k;
     // the mass the contact point sees
     const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
     kin.meff = T(1) / point_inverse_mass(T(1) / m, Iinv, rn);
-    const ContactForce<T> cf = contact_step(g, law, kin, shear, CONTACT_HIST);
+    const ContactForce<T> cf = contact_step(g, law, kin, shear, CONTACT_HIST_ROLL);
     T *h = newh + WALL_HIST * out.ncontact;
     h[0] = key.x;
     h[1] = key.y;
     h[2] = key.z;
     h[3] = dot(key, C.kpoint[k] - x);
-    for (int i = 0; i < CONTACT_HIST; ++i) h[4 + i] = shear[i];
+    for (int i = 0; i < CONTACT_HIST_ROLL; ++i) h[4 + i] = shear[i];
     out.f += cf.F_A;
     out.fpatch[k] = cf.F_A;
     out.tau += cf.tau_A;

@@ -19,8 +19,9 @@
 
 namespace polydem {
 
-// per patch: normal (3), distance from the centroid to its plane (1), shear history
-constexpr int WALL_HIST = 4 + CONTACT_HIST;
+// per patch: normal (3), distance from the centroid to its plane (1), the
+// contact's history (s, k_old, phi, rolling M_k: polydem_contact_law.h)
+constexpr int WALL_HIST = 4 + CONTACT_HIST_ROLL;
 constexpr int WALL_HIST_SIZE = WALL_MAX_PATCH * WALL_HIST;
 constexpr int WALL_MAX_CAND = 1024;    // candidate triangles kept per particle (more: clipped at once)
 

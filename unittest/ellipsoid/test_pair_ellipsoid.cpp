@@ -319,7 +319,7 @@ TEST(PairEllipsoid, BadInput)
             std::string::npos);
   EXPECT_NE(l.error_of("pair_coeff * * -1 0.5").find("stiffness kn must be > 0"),
             std::string::npos);
-  EXPECT_NE(l.error_of("pair_coeff * * 1e6").find("expected 'I J kn e [mu]'"), std::string::npos);
+  EXPECT_NE(l.error_of("pair_coeff * * 1e6").find("expected 'I J kn e [mu] [rolling mu_r]'"), std::string::npos);
   EXPECT_NE(l.error_of("pair_coeff * * 1e6 0.9 -0.1").find("friction mu must be >= 0"),
             std::string::npos);
   EXPECT_NE(l.error_of("pair_style ellipsoid tangential 0 0.5").find("tangential kt/kn must be > 0"),

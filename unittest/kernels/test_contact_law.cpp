@@ -3,7 +3,9 @@
 // the restitution of a flat contact (Feng and linear laws), the Coulomb cap,
 // the incremental tangential stiffness on area growth and shrinkage, the
 // twisting part (stiffness and Coulomb torque of the disk of the contact
-// area), and the history sign convention (swapping A and B).
+// area), the rolling resistance (EPSD, Ai et al. 2011: spring, cap,
+// dashpot, and a sphere rolling to rest on a flat against the closed form),
+// and the history sign convention (swapping A and B).
 #include "polydem_contact_law.h"
 #include "polydem_damping.h"
 #include "polydem_ellipsoid_force.h"
@@ -21,6 +23,7 @@ using polydem::Vec3;
 namespace {
 
 const double PI = 3.14159265358979323846;
+const int NR = polydem::CONTACT_HIST_ROLL;    // history values with rolling resistance
 
 // a face contact of area A along +x (A towards B), overlap volume V
 ContactGeometry<double> face(double V, double A, const Vec3<double> &c)
@@ -218,7 +221,8 @@ TEST(ContactLaw, TwistingStiffnessAndCoulombTorque)
 // by tags: opposite forces, the same stored history
 TEST(ContactLaw, HistorySignConventionIsSymmetric)
 {
-  const auto L = feng(0.5, 0.3, 0, 1);
+  auto L = feng(0.5, 0.3, 0, 1);
+  L.rolling.mu_r = 0.05;
   const double A = 1e-4;
   ContactGeometry<double> g = face(1e-7, A, make_vec3(0.5, 0.1, 0.0));
   g.M_A = make_vec3(0.0, 0.0, 1e-6);
@@ -231,27 +235,210 @@ TEST(ContactLaw, HistorySignConventionIsSymmetric)
   ContactKinematics<double> k = still(0.01, 1e-6);
   k.vA = make_vec3(0.1, 0.3, -0.2);
   k.wA = make_vec3(3.0, 1.0, 0.0);
+  k.mA = 0.01;
+  k.mB = 0.02;
   ContactKinematics<double> kr = k;
+  kr.mA = k.mB;
+  kr.mB = k.mA;
   kr.xA = k.xB;
   kr.xB = k.xA;
   kr.vA = k.vB;
   kr.vB = k.vA;
   kr.wA = k.wB;
   kr.wB = k.wA;
-  double stored[polydem::CONTACT_HIST] = {0, 2e-9, -1e-9, L.tangential.Kt * A, 1e-7};
-  double h1[polydem::CONTACT_HIST], h2[polydem::CONTACT_HIST];
-  for (int i = 0; i < polydem::CONTACT_HIST; i++) h1[i] = h2[i] = stored[i];
+  double stored[NR] = {0, 2e-9, -1e-9, L.tangential.Kt * A, 1e-7, 0, 3e-9, -2e-9};
+  double h1[NR], h2[NR];
+  for (int i = 0; i < NR; i++) h1[i] = h2[i] = stored[i];
   // tag(A) = 1 < tag(B) = 2: A's history as stored; listed as (B, A): sign -1
   const double s1 = polydem::contact_history_sign(1, 2), s2 = polydem::contact_history_sign(2, 1);
-  polydem::history_orient(h1, polydem::CONTACT_HIST, s1);
-  polydem::history_orient(h2, polydem::CONTACT_HIST, s2);
-  const auto f1 = polydem::contact_step(g, L, k, h1, polydem::CONTACT_HIST);
-  const auto f2 = polydem::contact_step(r, L, kr, h2, polydem::CONTACT_HIST);
-  polydem::history_orient(h1, polydem::CONTACT_HIST, s1);
-  polydem::history_orient(h2, polydem::CONTACT_HIST, s2);
+  polydem::history_orient(h1, NR, s1);
+  polydem::history_orient(h2, NR, s2);
+  const auto f1 = polydem::contact_step(g, L, k, h1, NR);
+  const auto f2 = polydem::contact_step(r, L, kr, h2, NR);
+  polydem::history_orient(h1, NR, s1);
+  polydem::history_orient(h2, NR, s2);
   const double F = polydem::norm(f1.F_A), T = polydem::norm(f1.tau_A);
   EXPECT_NEAR(polydem::norm(f1.F_A + f2.F_A), 0.0, 1e-12 * F);
   EXPECT_NEAR(polydem::norm(f1.tau_A - f2.tau_B), 0.0, 1e-12 * T);
   EXPECT_NEAR(polydem::norm(f1.tau_B - f2.tau_A), 0.0, 1e-12 * T);
-  for (int i = 0; i < polydem::CONTACT_HIST; i++) EXPECT_NEAR(h1[i], h2[i], 1e-12 * std::fabs(h1[i]) + 1e-30) << i;
+  for (int i = 0; i < NR; i++) EXPECT_NEAR(h1[i], h2[i], 1e-12 * std::fabs(h1[i]) + 1e-30) << i;
+}
+
+// ---------------------------------------------------------------------------
+// rolling resistance (EPSD, Ai, Chen, Rotter and Ooi, Powder Technol. 206
+// (2011) 269, model C)
+
+namespace {
+
+
+// a sphere of radius R (centre x_A) on a wall below it: point contact at the
+// sphere's lowest point, overlap delta, normal -z (A towards B)
+ContactGeometry<double> on_floor(const Vec3<double> &x, double R)
+{
+  ContactGeometry<double> g;
+  g.normal = make_vec3(0.0, 0.0, -1.0);
+  g.volume = R - x.z;
+  g.area = 0.0;
+  g.centroid = make_vec3(x.x, x.y, 0.0);
+  g.S_A = g.normal;
+  g.M_A = g.M_B = make_vec3(0.0, 0.0, 0.0);
+  g.gradient_damping = 0;
+  return g;
+}
+
+ContactLaw<double> linear_rolling(double kn, double e, double mu, double mu_r)
+{
+  auto L = polydem::ellipsoid_law(kn, polydem::damping_law(e, 1), mu, 2.0 / 7.0, 0.5);
+  L.rolling.mu_r = mu_r;
+  return L;
+}
+
+}    // namespace
+
+// The spring: M = -k_r theta with k_r = 2.25 k_n mu_r^2 R_r^2 (Eq. 13) for a
+// small relative rotation, R_r = r_A on a wall and r_A r_B / (r_A + r_B) on a
+// pair; the cap mu_r R_r F_n (Eq. 14) when spinning on; the spring's energy
+// |M|^2 / (2 k_r); rolling about n (spin) is not resisted; mu_r = 0 clears it.
+TEST(ContactLaw, RollingSpringCapAndEnergy)
+{
+  const double kn = 1e5, R = 0.01, mu_r = 0.1, dt = 1e-6, w = 0.5, delta = 1e-5;
+  const auto L = linear_rolling(kn, 0.5, 0.0, mu_r);    // frictionless: rolling alone
+  const Vec3<double> x = make_vec3(0.0, 0.0, R - delta);
+  const auto g = on_floor(x, R);
+  const double rA = R - delta;    // centre to contact point: R_r on a wall
+  const double kr = 2.25 * kn * mu_r * mu_r * rA * rA;
+  auto k = still(0.01, dt);
+  k.xA = x;
+  k.xB = make_vec3(0.0, 0.0, -1.0);
+  k.mA = 0.01;    // mB = 0: a wall
+  k.wA = make_vec3(0.0, w, 0.0);
+  double h[NR] = {0, 0, 0, 0, 0, 0, 0, 0};
+  auto f = polydem::contact_step(g, L, k, h, NR);
+  // one step: the spring's torque -k_r w dt, the dashpot -C_r w below the cap
+  const double Ir = 7.0 / 5.0 * 0.01 * rA * rA;
+  const double Cr = 2.0 * 0.3 * std::sqrt(Ir * kr);
+  EXPECT_NEAR(h[polydem::HIST_ROLL + 1], -kr * w * dt, 1e-12 * kr * w * dt);
+  EXPECT_NEAR(f.tau_A.y, -kr * w * dt - Cr * w, 1e-10 * Cr * w);
+  EXPECT_NEAR(f.tau_B.y, -f.tau_A.y, 1e-15);
+  // spinning on: the torque capped at mu_r R_r F_n, the spring at the cap
+  // less the dashpot's torque
+  for (int n = 0; n < 20000; n++) f = polydem::contact_step(g, L, k, h, NR);
+  const double cap = mu_r * rA * f.fn;
+  EXPECT_NEAR(f.fn, kn * delta, 1e-9 * kn * delta);
+  EXPECT_NEAR(f.tau_A.y, -cap, 1e-12 * cap);
+  const double Mk = -cap + Cr * w;
+  EXPECT_NEAR(h[polydem::HIST_ROLL + 1], Mk, 1e-12 * cap);
+  EXPECT_NEAR(f.energy, 0.5 * kn * delta * delta + 0.5 * Mk * Mk / kr, 1e-12 * f.energy);
+  // spin about n: no rolling torque
+  double h2[NR] = {0, 0, 0, 0, 0, 0, 0, 0};
+  auto ks = k;
+  ks.wA = make_vec3(0.0, 0.0, w);
+  EXPECT_EQ(polydem::norm(polydem::contact_step(g, L, ks, h2, NR).tau_A), 0.0);
+  // a pair (mB > 0): R_r = r_A r_B / (r_A + r_B)
+  auto kp = k;
+  kp.mB = 0.02;
+  kp.xB = make_vec3(0.0, 0.0, -3.0 * R);
+  const double rB = 3.0 * R, Rr = rA * rB / (rA + rB);
+  const double kr_pair = 2.25 * kn * mu_r * mu_r * Rr * Rr;
+  double h3[NR] = {0, 0, 0, 0, 0, 0, 0, 0};
+  const auto fp = polydem::contact_step(g, L, kp, h3, NR);
+  EXPECT_NEAR(h3[polydem::HIST_ROLL + 1], -kr_pair * w * dt, 1e-12 * kr_pair * w * dt);
+  // the pair's dashpot: I_r^-1 = sum 5 / (7 m_k r_k^2)
+  const double Ir_pair = 1.0 / (5.0 / (7.0 * 0.01 * rA * rA) + 5.0 / (7.0 * 0.02 * rB * rB));
+  EXPECT_NEAR(fp.tau_A.y, -kr_pair * w * dt - 0.6 * std::sqrt(Ir_pair * kr_pair) * w,
+              1e-10 * std::fabs(fp.tau_A.y));
+  // mu_r = 0: no torque, the rolling history cleared
+  auto L0 = L;
+  L0.rolling.mu_r = 0.0;
+  double h4[NR] = {0, 0, 0, 0, 0, 1e-9, 2e-9, 0};
+  EXPECT_EQ(polydem::norm(polydem::contact_step(g, L0, kp, h4, NR).tau_A), 0.0);
+  EXPECT_EQ(h4[polydem::HIST_ROLL], 0.0);
+  EXPECT_EQ(h4[polydem::HIST_ROLL + 1], 0.0);
+}
+
+namespace {
+
+// A sphere (mass m, radius R, I = 2/5 m R^2) rolling on the floor z = 0
+// along +x, started rolling without slip at v0, gravity g at an angle alpha
+// of the floor (pulling along -x for alpha > 0), integrated by velocity
+// Verlet with the law of the contact. Returns the distance to the first
+// stop (vx <= 0), or the speed at t_end if it has not stopped by then.
+struct RollResult {
+  double stop_x, stop_t, v_end;
+  bool stopped;
+};
+
+RollResult roll(double v0, double alpha, double mu_r, double t_end)
+{
+  const double R = 0.01, rho = 2500.0, grav = 9.81, kn = 1e5;
+  const double m = 4.0 / 3.0 * PI * R * R * R * rho, I = 0.4 * m * R * R;
+  const double dt = 1e-5;    // t_c = pi sqrt(m / k_n) = 1e-3
+  const auto L = linear_rolling(kn, 0.5, 0.5, mu_r);
+  const Vec3<double> gvec = make_vec3(-grav * std::sin(alpha), 0.0, -grav * std::cos(alpha));
+  Vec3<double> x = make_vec3(0.0, 0.0, R + m * gvec.z / kn);
+  Vec3<double> v = make_vec3(v0, 0.0, 0.0), w = make_vec3(0.0, v0 / R, 0.0);
+  double h[NR] = {0, 0, 0, 0, 0, 0, 0, 0};
+  auto force = [&](Vec3<double> &F, Vec3<double> &T) {
+    ContactKinematics<double> k;
+    k.xA = x;
+    k.xB = make_vec3(x.x, x.y, -1.0);
+    k.vA = v;
+    k.wA = w;
+    k.vB = k.wB = make_vec3(0.0, 0.0, 0.0);
+    k.meff = m;
+    k.dt = dt;
+    k.mA = m;
+    k.mB = 0.0;
+    const auto cf = polydem::contact_step(on_floor(x, R), L, k, h, NR);
+    F = cf.F_A + m * gvec;
+    T = cf.tau_A;
+  };
+  Vec3<double> F, T;
+  force(F, T);
+  RollResult r{0.0, 0.0, 0.0, false};
+  const int nsteps = static_cast<int>(t_end / dt);
+  for (int n = 1; n <= nsteps; n++) {
+    v += (0.5 * dt / m) * F;
+    w += (0.5 * dt / I) * T;
+    x += dt * v;
+    force(F, T);
+    v += (0.5 * dt / m) * F;
+    w += (0.5 * dt / I) * T;
+    if (v.x <= 0.0 && !r.stopped) {
+      r.stopped = true;
+      r.stop_x = x.x;
+      r.stop_t = n * dt;
+    }
+  }
+  r.v_end = v.x;
+  return r;
+}
+
+}    // namespace
+
+// A rolling sphere on a flat stops where the model's closed form says: the
+// full rolling torque mu_r R m g against the rolling inertia 7/5 m R^2
+// decelerates it at 5/7 mu_r g, d = 7 v0^2 / (10 mu_r g), t = 7 v0 / (5 mu_r g)
+// (within 1 %); on an incline it rolls down if tan(alpha) > mu_r and stays
+// if tan(alpha) < mu_r (Ai et al. 2011, section 2.3).
+TEST(ContactLaw, RollingSphereStopsAtTheClosedForm)
+{
+  const double g = 9.81;
+  for (double mu_r : {0.05, 0.2}) {
+    const double v0 = 0.1;
+    const auto r = roll(v0, 0.0, mu_r, 0.5);
+    ASSERT_TRUE(r.stopped) << mu_r;
+    const double d = 7.0 * v0 * v0 / (10.0 * mu_r * g), t = 7.0 * v0 / (5.0 * mu_r * g);
+    EXPECT_NEAR(r.stop_x, d, 0.01 * d) << mu_r;
+    EXPECT_NEAR(r.stop_t, t, 0.01 * t) << mu_r;
+  }
+  // incline: at rest, released on slopes of 0.8 and 1.25 times atan(mu_r)
+  const double mu_r = 0.1;
+  const auto steep = roll(0.0, 1.25 * std::atan(mu_r), mu_r, 0.2);
+  const auto shallow = roll(0.0, 0.8 * std::atan(mu_r), mu_r, 0.2);
+  // rolls down (-x) at (5/7) g (sin a - mu_r cos a) once mobilised
+  const double a = 1.25 * std::atan(mu_r);
+  const double vexp = -5.0 / 7.0 * g * (std::sin(a) - mu_r * std::cos(a)) * 0.2;
+  EXPECT_NEAR(steep.v_end, vexp, 0.05 * std::fabs(vexp));
+  EXPECT_LT(std::fabs(shallow.v_end), 1e-3 * std::fabs(vexp));
 }

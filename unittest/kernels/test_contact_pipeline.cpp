@@ -171,6 +171,7 @@ TEST(ContactPipeline, EllipsoidPairIsTheComposition)
     for (int mass : {DAMPING_REDUCED, DAMPING_CONTACT})
       for (bool friction : {true, false}) {
         Table tab(false);
+        tab.t.nhist = ELLIPSOID_HIST;
         tab.t.overlap = overlap;
         tab.t.damping_mass = mass;
         if (!friction)
@@ -210,6 +211,7 @@ TEST(ContactPipeline, EllipsoidPairIsTheComposition)
       }
   // apart: no contact, the history slot cleared
   Table tab(false);
+  tab.t.nhist = ELLIPSOID_HIST;
   Atoms2 at(5.0, 1.0, 1.0);
   const auto atoms = host_atoms(&at);
   double h[ELLIPSOID_HIST] = {1.0, 2.0, 3.0}, cnt[EP_NCOUNT] = {0, 0, 0, 0, 0};

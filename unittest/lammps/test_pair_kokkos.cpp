@@ -224,6 +224,20 @@ TEST(PairKokkos, DensePackingMatchesPlain)
                 kk.lmp->neighbor->ncalls);
 }
 
+// rolling resistance (issue 30) on every pair: its torque history (8 values
+// per pair) follows the pairs through reneighborings alike
+TEST(PairKokkos, RollingResistanceMatchesPlain)
+{
+  Lmp plain, kk(KK);
+  for (Lmp *l : {&plain, &kk}) {
+    l->cmds(setup());
+    l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 rolling 0.2");
+  }
+  plain.cmd("run 100");
+  kk.cmd("run 100");
+  compare(plain, kk, "rolling, run 100", true);
+}
+
 // the same style run as /kk/host must give the same numbers
 TEST(PairKokkos, HostVariantMatchesPlain)
 {

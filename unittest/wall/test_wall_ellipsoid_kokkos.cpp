@@ -1,7 +1,8 @@
 // fix wall/mesh/kk (Kokkos) against plain fix wall/mesh for
 // ellipsoids (issue 16): 18 ellipsoids in a closed box mesh, translating or
 // rotating (45 rpm), a curved floor with per-triangle forces, friction and
-// damping, 1,500 steps (30 or more wall contacts summed over 150 samples):
+// damping, rolling resistance (issue 30), 1,500 steps (30 or more wall
+// contacts summed over 150 samples):
 // per-atom forces and torques to 1e-12 of the largest, positions and
 // velocities to 1e-12, the mesh's global vector, energy and per-triangle
 // array to 1e-12 relative (measured: bit-identical on Kokkos Serial).
@@ -30,7 +31,8 @@ TEST(WallEllipsoidKokkos, KkEqualsPlain)
   const std::string curved = tmpdir() + "/ell_kk_bowl.stl";
   write_binary(curved, bowl(0, EB, 0, EB, 0.0004, 0.1, 24));
   for (const std::string move :
-       {" move translate 0.05 0 0", " move rotate 0.015 0.015 0.015 1 0.3 0.2 rpm 45"}) {
+       {" move translate 0.05 0 0", " move rotate 0.015 0.015 0.015 1 0.3 0.2 rpm 45",
+        " rolling 0.2 move translate 0.05 0 0"}) {
     const std::string args = box + " friction 0.5 restitution 0.5" + move;
     const KkScene sc = scene();
     const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);

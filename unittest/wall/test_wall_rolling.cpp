@@ -1,0 +1,184 @@
+// Rolling resistance (EPSD, Ai, Chen, Rotter and Ooi, Powder Technol. 206
+// (2011) 269, model C; polydem_contact_law.h) of a sphere (an ellipsoid with
+// a = b = c, pair_style ellipsoid) on fix wall/mesh, through LAMMPS:
+// 1. a sphere rolling on a flat mesh stops where the closed form says: the
+//    rolling torque mu_r R m g against the rolling inertia 7/5 m R^2 gives
+//    the deceleration 5/7 mu_r g, so d = 7 v0^2 / (10 mu_r g) (within 1 %),
+//    with mu_r from pair_coeff or from the fix's rolling keyword; without
+//    rolling resistance it keeps rolling;
+// 2. on an incline it rolls down for tan(theta) > mu_r, at 5/7 g (sin theta
+//    - mu_r cos theta) (within 2 %), and stays for tan(theta) < mu_r;
+// 3. a restart in mid-roll continues bit for bit (the rolling torque is
+//    in the wall history), and bad rolling input is an error.
+#include "polydem_lmp.h"
+#include "wall_meshes.h"
+
+#include "atom.h"
+#include "fix.h"
+#include "modify.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using polydem_test::Lmp;
+using polydem_test::num;
+using namespace wall_test;
+
+namespace {
+
+const double R = 0.01, RHO = 2000.0, KN = 1e4, GRAV = 9.81;
+
+// a sphere of radius R resting on the plane through the origin with normal
+// (sin theta, 0, cos theta), x along the slope (down for theta > 0), its
+// centre at s along the slope; the floor mesh, gravity, the pair style
+// and coefficients, and the fix's extra keywords
+void scene(Lmp &l, double theta_deg, double s, const std::string &coeff,
+           const std::string &fixkw)
+{
+  const double th = theta_deg * M_PI / 180.0;
+  auto lab = [&](double x, double z, double out[3]) {
+    out[0] = std::cos(th) * x + std::sin(th) * z;
+    out[1] = 0.0;
+    out[2] = -std::sin(th) * x + std::cos(th) * z;
+  };
+  Tris t = flat(-0.1, 0.1, -0.03, 0.03, 0.0, 6, 3);
+  for (size_t k = 0; k < t.size(); k += 3) {
+    double p[3];
+    lab(t[k], t[k + 2], p);
+    t[k] = p[0], t[k + 2] = p[2];
+  }
+  const std::string stl = tmpdir() + "/rolling_floor.stl";
+  write_ascii(stl, t);
+  const double m = RHO * 4.0 / 3.0 * M_PI * R * R * R;
+  double x0[3];
+  lab(s, R - m * GRAV * std::cos(th) / KN, x0);
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2",
+          "create_box 1 box", "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
+          "create_atoms 1 single " + num(x0[0]) + " " + num(x0[1]) + " " + num(x0[2]),
+          "polyhedron_set atom 1 density " + num(RHO), "pair_style ellipsoid",
+          "pair_coeff * * " + coeff, "neighbor 0.001 bin", "fix nve all nve/polyhedron",
+          "fix g all gravity 9.81 vector 0 0 -1", "fix w all wall/mesh " + stl + fixkw,
+          "timestep 5e-5"});    // t_c = pi sqrt(m / k_n) = 2.9 ms
+}
+
+// roll at v0 along +x (without slip: omega_y = v0 / R) on the flat floor;
+// the distance to the first stop (vx <= 0), -1 if none within nmax steps
+double stop_distance(const std::string &coeff, const std::string &fixkw, double v0, int nmax)
+{
+  Lmp l;
+  scene(l, 0.0, -0.05, coeff, fixkw);
+  l.cmds({"velocity all set " + num(v0) + " 0 0",
+          "polyhedron_set atom 1 omega 0 " + num(v0 / R) + " 0"});
+  auto *a = l.lmp->atom;
+  const double x0 = a->x[0][0];
+  l.cmd("run 0");
+  for (int n = 0; n < nmax; n += 10) {
+    const double xp = a->x[0][0], vp = a->v[0][0];
+    l.cmd("run 10 pre no post no");
+    if (a->v[0][0] <= 0.0) {
+      // the stop between the two samples (constant deceleration)
+      const double dec = (vp - a->v[0][0]) / (10 * 5e-5);
+      return xp + vp * vp / (2.0 * dec) - x0;
+    }
+  }
+  return -1.0;
+}
+
+double fvec(Lmp &l, const std::string &id, int k)
+{
+  return l.lmp->modify->fix[l.lmp->modify->find_fix(id)]->compute_vector(k);
+}
+
+}    // namespace
+
+// 1. the stop distance on a flat mesh against d = 7 v0^2 / (10 mu_r g)
+TEST(WallRolling, SphereStopsAtTheClosedForm)
+{
+  struct Case {
+    std::string coeff, fixkw;
+    double mu_r, v0;
+  };
+  const Case cases[] = {{"1e4 0.5 0.5 rolling 0.1", "", 0.1, 0.1},
+                        {"1e4 0.5 0.5 rolling 0.3", "", 0.3, 0.15},
+                        {"1e4 0.5 0.5", " rolling 0.2", 0.2, 0.1}};
+  for (const auto &c : cases) {
+    const double d = stop_distance(c.coeff, c.fixkw, c.v0, 20000);
+    const double expect = 7.0 * c.v0 * c.v0 / (10.0 * c.mu_r * GRAV);
+    std::printf("[ rolling ] mu_r %.2f (%s%s), v0 %.2f m/s: stopped after %.6g m, closed form "
+                "%.6g m (%+.3f %%)\n", c.mu_r, c.coeff.c_str(), c.fixkw.c_str(), c.v0, d, expect,
+                100.0 * (d / expect - 1.0));
+    EXPECT_NEAR(d, expect, 0.01 * expect);
+  }
+  // no rolling resistance: still rolling after 3x the stop time of mu_r = 0.1
+  EXPECT_LT(stop_distance("1e4 0.5 0.5", "", 0.1, 9000), 0.0);
+}
+
+// 2. incline: rolls down for tan(theta) > mu_r at 5/7 g (sin - mu_r cos)
+TEST(WallRolling, InclineRollsOnlyBeyondTheRollingAngle)
+{
+  const double mu_r = 0.1;
+  for (double f : {0.7, 1.5}) {
+    const double th = f * std::atan(mu_r);
+    Lmp l;
+    scene(l, th * 180.0 / M_PI, -0.05, "1e4 0.5 0.5 rolling " + num(mu_r), "");
+    auto *a = l.lmp->atom;
+    auto along = [&]() { return std::cos(th) * a->v[0][0] - std::sin(th) * a->v[0][2]; };
+    l.cmd("run 1000");    // 50 ms: settled onto the slope, the spring loaded
+    const double v1 = along();
+    l.cmd("run 2000");
+    const double v2 = along();
+    const double acc = (v2 - v1) / (2000 * 5e-5);
+    const double expect = f > 1.0 ? 5.0 / 7.0 * GRAV * (std::sin(th) - mu_r * std::cos(th)) : 0.0;
+    std::printf("[ rolling ] incline tan %.4f (mu_r %.2f): acceleration %.5g m/s^2 (expected "
+                "%.5g), v %.3g m/s, contacts %g\n", std::tan(th), mu_r, acc, expect, v2,
+                fvec(l, "w", 6));
+    EXPECT_EQ(fvec(l, "w", 6), 1.0);
+    if (f > 1.0)
+      EXPECT_NEAR(acc, expect, 0.02 * expect);
+    else
+      EXPECT_LT(std::fabs(v2), 1e-4);
+  }
+}
+
+// 3. restart in mid-roll: the same trajectory bit for bit; bad input
+TEST(WallRolling, RestartContinuesExactlyAndErrors)
+{
+  const std::string rst = tmpdir() + "/rolling.restart";
+  const std::string coeff = "1e4 0.5 0.5 rolling 0.2";
+  double ref[6];
+  {
+    Lmp l;
+    scene(l, 0.0, -0.05, coeff, "");
+    l.cmds({"velocity all set 0.1 0 0", "polyhedron_set atom 1 omega 0 " + num(0.1 / R) + " 0"});
+    l.cmd("run 300");
+    l.cmd("write_restart " + rst);
+    l.cmd("run 300");
+    for (int k = 0; k < 3; k++) ref[k] = l.lmp->atom->x[0][k], ref[3 + k] = l.lmp->atom->omega[0][k];
+  }
+  {
+    Lmp l;
+    l.cmds({"read_restart " + rst, "comm_modify vel yes", "neighbor 0.001 bin",
+            "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1",
+            "fix w all wall/mesh " + tmpdir() + "/rolling_floor.stl", "timestep 5e-5"});
+    l.cmd("run 300");
+    for (int k = 0; k < 3; k++) {
+      EXPECT_EQ(l.lmp->atom->x[0][k], ref[k]) << k;
+      EXPECT_EQ(l.lmp->atom->omega[0][k], ref[3 + k]) << k;
+    }
+  }
+  Lmp l;
+  scene(l, 0.0, -0.05, "1e4 0.5 0.5", "");
+  const struct {
+    std::string cmd, says;
+  } bad[] = {{"pair_coeff * * 1e4 0.5 0.5 rolling -0.1", "rolling friction mu_r must be >= 0"},
+             {"pair_coeff * * 1e4 0.5 0.5 rolling 0.1 0.2", "'rolling' takes one value"},
+             {"pair_style ellipsoid rolling/stiffness 0", "rolling/stiffness must be > 0"},
+             {"fix w2 all wall/mesh " + tmpdir() + "/rolling_floor.stl rolling -1",
+              "rolling must be >= 0"}};
+  for (const auto &b : bad) {
+    const std::string err = l.error_of(b.cmd);
+    EXPECT_NE(err.find(b.says), std::string::npos) << b.cmd << ": " << err;
+  }
+}
