@@ -378,6 +378,55 @@ TEST(PairEllipsoid, FrictionSlidingImpactOfSpheres)
   EXPECT_NEAR(st[2].v[0], 1.0, 2e-3);
 }
 
+// Rolling resistance between two particles (EPSD, issue 30): a sphere
+// (r = 1 cm, k_n = 1e4 N/m) rolling over the top of a fixed sphere of radius
+// 50 m stops where the closed form for a flat says, d = 7 v0^2 / (10 mu_r g)
+// (the rolling torque mu_r R_r m g against 7/5 m r^2; R_r = r R / (r + R)
+// and the slope reached, 1.4e-4 rad, change d by less than 0.1 %), within
+// 1 %, with mu_r from the pair's own coefficients and from the mixing of
+// unlike types.
+TEST(PairEllipsoid, RollingSphereOnASphereStopsAtTheClosedForm)
+{
+  const double r = 0.01, RB = 50.0, rho = 2000.0, kn = 1e4, g = 9.81, v0 = 0.1;
+  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+  for (const std::string coeff : {"* * 1e4 0.5 0.5 rolling 0.1", "1 1 1e4 0.5 0.5 rolling 0.1|2 2 "
+                                   "1e4 0.5 0.5 rolling 0.1"}) {
+    Lmp l;
+    const double z = RB + r - m * g / kn;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -60 60 -60 60 -60 60", "create_box 2 box",
+            "polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
+            "polyhedron_shape big ellipsoid " + num(RB) + " " + num(RB) + " " + num(RB),
+            "create_atoms 1 single 0 0 " + num(z), "create_atoms 2 single 0 0 0",
+            "polyhedron_set atom 1 density " + num(rho),
+            "polyhedron_set atom 2 shape big density " + num(rho), "group a id 1",
+            "velocity a set " + num(v0) + " 0 0", "polyhedron_set atom 1 omega 0 " + num(v0 / r) + " 0",
+            "pair_style ellipsoid"});
+    size_t from = 0;
+    while (true) {    // '|' separates pair_coeff lines
+      const size_t bar = coeff.find('|', from);
+      l.cmd("pair_coeff " + coeff.substr(from, bar == std::string::npos ? bar : bar - from));
+      if (bar == std::string::npos) break;
+      from = bar + 1;
+    }
+    l.cmds({"neighbor 0.001 bin", "fix 1 a nve/polyhedron", "fix g a gravity 9.81 vector 0 0 -1",
+            "timestep 5e-5", "run 0"});
+    auto *a = l.lmp->atom;
+    const int i = a->map(1);
+    const double x0 = a->x[i][0];
+    double d = -1.0;
+    for (int n = 0; n < 10000 && d < 0.0; n += 10) {
+      const double xp = a->x[i][0], vp = a->v[i][0];
+      l.cmd("run 10 pre no post no");
+      if (a->v[i][0] <= 0.0) d = xp + vp * vp / (2.0 * (vp - a->v[i][0]) / (10 * 5e-5)) - x0;
+    }
+    const double expect = 7.0 * v0 * v0 / (10.0 * 0.1 * g);
+    std::printf("rolling sphere on a sphere (pair_coeff %s): stopped after %.6g m, closed form "
+                "%.6g m (%+.3f %%)\n", coeff.c_str(), d, expect, 100.0 * (d / expect - 1.0));
+    EXPECT_NEAR(d, expect, 0.01 * expect);
+  }
+}
+
 // The friction history survives a change of the atom that holds the pair in
 // the neighbor list. Atom 2 slides along +y (5 m/s, mu = 0.8) on atom 1,
 // their centres 0.0399 apart along x, while atom_modify sort (binsize 0.2)
