@@ -2,6 +2,7 @@
 """Rolling spheres example: the stop distance of each sphere from the log
 against the closed form d = 7 v0^2 / (10 mu_r g); writes rolling.png.
     /usr/bin/python3 plot_rolling.py [log.rolling]"""
+import os
 import sys
 
 import matplotlib
@@ -10,29 +11,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../tools"))
+from compare_log import thermo_tables  # noqa: E402
+
 MU_R = [0.05, 0.1, 0.2, 0.3, 0.5]
 V0, G = 0.1, 9.81
 
-
-def thermo(path):
-    rows, header = [], None
-    with open(path) as f:
-        for line in f:
-            w = line.split()
-            if w and w[0] == "Step":
-                header = w
-                continue
-            if header and len(w) == len(header):
-                try:
-                    rows.append([float(x) for x in w])
-                except ValueError:
-                    header = None
-            elif header:
-                header = None
-    return np.array(rows)
-
-
-data = thermo(sys.argv[1] if len(sys.argv) > 1 else "log.rolling")
+data = np.array(thermo_tables(sys.argv[1] if len(sys.argv) > 1 else "log.rolling")[-1][1])
 t = data[:, 1]
 fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
 measured = []

@@ -43,14 +43,59 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
     if (!(m > 0.0)) return 0.0;
     return m * sqrt((a[0] / m) * (a[0] / m) + (a[1] / m) * (a[1] / m) + (a[2] / m) * (a[2] / m));
   };
+  // the keywords of one number in a range: (lo, hi) open or closed at each end
+  struct NumberKeyword {
+    const char *name, *what;
+    double *value;
+    double lo, hi;
+    bool lo_closed, hi_closed;
+  };
+  const double inf = HUGE_VAL;
+  const NumberKeyword numbers[] = {
+      {"scale", "s", &xf.scale, 0.0, inf, false, false},
+      {"depth/warn", "fraction of the bounding radius", &depth_warn, 0.0, 2.0, false, true},
+      {"overlap/warn", "fraction of the particle volume", &overlap_warn, 0.0, 1.0, false, true},
+      {"youngs", "E", &wall_E, 0.0, inf, false, false},
+      {"poisson", "nu", &wall_nu, -1.0, 0.5, false, false},
+      {"restitution", "e", &wall_e, 0.0, 1.0, false, true},
+      {"friction", "mu", &wall_mu, 0.0, inf, true, false},
+      {"rolling", "mu_r", &wall_mur, 0.0, inf, true, false},
+      {"core", "fraction", &core, 0.0, 1.0, true, false},
+      {"patch/angle", "degrees", &patch_angle, 0.0, 90.0, true, false},
+      {"bin", "edge length", &binsize, 0.0, inf, false, false},
+      {"cache/skin", "skin / particle bounding radius", &near_skin, 0.0, 1.0, false, true}};
+  auto number_keyword = [&](const std::string &kw, int iarg) {
+    for (const auto &k : numbers) {
+      if (kw != k.name) continue;
+      need(iarg, 1, k.what);
+      const double v = num(iarg + 1);
+      const bool above = k.lo_closed ? v >= k.lo : v > k.lo;
+      const bool below = k.hi_closed ? v <= k.hi : v < k.hi;
+      if (!above || !below) {
+        if (k.hi == inf)
+          error->all(FLERR, "fix wall/mesh: {} must be {} {}, got '{}'", k.name,
+                     k.lo_closed ? ">=" : ">", k.lo, arg[iarg + 1]);
+        error->all(FLERR, "fix wall/mesh: {} must be in {}{}, {}{}, got '{}'", k.name,
+                   k.lo_closed ? "[" : "(", k.lo, k.hi, k.hi_closed ? "]" : ")", arg[iarg + 1]);
+      }
+      *k.value = v;
+      return true;
+    }
+    return false;
+  };
+  // a keyword of two words: true for the first
+  auto choice = [&](int iarg, const char *first, const char *second) {
+    const std::string both = std::string(first) + " or " + second;
+    need(iarg, 1, both.c_str());
+    const std::string v = arg[iarg + 1];
+    if (v != first && v != second)
+      error->all(FLERR, "fix wall/mesh: {} expects {}, got '{}'", arg[iarg], both, v);
+    return v == first;
+  };
   int iarg = 4;
   while (iarg < narg) {
     const std::string kw = arg[iarg];
-    if (kw == "scale") {
-      need(iarg, 1, "s");
-      xf.scale = num(iarg + 1);
-      if (!(xf.scale > 0.0) || !std::isfinite(xf.scale))
-        error->all(FLERR, "fix wall/mesh: scale must be > 0, got '{}'", arg[iarg + 1]);
+    if (number_keyword(kw, iarg)) {
       iarg += 2;
     } else if (kw == "offset") {
       need(iarg, 3, "dx dy dz");
@@ -62,93 +107,16 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
       for (int k = 0; k < 3; k++) rot_axis[k] = num(iarg + 2 + k);
       iarg += 5;
     } else if (kw == "flip") {
-      need(iarg, 1, "yes or no");
-      const std::string yn = arg[iarg + 1];
-      if (yn != "yes" && yn != "no")
-        error->all(FLERR, "fix wall/mesh: flip expects yes or no, got '{}'", yn);
-      xf.flip = yn == "yes";
+      xf.flip = choice(iarg, "yes", "no");
       iarg += 2;
     } else if (kw == "twist") {
-      need(iarg, 1, "yes or no");
-      const std::string yn = arg[iarg + 1];
-      if (yn != "yes" && yn != "no")
-        error->all(FLERR, "fix wall/mesh: twist expects yes or no, got '{}'", yn);
-      twist = yn == "yes";
+      twist = choice(iarg, "yes", "no");
       iarg += 2;
     } else if (kw == "sides") {
-      need(iarg, 1, "both or front");
-      const std::string v = arg[iarg + 1];
-      if (v != "both" && v != "front")
-        error->all(FLERR, "fix wall/mesh: sides expects both or front, got '{}'", v);
-      twosided = v == "both";
-      iarg += 2;
-    } else if (kw == "depth/warn") {
-      need(iarg, 1, "fraction of the bounding radius");
-      depth_warn = num(iarg + 1);
-      if (!(depth_warn > 0.0 && depth_warn <= 2.0))
-        error->all(FLERR, "fix wall/mesh: depth/warn must be in (0, 2], got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "overlap/warn") {
-      need(iarg, 1, "fraction of the particle volume");
-      overlap_warn = num(iarg + 1);
-      if (!(overlap_warn > 0.0 && overlap_warn <= 1.0))
-        error->all(FLERR, "fix wall/mesh: overlap/warn must be in (0, 1], got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "youngs") {
-      need(iarg, 1, "E");
-      wall_E = num(iarg + 1);
-      if (!(wall_E > 0.0) || !std::isfinite(wall_E))
-        error->all(FLERR, "fix wall/mesh: youngs must be > 0, got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "poisson") {
-      need(iarg, 1, "nu");
-      wall_nu = num(iarg + 1);
-      if (!(wall_nu > -1.0 && wall_nu < 0.5))
-        error->all(FLERR, "fix wall/mesh: poisson must be in (-1, 0.5), got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "restitution") {
-      need(iarg, 1, "e");
-      wall_e = num(iarg + 1);
-      if (!(wall_e > 0.0 && wall_e <= 1.0))
-        error->all(FLERR, "fix wall/mesh: restitution must be in (0, 1], got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "friction") {
-      need(iarg, 1, "mu");
-      wall_mu = num(iarg + 1);
-      if (!(wall_mu >= 0.0) || !std::isfinite(wall_mu))
-        error->all(FLERR, "fix wall/mesh: friction must be >= 0, got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "rolling") {
-      need(iarg, 1, "mu_r");
-      wall_mur = num(iarg + 1);
-      if (!(wall_mur >= 0.0) || !std::isfinite(wall_mur))
-        error->all(FLERR, "fix wall/mesh: rolling must be >= 0, got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "core") {
-      need(iarg, 1, "fraction");
-      core = num(iarg + 1);
-      if (!(core >= 0.0 && core < 1.0))
-        error->all(FLERR, "fix wall/mesh: core must be in [0, 1), got '{}'", arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "patch/angle") {
-      need(iarg, 1, "degrees");
-      patch_angle = num(iarg + 1);
-      if (!(patch_angle >= 0.0 && patch_angle < 90.0))
-        error->all(FLERR, "fix wall/mesh: patch/angle must be in [0, 90), got '{}'",
-                   arg[iarg + 1]);
-      iarg += 2;
-    } else if (kw == "bin") {
-      need(iarg, 1, "edge length");
-      binsize = num(iarg + 1);
-      if (!(binsize > 0.0) || !std::isfinite(binsize))
-        error->all(FLERR, "fix wall/mesh: bin must be > 0, got '{}'", arg[iarg + 1]);
+      twosided = choice(iarg, "both", "front");
       iarg += 2;
     } else if (kw == "pertriangle") {
-      need(iarg, 1, "yes or no");
-      const std::string v = arg[iarg + 1];
-      if (v == "yes") pertri = 1;
-      else if (v == "no") pertri = 0;
-      else error->all(FLERR, "fix wall/mesh: pertriangle must be 'yes' or 'no', got '{}'", v);
+      pertri = choice(iarg, "yes", "no");
       iarg += 2;
     } else if (kw == "cache") {
       need(iarg, 1, "entries per particle (0: off)");
@@ -157,12 +125,6 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
         error->all(FLERR, "fix wall/mesh: cache must be an integer in [0, 100000], got '{}'",
                    arg[iarg + 1]);
       near_cap = (int) c;
-      iarg += 2;
-    } else if (kw == "cache/skin") {
-      need(iarg, 1, "skin / particle bounding radius");
-      near_skin = num(iarg + 1);
-      if (!(near_skin > 0.0 && near_skin <= 1.0))
-        error->all(FLERR, "fix wall/mesh: cache/skin must be in (0, 1], got '{}'", arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "merge") {
       need(iarg, 1, "no or a tolerance");

@@ -316,21 +316,11 @@ TEST(WallEllipsoid, FrictionOnIncline)
                                  c * c * std::cos(phi) * std::cos(phi));
     const double delta0 = m * grav * std::cos(th) / kn;
     // incline frame (x down the slope, z its normal) -> lab: R_y(theta)
-    auto lab = [&](double x, double z, double out[3]) {
-      out[0] = std::cos(th) * x + std::sin(th) * z;
-      out[1] = 0.0;
-      out[2] = -std::sin(th) * x + std::cos(th) * z;
-    };
-    Tris t = flat(-0.06, 0.1, -0.03, 0.03, 0.0, 8, 3);
-    for (size_t k = 0; k < t.size(); k += 3) {
-      double p[3];
-      lab(t[k], t[k + 2], p);
-      t[k] = p[0], t[k + 2] = p[2];
-    }
     const std::string stl = tmpdir() + "/ell_incline.stl";
-    write_ascii(stl, t);
+    write_ascii(stl, inclined(flat(-0.06, 0.1, -0.03, 0.03, 0.0, 8, 3), th));
+    const double p[3] = {-0.04, 0.0, sig - delta0};
     double x0[3];
-    lab(-0.04, sig - delta0, x0);
+    incline_to_lab(th, p, x0);
     Lmp l;
     l.cmds(box(0.2, num(a) + " " + num(b) + " " + num(c)));
     l.cmds({"create_atoms 1 single " + num(x0[0]) + " " + num(x0[1]) + " " + num(x0[2]),

@@ -37,22 +37,12 @@ void scene(Lmp &l, double theta_deg, double s, const std::string &coeff,
            const std::string &fixkw)
 {
   const double th = theta_deg * M_PI / 180.0;
-  auto lab = [&](double x, double z, double out[3]) {
-    out[0] = std::cos(th) * x + std::sin(th) * z;
-    out[1] = 0.0;
-    out[2] = -std::sin(th) * x + std::cos(th) * z;
-  };
-  Tris t = flat(-0.1, 0.1, -0.03, 0.03, 0.0, 6, 3);
-  for (size_t k = 0; k < t.size(); k += 3) {
-    double p[3];
-    lab(t[k], t[k + 2], p);
-    t[k] = p[0], t[k + 2] = p[2];
-  }
   const std::string stl = tmpdir() + "/rolling_floor.stl";
-  write_ascii(stl, t);
+  write_ascii(stl, inclined(flat(-0.1, 0.1, -0.03, 0.03, 0.0, 6, 3), th));
   const double m = RHO * 4.0 / 3.0 * M_PI * R * R * R;
+  const double p[3] = {s, 0.0, R - m * GRAV * std::cos(th) / KN};
   double x0[3];
-  lab(s, R - m * GRAV * std::cos(th) / KN, x0);
+  incline_to_lab(th, p, x0);
   l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
           "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2",
           "create_box 1 box", "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),

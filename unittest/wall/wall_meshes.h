@@ -98,6 +98,25 @@ inline Tris bowl(double x0, double x1, double y0, double y1, double z0, double R
   return t;
 }
 
+// An incline of theta (radians) about y: the point (x, y, z) of the
+// incline's frame (x down the slope, z its normal) in the lab frame
+inline void incline_to_lab(double theta, const double p[3], double out[3])
+{
+  out[0] = std::cos(theta) * p[0] + std::sin(theta) * p[2];
+  out[1] = p[1];
+  out[2] = -std::sin(theta) * p[0] + std::cos(theta) * p[2];
+}
+
+// the mesh t of the incline's frame in the lab frame
+inline Tris inclined(Tris t, double theta)
+{
+  for (size_t k = 0; k < t.size(); k += 3) {
+    const double p[3] = {t[k], t[k + 1], t[k + 2]};
+    incline_to_lab(theta, p, &t[k]);
+  }
+  return t;
+}
+
 // Fan triangulation of the same rectangle around an off-centre point:
 // long thin triangles meeting at one vertex (a strongly irregular mesh).
 inline Tris fan(double x0, double x1, double y0, double y1, double z, int nside, double cx,
