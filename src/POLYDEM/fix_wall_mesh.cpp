@@ -37,7 +37,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
-    wall_mu(-1.0), wall_mur(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
+    wall_mu(-1.0), wall_mur(-1.0), wall_coh(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
     overlap_warn(0.05), elapsed(0.0), hist(nullptr),
     ellipsoids(0), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
     near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
@@ -165,7 +165,9 @@ void FixWallMesh::init()
   int dim = 0;
   double *E = nullptr, *nu = nullptr, **e = nullptr, **mu = nullptr, **kn = nullptr;
   double *ktr = nullptr, *gtr = nullptr, **mur = nullptr, *rkr = nullptr, *reta = nullptr;
+  double **coh = nullptr;
   if (force->pair) {
+    coh = (double **) force->pair->extract("cohesion", dim);
     mur = (double **) force->pair->extract("rolling", dim);
     rkr = (double *) force->pair->extract("rolling_kr", dim);
     reta = (double *) force->pair->extract("rolling_eta", dim);
@@ -216,6 +218,7 @@ void FixWallMesh::init()
     const double et = wall_e > 0.0 ? wall_e : e[t][t];
     L.mu = wall_mu >= 0.0 ? wall_mu : mu[t][t];
     L.mu_r = wall_mur >= 0.0 ? wall_mur : (mur ? mur[t][t] : 0.0);
+    L.cohesion = wall_coh >= 0.0 ? wall_coh : (coh ? coh[t][t] : 0.0);
     if (!(ellipsoids ? L.kn > 0.0 : L.E1 > 0.0) || !(et > 0.0))
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} {})",
                  t, t, t, ellipsoids ? "kn e mu" : "E nu e mu");

@@ -74,6 +74,7 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   double merge_tol;  // coplanar merging tolerance / bounding-box diagonal (< 0: off)
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
   double wall_mur;    // rolling friction mu_r (< 0: the particle type's like pair's)
+  double wall_coh;    // dry cohesion (< 0: the particle type's like pair's)
   double core, patch_angle;
   int twosided;                       // keyword sides: both (1, default) or front (0)
   int twist;                          // keyword twist: torsional friction (polydem_contact_law.h)

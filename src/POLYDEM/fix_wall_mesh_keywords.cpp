@@ -60,6 +60,7 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
       {"restitution", "e", &wall_e, 0.0, 1.0, false, true},
       {"friction", "mu", &wall_mu, 0.0, inf, true, false},
       {"rolling", "mu_r", &wall_mur, 0.0, inf, true, false},
+      {"cohesion", "k_c or Gamma", &wall_coh, 0.0, inf, true, false},
       {"core", "fraction", &core, 0.0, 1.0, true, false},
       {"patch/angle", "degrees", &patch_angle, 0.0, 90.0, true, false},
       {"bin", "edge length", &binsize, 0.0, inf, false, false},

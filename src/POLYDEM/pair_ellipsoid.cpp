@@ -130,19 +130,20 @@ void PairEllipsoid::settings(int narg, char **arg)
 }
 
 /* ----------------------------------------------------------------------
-   pair_coeff I J kn e [mu] [rolling mu_r] : normal stiffness (force/length),
-   restitution, Coulomb friction (default 0: frictionless, the seed's
-   model), rolling friction (default 0: none)
+   pair_coeff I J kn e [mu] [rolling mu_r] [cohesion Gamma] : normal
+   stiffness (force/length), restitution, Coulomb friction (default 0:
+   frictionless, the seed's model), rolling friction and DMT surface energy
+   (default 0: none)
 ------------------------------------------------------------------------- */
 
 void PairEllipsoid::coeff(int nargs, char **arg)
 {
   if (!allocated) allocate();
-  double mu_r = 0.0;
-  const int narg = coeff_rolling(nargs, arg, mu_r);
+  double mu_r = 0.0, coh = 0.0;
+  const int narg = coeff_keywords(nargs, arg, mu_r, coh);
   if (narg != 4 && narg != 5)
-    error->all(FLERR, "pair_coeff ellipsoid: expected 'I J kn e [mu] [rolling mu_r]', got {} "
-               "values", nargs);
+    error->all(FLERR, "pair_coeff ellipsoid: expected 'I J kn e [mu] [rolling mu_r] "
+               "[cohesion Gamma]', got {} values", nargs);
   int ilo, ihi, jlo, jhi;
   utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
   utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
@@ -162,6 +163,7 @@ void PairEllipsoid::coeff(int nargs, char **arg)
       restitution[i][j] = e;
       friction[i][j] = mu;
       rolling[i][j] = mu_r;
+      cohesion[i][j] = coh;
       setflag[i][j] = 1;
       count++;
     }
@@ -240,18 +242,18 @@ double PairEllipsoid::init_one(int i, int j)
     kn[i][j] = sqrt(kn[i][i] * kn[j][j]);
     restitution[i][j] = sqrt(restitution[i][i] * restitution[j][j]);
     friction[i][j] = sqrt(friction[i][i] * friction[j][j]);
-    rolling[i][j] = sqrt(rolling[i][i] * rolling[j][j]);
   }
   kn[j][i] = kn[i][j];
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
-  rolling[j][i] = rolling[i][j];
+  mix_keywords(i, j, setflag[i][j]);
   // the law table's entries of the pair (friction only with a history)
   const int nt = atom->ntypes + 1;
   polydem::LawEntry<double> e = polydem::LawEntry<double>();
   e.kn = kn[i][j];
   e.mu = use_history ? friction[i][j] : 0.0;
   e.mu_r = use_history ? rolling[i][j] : 0.0;
+  e.cohesion = cohesion[i][j];
   e.damping = polydem::damping_law(restitution[i][j], 1);
   law_entries[i * nt + j] = law_entries[j * nt + i] = e;
   return size_cutoff();
@@ -378,6 +380,7 @@ void *PairEllipsoid::extract(const char *str, int &dim)
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
   if (strcmp(str, "friction") == 0) return (void *) friction;
   if (strcmp(str, "rolling") == 0) return (void *) rolling;
+  if (strcmp(str, "cohesion") == 0) return (void *) cohesion;
   dim = 1;
   if (strcmp(str, "counters") == 0) return (void *) counters;
   dim = 0;    // tangential k_t / k_n and gamma_t / gamma_n (fix wall/mesh)

@@ -35,7 +35,8 @@ static constexpr double RESTART_VERSION_NO_ROLLING = -2.0;
 
 PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nhist, int ncnt) :
     Pair(lmp), style_name(style), history_tag(tag), nhistory_base(nhist), nhistory(nhist),
-    nhistory_restart(0), restart_format(3), nhistory_fix(0), ncount(ncnt), rolling(nullptr), roll_kr(polydem::RollingLaw<double>().kr),
+    nhistory_restart(0), restart_format(3), nhistory_fix(0), ncount(ncnt), rolling(nullptr),
+    cohesion(nullptr), roll_kr(polydem::RollingLaw<double>().kr),
     roll_eta(polydem::RollingLaw<double>().eta), avec(nullptr), fix_dummy(nullptr),
     fix_history(nullptr), history_id(0)
 {
@@ -60,6 +61,7 @@ PairPolydem::~PairPolydem()
 {
   if (copymode) return;
   memory->destroy(rolling);
+  memory->destroy(cohesion);
   modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
 }
 
@@ -71,26 +73,42 @@ void PairPolydem::allocate_rolling()
 {
   const int n = atom->ntypes;
   memory->destroy(rolling);
+  memory->destroy(cohesion);
   memory->create(rolling, n + 1, n + 1, "pair:rolling");
+  memory->create(cohesion, n + 1, n + 1, "pair:cohesion");
   for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) rolling[i][j] = 0.0;
+    for (int j = 0; j <= n; j++) rolling[i][j] = cohesion[i][j] = 0.0;
 }
 
-int PairPolydem::coeff_rolling(int narg, char **arg, double &mu_r)
+int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh)
 {
-  mu_r = 0.0;
-  for (int k = 2; k < narg; k++)
-    if (strcmp(arg[k], "rolling") == 0) {
-      if (k + 2 != narg)
-        error->all(FLERR, "pair_coeff {}: 'rolling' takes one value, mu_r, and ends the line",
-                   style_name);
-      mu_r = polydem_parse::numeric(FLERR, arg[k + 1], lmp);
-      if (!(mu_r >= 0.0) || !std::isfinite(mu_r))
-        error->all(FLERR, "pair_coeff {}: rolling friction mu_r must be >= 0, got '{}'",
-                   style_name, arg[k + 1]);
-      return k;
-    }
-  return narg;
+  mu_r = coh = 0.0;
+  int first = 2;
+  while (first < narg && strcmp(arg[first], "rolling") && strcmp(arg[first], "cohesion")) first++;
+  for (int k = first; k < narg; k += 2) {
+    const bool roll = strcmp(arg[k], "rolling") == 0;
+    if (!roll && strcmp(arg[k], "cohesion") != 0)
+      error->all(FLERR, "pair_coeff {}: unknown keyword '{}' (after the coefficients: "
+                 "'rolling mu_r', 'cohesion c')", style_name, arg[k]);
+    if (k + 1 >= narg)
+      error->all(FLERR, "pair_coeff {}: '{}' needs a value", style_name, arg[k]);
+    const double v = polydem_parse::numeric(FLERR, arg[k + 1], lmp);
+    if (!(v >= 0.0) || !std::isfinite(v))
+      error->all(FLERR, "pair_coeff {}: {} must be >= 0, got '{}'", style_name,
+                 roll ? "rolling friction mu_r" : "cohesion", arg[k + 1]);
+    (roll ? mu_r : coh) = v;
+  }
+  return first;
+}
+
+void PairPolydem::mix_keywords(int i, int j, bool own)
+{
+  if (!own) {
+    rolling[i][j] = sqrt(rolling[i][i] * rolling[j][j]);
+    cohesion[i][j] = sqrt(cohesion[i][i] * cohesion[j][j]);
+  }
+  rolling[j][i] = rolling[i][j];
+  cohesion[j][i] = cohesion[i][j];
 }
 
 int PairPolydem::settings_rolling(int narg, char **arg, int iarg)
@@ -143,7 +161,9 @@ void PairPolydem::rolling_settings_fields(RestartFields &io)
 
 void PairPolydem::rolling_coeff_fields(RestartFields &io, int i, int j)
 {
-  if (io.has_rolling()) io(rolling[i][j]);
+  if (!io.has_rolling()) return;
+  io(rolling[i][j]);
+  io(cohesion[i][j]);
 }
 
 std::string PairPolydem::history_fix_id() const

@@ -66,8 +66,9 @@ class PairPolydem : public Pair {
   int nhistory_fix;           // values per pair of the history fix made (0: none yet)
   const int ncount;
   // rolling resistance (polydem_contact_law.h RollingLaw): mu_r per type
-  // pair (pair_coeff ... rolling mu_r; 0: none), k_r factor, dashpot ratio
-  double **rolling;
+  // pair (pair_coeff ... rolling mu_r; 0: none), k_r factor, dashpot ratio;
+  // dry cohesion per type pair (pair_coeff ... cohesion c; 0: none)
+  double **rolling, **cohesion;
   double roll_kr, roll_eta;
   class PolyShapeLibrary *avec;
   class FixDummy *fix_dummy;
@@ -81,9 +82,12 @@ class PairPolydem : public Pair {
 
   virtual void allocate() = 0;
   void allocate_rolling();
-  // pair_coeff's trailing 'rolling mu_r' (default 0): the count of the
-  // values before it
-  int coeff_rolling(int narg, char **arg, double &mu_r);
+  // pair_coeff's trailing keywords 'rolling mu_r' and 'cohesion c' (each
+  // default 0): the count of the values before them
+  int coeff_keywords(int narg, char **arg, double &mu_r, double &coh);
+  // mixing of the keywords' values for an unlike pair without its own
+  // (geometric means), and the symmetric copy
+  void mix_keywords(int i, int j, bool own);
   // pair_style's rolling/stiffness and rolling/damping keywords at arg[iarg]:
   // the values taken (0: not one of them)
   int settings_rolling(int narg, char **arg, int iarg);
@@ -93,7 +97,7 @@ class PairPolydem : public Pair {
   // resistance; an error where an existing history (this run's fix or the
   // restart file's) has another size
   void choose_history_size();
-  // restart: the rolling settings, and the pair's mu_r
+  // restart: the rolling settings, and the pair's mu_r and cohesion
   void rolling_settings_fields(RestartFields &io);
   void rolling_coeff_fields(RestartFields &io, int i, int j);
   // the style's settings and per-type coefficients, in file order

@@ -131,14 +131,15 @@ void PairPolyhedron::settings(int narg, char **arg)
    pair_coeff I J E nu e mu : material (E, nu) of the types in I and J,
                               restitution e and friction mu of the pairs
    pair_coeff I J e mu      : e and mu of unlike pairs (I != J) only
-   either ending in 'rolling mu_r': rolling resistance of the pairs
+   either ending in 'rolling mu_r' (rolling resistance) and/or 'cohesion k_c'
+   (adhesive stress) of the pairs
 ------------------------------------------------------------------------- */
 
 void PairPolyhedron::coeff(int nargs, char **arg)
 {
   if (!allocated) allocate();
-  double mu_r = 0.0;
-  const int narg = coeff_rolling(nargs, arg, mu_r);
+  double mu_r = 0.0, coh = 0.0;
+  const int narg = coeff_keywords(nargs, arg, mu_r, coh);
   if (narg != 4 && narg != 6)
     error->all(FLERR, "pair_coeff polyhedron: expected 'I J E nu e mu' or 'I J e mu', got {} "
                "values", narg);
@@ -179,6 +180,7 @@ void PairPolyhedron::coeff(int nargs, char **arg)
       restitution[i][j] = e;
       friction[i][j] = mu;
       rolling[i][j] = mu_r;
+      cohesion[i][j] = coh;
       pairset[i][j] = 1;
       setflag[i][j] = 1;
       count++;
@@ -238,11 +240,10 @@ double PairPolyhedron::init_one(int i, int j)
   if (!pairset[i][j]) {
     restitution[i][j] = sqrt(restitution[i][i] * restitution[j][j]);
     friction[i][j] = sqrt(friction[i][i] * friction[j][j]);
-    rolling[i][j] = sqrt(rolling[i][i] * rolling[j][j]);
   }
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
-  rolling[j][i] = rolling[i][j];
+  mix_keywords(i, j, pairset[i][j]);
   // the law table's entries of the pair, damping in closed form (polydem_damping.h)
   const int nt = atom->ntypes + 1;
   const auto damp = polydem::damping_law(restitution[i][j], 1);
@@ -256,6 +257,7 @@ double PairPolyhedron::init_one(int i, int j)
     e.mu = friction[i][j];
     e.damping = damp;
     e.mu_r = rolling[i][j];
+    e.cohesion = cohesion[i][j];
   };
   fill(i, j);
   fill(j, i);
@@ -444,6 +446,7 @@ void *PairPolyhedron::extract(const char *str, int &dim)
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
   if (strcmp(str, "friction") == 0) return (void *) friction;
   if (strcmp(str, "rolling") == 0) return (void *) rolling;
+  if (strcmp(str, "cohesion") == 0) return (void *) cohesion;
   dim = 1;
   if (strcmp(str, "youngs") == 0) return (void *) youngs;
   if (strcmp(str, "poisson") == 0) return (void *) poisson;

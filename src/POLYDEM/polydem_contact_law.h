@@ -66,6 +66,17 @@
    torque of a uniform pressure on the disk, mu F_n r_eff, r_eff = 2/3 a
    (a square face: the exact lever is 0.3826 L, the disk's 0.3761 L).
 
+   Dry cohesion (pair_coeff ... cohesion c; fix wall/mesh cohesion): a pull
+   that is the exact gradient of U = -c m, a constant subtracted from W'(m),
+   so that elastic contacts keep conserving energy. Feng (m = V): c = k_c,
+   an adhesive stress; the pull k_c dV/dx_A = k_c A_n n is proportional to
+   the contact area (the volume analogue of LIGGGHTS's SJKR), and the
+   largest pull a contact can hold is k_c A_n at V -> 0 (W' -> 0 in the
+   core). Linear (m = delta): c = 2 pi Gamma R_r, the DMT pull-off force of
+   surface energy Gamma (Derjaguin, Muller and Toporov 1975), constant while
+   in contact. R_r as for rolling; exact for spheres (for other shapes R_r
+   follows the contact point, and U is the energy only at fixed R_r).
+
    Rolling resistance (pair_coeff ... rolling mu_r; fix wall/mesh rolling):
    the elastic-plastic spring-dashpot (EPSD) model, Ai, Chen, Rotter and
    Ooi, Powder Technol. 206 (2011) 269, model C (Eqs. 12-18). The relative
@@ -228,6 +239,10 @@ template <typename T> struct ContactLaw {
   DampingLaw<T> damping;
   TangentialLaw<T> tangential;
   RollingLaw<T> rolling;
+  // dry cohesion (0: none): Feng, the adhesive stress k_c [pressure],
+  // U = -k_c V; linear, the surface energy Gamma [energy/area] of DMT,
+  // U = -2 pi Gamma R_r delta
+  T cohesion = T(0);
 };
 
 // ---------------------------------------------------------------------------
@@ -295,6 +310,17 @@ POLYDEM_FN T contact_rate(const ContactGeometry<T> &g, const ContactKinematics<T
   return dot(contact_relative_velocity(g, kin), g.normal);
 }
 
+// the contact's rolling radius R_r = r_A r_B / (r_A + r_B), r_k the
+// distance from body k's centre to the contact point; r_A on a wall (mB = 0)
+template <typename T>
+POLYDEM_FN T rolling_radius(const ContactGeometry<T> &g, const ContactKinematics<T> &kin)
+{
+  const T rA = norm(g.centroid - kin.xA);
+  if (!(kin.mB > T(0))) return rA;
+  const T rB = norm(g.centroid - kin.xB);
+  return rA * rB / (rA + rB);
+}
+
 // Rolling resistance of one contact (EPSD, see above): the torque on A
 // (B gets its opposite) from the spring M_k in hist[0..2], updated in place;
 // fn the normal force, k the normal stiffness; energy += the spring's
@@ -306,7 +332,7 @@ POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<
 {
   const Vec3<T> n = g.normal;
   const T rA = norm(g.centroid - kin.xA), rB = norm(g.centroid - kin.xB);
-  const T Rr = kin.mB > T(0) ? rA * rB / (rA + rB) : rA;
+  const T Rr = rolling_radius(g, kin);
   const T kr = rl.kr * k * rl.mu_r * rl.mu_r * Rr * Rr;
   // M_k in the current tangent plane, its length kept
   Vec3<T> M = make_vec3(hist[0], hist[1], hist[2]);
@@ -347,7 +373,17 @@ POLYDEM_FORCE_FN ContactForce<T> contact_step(const ContactGeometry<T> &g,
                                               const ContactKinematics<T> &kin, T *hist, int nhist)
 {
   ContactForce<T> out;
-  const NormalValue<T> nv = normal_value(law.normal, g.volume, g.area);
+  NormalValue<T> nv = normal_value(law.normal, g.volume, g.area);
+  if (law.cohesion > T(0)) {
+    // dry cohesion: a constant c subtracted from W'(m), the exact gradient of
+    // U = -c m (Feng: c = k_c, the pull k_c A_n; linear: c = 2 pi Gamma R_r,
+    // the DMT pull-off force)
+    const T c = law.normal.kind == NORMAL_LINEAR
+        ? T(2) * T(3.14159265358979323846) * law.cohesion * rolling_radius(g, kin)
+        : law.cohesion;
+    nv.Wp -= c;
+    nv.W -= c * g.volume;
+  }
   out.energy = nv.W;
   out.F_A = -nv.Wp * g.S_A;
   out.tau_A = -nv.Wp * g.M_A;

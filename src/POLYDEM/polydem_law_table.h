@@ -26,6 +26,7 @@ template <typename T> struct LawEntry {
   T mu;                     // Coulomb friction (0: frictionless, no history kept)
   DampingLaw<T> damping;    // restitution as a damping law (damping_law of e, host)
   T mu_r;                   // rolling friction (0: no rolling resistance)
+  T cohesion;               // dry cohesion (ContactLaw::cohesion; 0: none)
 };
 
 template <typename T> struct LawTable {
@@ -74,13 +75,14 @@ template <typename T> inline LawTable<T> law_table(const LawEntry<T> *entry, int
   return t;
 }
 
-// the rolling part of an entry's law
+// the rolling and cohesion parts of an entry's law
 template <typename T>
 POLYDEM_FN ContactLaw<T> with_rolling(ContactLaw<T> L, const LawTable<T> &tab, const LawEntry<T> &e)
 {
   L.rolling.mu_r = e.mu_r;
   L.rolling.kr = tab.roll_kr;
   L.rolling.eta = tab.roll_eta;
+  L.cohesion = e.cohesion;
   return L;
 }
 

@@ -2,7 +2,7 @@
 // and 1 vs 2 MPI ranks (issue 6, acceptance 4). A gas of 216 prolate
 // ellipsoids (xi = 2, solid fraction 0.1, v_rms 5 m/s, e_n = 0.9) crossing
 // periodic and subdomain boundaries; frictionless, with friction, and with
-// rolling resistance (issue 30).
+// rolling resistance and cohesion (issue 30).
 // Run as: test_ellipsoid_kokkos (1 rank) or mpirun -np 2 test_ellipsoid_kokkos.
 
 #include "polydem_allgather.h"
@@ -125,7 +125,7 @@ TEST(EllipsoidKokkos, MatchesPlain)
   // overlap (and damping) settings of pair_style ellipsoid
   for (std::string ovmu : {"centre", "chord", "centre damping contact", "chord damping contact",
                            "centre damping contact| 0.5", "chord| 0.3",
-                           "centre damping contact| 0.5 rolling 0.1", "centre| 0 rolling 0.2"}) {
+                           "centre damping contact| 0.5 rolling 0.1", "centre| 0 rolling 0.2 cohesion 5"}) {
     const size_t bar = ovmu.find('|');
     const std::string ov = ovmu.substr(0, bar), mu = bar == std::string::npos ? "" : ovmu.substr(bar + 1);
     Lmp plain, kk(KK);
@@ -150,7 +150,7 @@ TEST(EllipsoidKokkos, RanksAgree)
   for (int variant = 0; variant < 6; variant++) {
     const bool usekk = variant % 2;
     // friction, rolling resistance: histories migrate
-    const std::string mu = variant < 2 ? "" : variant < 4 ? " 0.5" : " 0.5 rolling 0.1";
+    const std::string mu = variant < 2 ? "" : variant < 4 ? " 0.5" : " 0.5 rolling 0.1 cohesion 5";
     Lmp multi(usekk ? KK : std::vector<std::string>{}, MPI_COMM_WORLD);
     Lmp single(usekk ? KK : std::vector<std::string>{}, MPI_COMM_SELF);
     multi.cmds(setup("centre damping contact", mu));

@@ -319,7 +319,7 @@ TEST(PairEllipsoid, BadInput)
             std::string::npos);
   EXPECT_NE(l.error_of("pair_coeff * * -1 0.5").find("stiffness kn must be > 0"),
             std::string::npos);
-  EXPECT_NE(l.error_of("pair_coeff * * 1e6").find("expected 'I J kn e [mu] [rolling mu_r]'"), std::string::npos);
+  EXPECT_NE(l.error_of("pair_coeff * * 1e6").find("expected 'I J kn e [mu] [rolling mu_r] [cohesion Gamma]'"), std::string::npos);
   EXPECT_NE(l.error_of("pair_coeff * * 1e6 0.9 -0.1").find("friction mu must be >= 0"),
             std::string::npos);
   EXPECT_NE(l.error_of("pair_style ellipsoid tangential 0 0.5").find("tangential kt/kn must be > 0"),
@@ -425,6 +425,55 @@ TEST(PairEllipsoid, RollingSphereOnASphereStopsAtTheClosedForm)
                 "%.6g m (%+.3f %%)\n", coeff.c_str(), d, expect, 100.0 * (d / expect - 1.0));
     EXPECT_NEAR(d, expect, 0.01 * expect);
   }
+}
+
+// Dry cohesion between two spheres (DMT, issue 30): sphere 2 (r = 1 cm,
+// k_n = 1e4 N/m, e = 0.5, surface energy Gamma = 0.2 J/m^2) touching a fixed
+// sphere 1 of the same size (overlap 1e-7 m), no gravity, settles at the overlap where the
+// spring balances the pull 2 pi Gamma R_r, R_r = (r - delta/2) / 2 (the
+// contact point halfway): delta = pi Gamma r / (k_n + pi Gamma / 2), within
+// 1e-6; pulled apart by a constant force, it holds 0.98 of the pull-off
+// force 2 pi Gamma r / 2 and separates at 1.02 of it (the pull ramped up
+// over 100 contact times).
+namespace {
+double cohesive_pair(double pull, double &delta)
+{
+  const double r = 0.01, rho = 2000.0, kn = 1e4, Gamma = 0.2;
+  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r, tc = M_PI * std::sqrt(m / kn);
+  Lmp l;
+  l.cmds(box_cmds());
+  l.cmds({"polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
+          "create_atoms 1 single 0.5 0.5 0.3", "create_atoms 1 single 0.5 0.5 " + num(0.3 + 2 * r - 1e-7),
+          "polyhedron_set group all density " + num(rho), "group b id 2",
+          "pair_style ellipsoid", "pair_coeff * * " + num(kn) + " 0.5 cohesion " + num(Gamma),
+          "neighbor 0.005 bin", "fix 1 b nve/polyhedron",
+          // the pull ramped over 100 t_c (quasi-static), then held
+          "variable f equal " + num(pull) + "*(step/5000.0*(step<5000)+(step>=5000))",
+          "fix pull b addforce 0 0 v_f", "timestep " + num(tc / 50.0), "run 10000"});
+  auto *a = l.lmp->atom;
+  delta = 2 * r - (a->x[a->map(2)][2] - a->x[a->map(1)][2]);
+  return a->v[a->map(2)][2];
+}
+}    // namespace
+
+TEST(PairEllipsoid, CohesionEquilibriumAndPullOff)
+{
+  const double r = 0.01, kn = 1e4, Gamma = 0.2;
+  double delta = 0.0;
+  const double v = cohesive_pair(0.0, delta);
+  const double expect = M_PI * Gamma * r / (kn + M_PI * Gamma / 2.0);
+  std::printf("cohesive spheres at rest: overlap %.10g m (closed form %.10g), v %.3g m/s\n", delta,
+              expect, v);
+  EXPECT_NEAR(delta, expect, 1e-6 * expect);
+  const double Fpo = 2.0 * M_PI * Gamma * r / 2.0;
+  double d_hold = 0.0, d_off = 0.0;
+  cohesive_pair(0.98 * Fpo, d_hold);
+  const double v_off = cohesive_pair(1.02 * Fpo, d_off);
+  std::printf("pulled at 0.98 / 1.02 of the pull-off force %.6g N: overlap %.4g m / %.4g m "
+              "(v %.3g m/s)\n", Fpo, d_hold, d_off, v_off);
+  EXPECT_GT(d_hold, 0.0);
+  EXPECT_LT(d_off, 0.0);    // separated
+  EXPECT_GT(v_off, 0.0);
 }
 
 // The friction history survives a change of the atom that holds the pair in

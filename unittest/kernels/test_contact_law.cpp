@@ -442,3 +442,45 @@ TEST(ContactLaw, RollingSphereStopsAtTheClosedForm)
   EXPECT_NEAR(steep.v_end, vexp, 0.05 * std::fabs(vexp));
   EXPECT_LT(std::fabs(shallow.v_end), 1e-3 * std::fabs(vexp));
 }
+
+// Dry cohesion: the pull is the exact gradient of U = -c m (Feng: c = k_c,
+// the pull k_c A_n; linear: the DMT pull-off force 2 pi Gamma R_r), so W'
+// shifts by c and the energy by -c m; an elastic (e = 1) cohesive face
+// contact gives back all its energy (it leaves with v0).
+TEST(ContactLaw, CohesionIsTheGradientOfItsEnergy)
+{
+  const double A = 0.01, kc = 3e3;
+  auto L = feng(1.0, 0.0, 0, 0, 1e-2);
+  L.cohesion = kc;
+  const auto g0 = face(0.0, A, make_vec3(0.5, 0.0, 0.0));
+  for (double f : {0.1, 0.7, 3.0, 100.0}) {
+    const double V = f * L.normal.V0;
+    const auto nv = polydem::normal_value(L.normal, V, A);
+    auto g = g0;
+    g.volume = V;
+    double h[polydem::CONTACT_HIST] = {0, 0, 0, 0, 0};
+    const auto cf = polydem::contact_step(g, L, still(1.0, 0.0), h, polydem::CONTACT_HIST);
+    EXPECT_NEAR(cf.F_A.x, -(nv.Wp - kc) * A, 1e-12 * (nv.Wp + kc) * A) << f;
+    EXPECT_NEAR(cf.energy, nv.W - kc * V, 1e-12 * (nv.W + kc * V)) << f;
+    EXPECT_NEAR(cf.fn, (nv.Wp - kc) * A, 1e-12 * (nv.Wp + kc) * A) << f;
+  }
+  // the DMT pull of a sphere on a wall (R_r = r_A): 2 pi Gamma R_r at any delta
+  const double R = 0.01, Gamma = 0.05, kn = 1e4, delta = 2e-6;
+  auto Ll = linear_rolling(kn, 1.0, 0.0, 0.0);
+  Ll.cohesion = Gamma;
+  const Vec3<double> x = make_vec3(0.0, 0.0, R - delta);
+  auto k = still(0.01, 0.0);
+  k.xA = x;
+  k.xB = make_vec3(0.0, 0.0, -1.0);
+  double h[polydem::CONTACT_HIST] = {0, 0, 0, 0, 0};
+  const auto cf = polydem::contact_step(on_floor(x, R), Ll, k, h, polydem::CONTACT_HIST);
+  const double Fpo = 2.0 * PI * Gamma * (R - delta);
+  EXPECT_NEAR(cf.F_A.z, kn * delta - Fpo, 1e-12 * Fpo);
+  EXPECT_NEAR(cf.energy, 0.5 * kn * delta * delta - Fpo * delta, 1e-12 * Fpo * delta);
+  // elastic cohesive bounces: all the energy comes back (above and in the core)
+  for (double v0 : {5.0, 0.05}) {
+    auto Lb = feng(1.0, 0.0, 0, 0, v0 > 1.0 ? 1e-6 : 1e-2);
+    Lb.cohesion = kc;
+    EXPECT_NEAR(bounce(Lb, false, v0), 1.0, 1e-5) << v0;
+  }
+}

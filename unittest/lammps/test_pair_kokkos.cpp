@@ -224,14 +224,15 @@ TEST(PairKokkos, DensePackingMatchesPlain)
                 kk.lmp->neighbor->ncalls);
 }
 
-// rolling resistance (issue 30) on every pair: its torque history (8 values
-// per pair) follows the pairs through reneighborings alike
+// rolling resistance and cohesion (issue 30) on every pair: the rolling
+// torque history (8 values per pair) follows the pairs through
+// reneighborings alike
 TEST(PairKokkos, RollingResistanceMatchesPlain)
 {
   Lmp plain, kk(KK);
   for (Lmp *l : {&plain, &kk}) {
     l->cmds(setup());
-    l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 rolling 0.2");
+    l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 rolling 0.2 cohesion 50");
   }
   plain.cmd("run 100");
   kk.cmd("run 100");

@@ -32,7 +32,7 @@ TEST(WallEllipsoidKokkos, KkEqualsPlain)
   write_binary(curved, bowl(0, EB, 0, EB, 0.0004, 0.1, 24));
   for (const std::string move :
        {" move translate 0.05 0 0", " move rotate 0.015 0.015 0.015 1 0.3 0.2 rpm 45",
-        " rolling 0.2 move translate 0.05 0 0"}) {
+        " rolling 0.2 cohesion 0.05 move translate 0.05 0 0"}) {
     const std::string args = box + " friction 0.5 restitution 0.5" + move;
     const KkScene sc = scene();
     const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);

@@ -19,6 +19,6 @@ TEST(WallEllipsoidRanks, OneVsTwoRanks)
   MPI_Barrier(MPI_COMM_WORLD);
   const RanksCase c = {ellipsoid_scene_setup(data), {}, 150, 10, EB, 0.001, 30.0, 0.0,
                        "ell wall"};
-  for (const std::string args : {"", " flip yes move translate 0.03 0 0", " rolling 0.2"})
+  for (const std::string args : {"", " flip yes move translate 0.03 0 0", " rolling 0.2 cohesion 0.05"})
     ranks_one_vs_n(c, 18, stl + " friction 0.5" + args);
 }

@@ -163,12 +163,44 @@ TEST(WallRolling, RestartContinuesExactlyAndErrors)
   const struct {
     std::string cmd, says;
   } bad[] = {{"pair_coeff * * 1e4 0.5 0.5 rolling -0.1", "rolling friction mu_r must be >= 0"},
-             {"pair_coeff * * 1e4 0.5 0.5 rolling 0.1 0.2", "'rolling' takes one value"},
+             {"pair_coeff * * 1e4 0.5 0.5 rolling 0.1 0.2", "unknown keyword '0.2'"},
+             {"pair_coeff * * 1e4 0.5 0.5 cohesion -1", "cohesion must be >= 0"},
+             {"fix w3 all wall/mesh " + tmpdir() + "/rolling_floor.stl cohesion -1",
+              "cohesion must be >= 0"},
              {"pair_style ellipsoid rolling/stiffness 0", "rolling/stiffness must be > 0"},
              {"fix w2 all wall/mesh " + tmpdir() + "/rolling_floor.stl rolling -1",
               "rolling must be >= 0"}};
   for (const auto &b : bad) {
     const std::string err = l.error_of(b.cmd);
     EXPECT_NE(err.find(b.says), std::string::npos) << b.cmd << ": " << err;
+  }
+}
+
+// Dry cohesion on a wall (DMT, issue 30): a sphere (r = 1 cm, k_n = 1e4 N/m,
+// e = 0.5) touching the flat mesh with 1e-7 m overlap, no gravity, surface
+// energy Gamma = 0.2 J/m^2 from pair_coeff or the fix's cohesion keyword,
+// settles where k_n delta = 2 pi Gamma R_r, R_r = r - delta (the contact
+// point on the wall's plane): delta = 2 pi Gamma r / (k_n + 2 pi Gamma),
+// within 1e-6.
+TEST(WallCohesion, SphereRestsAtTheDMTOverlap)
+{
+  const double Gamma = 0.2;
+  const std::string stl = tmpdir() + "/cohesion_floor.stl";
+  write_ascii(stl, flat(-0.1, 0.1, -0.1, 0.1, 0.0, 3, 3));
+  for (const std::string c : {"1e4 0.5 0.5 cohesion 0.2|", "1e4 0.5 0.5| cohesion 0.2"}) {
+    const size_t bar = c.find('|');
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
+            "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
+            "create_atoms 1 single 0 0 " + num(R - 1e-7), "polyhedron_set atom 1 density " + num(RHO),
+            "pair_style ellipsoid", "pair_coeff * * " + c.substr(0, bar), "neighbor 0.001 bin",
+            "fix nve all nve/polyhedron", "fix w all wall/mesh " + stl + c.substr(bar + 1),
+            "timestep 5e-5", "run 10000"});
+    const double delta = R - l.lmp->atom->x[0][2];
+    const double expect = 2.0 * M_PI * Gamma * R / (KN + 2.0 * M_PI * Gamma);
+    std::printf("[ cohesion ] sphere on the wall (%s): overlap %.10g m, closed form %.10g m\n",
+                c.c_str(), delta, expect);
+    EXPECT_NEAR(delta, expect, 1e-6 * expect);
   }
 }
