@@ -48,7 +48,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
   scalar_flag = 1;
   extscalar = 1;
   vector_flag = 1;
-  size_vector = NVEC;
+  size_vector = NVEC + NSERVO;
   extvector = 1;
   global_freq = 1;
   energy_global_flag = 1;
@@ -376,11 +376,17 @@ void FixWallMesh::report_initial_overlaps()
 void FixWallMesh::initial_integrate(int /*vflag*/)
 {
   elapsed += update->dt;
+  auto &m = geom.motion;
+  if (m.style == polydem::MeshMotion::SERVO) m.s += m.v * update->dt;
 }
 
+// move servo: the velocity of the next step from this step's force on the mesh
 void FixWallMesh::post_force(int /*vflag*/)
 {
   compute_forces(true);
+  if (geom.motion.style != polydem::MeshMotion::SERVO) return;
+  compute_scalar();    // the sums over ranks
+  geom.motion.servo_step(global);
 }
 
 void FixWallMesh::compute_forces(bool update)
@@ -549,6 +555,8 @@ double FixWallMesh::compute_array(int i, int j)
 
 double FixWallMesh::compute_vector(int n)
 {
+  if (n == NVEC) return geom.motion.s;
+  if (n == NVEC + 1) return geom.motion.v;
   compute_scalar();
   return global[n];
 }
@@ -628,19 +636,28 @@ int FixWallMesh::maxsize_restart()
 void FixWallMesh::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  const double list[2] = {elapsed, (double) geom.mesh.ntri()};
-  const int size = 2 * sizeof(double);
+  // (-ntri - 1: the servo's state follows; older files have ntri >= 0 and
+  // no more)
+  const double list[4] = {elapsed, -(double) geom.mesh.ntri() - 1.0, geom.motion.s,
+                          geom.motion.v};
+  const int size = 4 * sizeof(double);
   fwrite(&size, sizeof(int), 1, fp);
-  fwrite(list, sizeof(double), 2, fp);
+  fwrite(list, sizeof(double), 4, fp);
 }
 
 void FixWallMesh::restart(char *buf)
 {
   const auto *list = (const double *) buf;
   elapsed = list[0];
-  if ((int) list[1] != geom.mesh.ntri())
+  const bool servo_state = list[1] < 0.0;
+  const int ntri = servo_state ? (int) (-list[1] - 1.0) : (int) list[1];
+  if (ntri != geom.mesh.ntri())
     error->all(FLERR, "fix wall/mesh: the restart file's mesh had {} triangles, {} has {}",
-               (int) list[1], file, geom.mesh.ntri());
+               ntri, file, geom.mesh.ntri());
+  if (servo_state && geom.motion.style == polydem::MeshMotion::SERVO) {
+    geom.motion.s = list[2];
+    geom.motion.v = list[3];
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -64,8 +64,9 @@ class FixWallMesh : public Fix, public InsertionObstacle {
                        double gap) override;
 
   // vector: force on the mesh (3), torque on the mesh about its axis point
-  // (3), contacts, triangles touched
-  enum { NVEC = 8 };
+  // (3), contacts, triangles touched (summed over ranks); then the servo's
+  // displacement and velocity along its direction (move servo; else 0)
+  enum { NVEC = 8, NSERVO = 2 };
 
  protected:
   std::string file;

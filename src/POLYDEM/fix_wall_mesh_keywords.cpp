@@ -138,7 +138,7 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
       }
       iarg += 2;
     } else if (kw == "move") {
-      need(iarg, 1, "none, translate, rotate or wiggle");
+      need(iarg, 1, "none, translate, rotate, wiggle or servo");
       const std::string m = arg[iarg + 1];
       if (m == "none") {
         motion.style = polydem::MeshMotion::NONE;
@@ -160,6 +160,22 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
             error->all(FLERR, "fix wall/mesh: move wiggle amplitude must be finite, got '{}'",
                        arg[iarg + 2 + k]);
         iarg += 6;
+      } else if (m == "servo") {
+        need(iarg + 1, 6, "ax ay az force vmax gain");
+        motion.style = polydem::MeshMotion::SERVO;
+        for (int k = 0; k < 3; k++) motion.dir[k] = num(iarg + 2 + k);
+        const double l = length(motion.dir);
+        if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: move servo direction must be non-zero");
+        for (int k = 0; k < 3; k++) motion.dir[k] /= l;
+        motion.target = num(iarg + 5);
+        motion.vmax = num(iarg + 6);
+        motion.gain = num(iarg + 7);
+        if (!(motion.vmax > 0.0))
+          error->all(FLERR, "fix wall/mesh: move servo vmax must be > 0, got '{}'", arg[iarg + 6]);
+        if (!(motion.gain > 0.0))
+          error->all(FLERR, "fix wall/mesh: move servo gain must be > 0, got '{}'", arg[iarg + 7]);
+        motion.s = motion.v = 0.0;
+        iarg += 8;
       } else if (m == "rotate") {
         need(iarg + 1, 8, "ox oy oz ax ay az omega|rpm value");
         motion.style = polydem::MeshMotion::ROTATE;
@@ -178,8 +194,8 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
         for (int k = 0; k < 3; k++) motion.axis[k] /= l;
         iarg += 10;
       } else
-        error->all(FLERR, "fix wall/mesh: unknown move style '{}' (none, translate, rotate, wiggle)",
-                   m);
+        error->all(FLERR, "fix wall/mesh: unknown move style '{}' (none, translate, rotate, "
+                   "wiggle, servo)", m);
     } else
       error->all(FLERR, "fix wall/mesh: unknown keyword '{}'", kw);
   }

@@ -29,6 +29,10 @@ MeshPose<double> MeshMotion::pose(double t) const
     const double w = 2.0 * PI / period;
     mp.d = sin(w * t) * make_vec3(amp[0], amp[1], amp[2]);
     mp.vw = (w * cos(w * t)) * make_vec3(amp[0], amp[1], amp[2]);
+  } else if (style == SERVO) {
+    const Vec3<double> a = make_vec3(dir[0], dir[1], dir[2]);
+    mp.d = s * a;
+    mp.vw = v * a;
   } else if (style == ROTATE) {
     const double ph = 0.5 * omega * t;
     mp.q = make_quat(cos(ph), sin(ph) * axis[0], sin(ph) * axis[1], sin(ph) * axis[2]);
@@ -43,6 +47,7 @@ double MeshMotion::max_speed(const std::vector<double> &tri) const
   if (style == TRANSLATE) return sqrt(vel[0] * vel[0] + vel[1] * vel[1] + vel[2] * vel[2]);
   if (style == WIGGLE)
     return 2.0 * PI / period * sqrt(amp[0] * amp[0] + amp[1] * amp[1] + amp[2] * amp[2]);
+  if (style == SERVO) return vmax;
   if (style != ROTATE) return 0.0;
   double r2 = 0.0;    // largest squared distance of a vertex from the axis
   for (size_t k = 0; k < tri.size(); k += 3) {
@@ -51,6 +56,12 @@ double MeshMotion::max_speed(const std::vector<double> &tri) const
     r2 = std::max(r2, d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - a * a);
   }
   return fabs(omega) * sqrt(r2);
+}
+
+void MeshMotion::servo_step(const double f[3])
+{
+  const double Fc = -(f[0] * dir[0] + f[1] * dir[1] + f[2] * dir[2]);
+  v = std::max(-vmax, std::min(vmax, gain * (target - Fc)));
 }
 
 /* ---------------------------------------------------------------------- */

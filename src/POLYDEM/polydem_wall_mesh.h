@@ -23,7 +23,7 @@ namespace polydem {
 // The mesh frame is the lab frame at the time the wall was defined; at time
 // t since then the mesh has moved by pose(t).
 struct MeshMotion {
-  enum { NONE, TRANSLATE, ROTATE, WIGGLE };
+  enum { NONE, TRANSLATE, ROTATE, WIGGLE, SERVO };
   int style = NONE;
   double vel[3] = {0.0, 0.0, 0.0};       // translate
   double origin[3] = {0.0, 0.0, 0.0};    // rotate: a point of the axis
@@ -31,6 +31,15 @@ struct MeshMotion {
   double omega = 0.0;                    // rotate: rad per time unit
   double amp[3] = {0.0, 0.0, 0.0};       // wiggle: d = amp sin(2 pi t / period)
   double period = 1.0;
+  // servo: the mesh moves along the unit direction dir (which compresses
+  // the particles) at v = clamp(gain (target - F_c), -vmax, vmax), F_c the
+  // particles' force on the mesh against dir; state: displacement s and
+  // velocity v along dir (servo_step)
+  double dir[3] = {0.0, 0.0, 0.0};
+  double target = 0.0, vmax = 0.0, gain = 0.0;
+  double s = 0.0, v = 0.0;
+  // servo: the new velocity for the force f on the mesh (lab frame)
+  void servo_step(const double f[3]);
 
   MeshPose<double> pose(double t) const;
   // the largest speed of a point of the triangles tri (9 per triangle)

@@ -204,3 +204,75 @@ TEST(WallCohesion, SphereRestsAtTheDMTOverlap)
     EXPECT_NEAR(delta, expect, 1e-6 * expect);
   }
 }
+
+// A servo-controlled lid (move servo, issue 30): nine spheres (r = 1 cm,
+// k_n = 1e4 N/m, e = 0.5) resting on a floor mesh under gravity, a flat lid
+// mesh 2 mm above them moving down (direction 0 0 -1) at up to 0.05 m/s
+// with gain 0.02 m/s per N until the spheres push it back with the target
+// force: in steady state (the last 1,000 of 6,000 steps) the mean force
+// on the lid is the target within 1 %, its velocity below 1e-4 m/s; the
+// vector's [9] and [10] give the lid's displacement and velocity, and a
+// restart in mid-run continues bit for bit (the servo's state is in it).
+namespace {
+void servo_scene(Lmp &l, double target)
+{
+  const std::string floor = tmpdir() + "/servo_floor.stl", lid = tmpdir() + "/servo_lid.stl";
+  write_ascii(floor, flat(-0.1, 0.1, -0.1, 0.1, 0.0, 2, 2));
+  write_ascii(lid, flat(-0.1, 0.1, -0.1, 0.1, 2 * R + 0.002, 2, 2));
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
+          "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R)});
+  for (int i = -1; i <= 1; i++)
+    for (int j = -1; j <= 1; j++)
+      l.cmd("create_atoms 1 single " + num(0.03 * i) + " " + num(0.03 * j) + " " + num(R - 1e-7));
+  l.cmds({"polyhedron_set group all density " + num(RHO), "pair_style ellipsoid",
+          "pair_coeff * * 1e4 0.5 0.5", "neighbor 0.001 bin", "fix nve all nve/polyhedron",
+          "fix g all gravity 9.81 vector 0 0 -1", "fix floor all wall/mesh " + floor,
+          "fix lid all wall/mesh " + lid + " move servo 0 0 -1 " + num(target) + " 0.05 0.02",
+          "timestep 5e-5"});
+}
+}    // namespace
+
+TEST(WallServo, LidHoldsTheTargetForce)
+{
+  for (double target : {2.0, 8.0}) {
+    Lmp l;
+    servo_scene(l, target);
+    l.cmd("run 5000");
+    double sum = 0.0;
+    for (int k = 0; k < 100; k++) {
+      l.cmd("run 10 pre no post no");
+      sum += fvec(l, "lid", 2);
+    }
+    const double mean = sum / 100.0, s = fvec(l, "lid", 8), v = fvec(l, "lid", 9);
+    std::printf("[ servo ] target %.1f N: mean lid force %.6f N (%+.4f %%), lid moved %.6g m, "
+                "v %.3g m/s\n", target, mean, 100.0 * (mean / target - 1.0), s, v);
+    EXPECT_NEAR(mean, target, 0.01 * target);
+    EXPECT_LT(std::fabs(v), 1e-4);
+    EXPECT_GT(s, 0.002);    // it came down onto the spheres
+  }
+  // restart in mid-approach
+  const std::string rst = tmpdir() + "/servo.restart";
+  double ref[2];
+  {
+    Lmp l;
+    servo_scene(l, 5.0);
+    l.cmd("run 600");
+    l.cmd("write_restart " + rst);
+    l.cmd("run 600");
+    ref[0] = fvec(l, "lid", 8);
+    ref[1] = l.lmp->atom->x[l.lmp->atom->map(5)][2];
+  }
+  Lmp l;
+  l.cmds({"read_restart " + rst, "comm_modify vel yes", "neighbor 0.001 bin",
+          "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1",
+          "fix floor all wall/mesh " + tmpdir() + "/servo_floor.stl",
+          "fix lid all wall/mesh " + tmpdir() + "/servo_lid.stl move servo 0 0 -1 5 0.05 0.02",
+          "timestep 5e-5", "run 600"});
+  EXPECT_EQ(fvec(l, "lid", 8), ref[0]);
+  EXPECT_EQ(l.lmp->atom->x[l.lmp->atom->map(5)][2], ref[1]);
+  EXPECT_NE(l.error_of("fix bad all wall/mesh " + tmpdir() + "/servo_lid.stl move servo 0 0 0 5 "
+                       "0.05 0.02")
+                .find("move servo direction must be non-zero"),
+            std::string::npos);
+}
