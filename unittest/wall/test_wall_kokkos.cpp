@@ -41,7 +41,7 @@ TEST(WallKokkos, KkEqualsPlain)
   write_binary(box, closed_box(0.06, 5));
   for (const std::string move :
        {" move translate 0.05 0 0", " move rotate 0.03 0.03 0.03 1 0.3 0.2 rpm 45",
-        " rolling 0.1 cohesion 50 move translate 0.05 0 0"}) {
+        " rolling 0.1 cohesion 50 move translate 0.05 0 0", " move servo 0 0 -1 0.2 0.05 0.01"}) {
     const std::string args = box + " friction 0.6 restitution 0.4" + move;
     const KkSnapshot p = run({}, args), k = run(KK, args);
     compare(p, k, move.c_str());
