@@ -127,8 +127,10 @@ int PairPolydem::settings_rolling(int narg, char **arg, int iarg)
 int PairPolydem::rolling_used() const
 {
   if (!rolling) return 0;
+  // j >= i: pair_coeff sets those (the lower half is init_one's copy of
+  // the previous run)
   for (int i = 1; i <= atom->ntypes; i++)
-    for (int j = 1; j <= atom->ntypes; j++)
+    for (int j = i; j <= atom->ntypes; j++)
       if (rolling[i][j] > 0.0) return 1;
   return 0;
 }

@@ -427,6 +427,70 @@ TEST(PairEllipsoid, RollingSphereOnASphereStopsAtTheClosedForm)
   }
 }
 
+// The rolling torque history (8 values per pair) is written to restart
+// files: a sphere rolling over a fixed sphere (as above) continues bit for
+// bit after write_restart / read_restart; a run that would read or keep a
+// history of another size (rolling resistance switched off for all pairs
+// after a restart, or between two runs) is an error that says so.
+namespace {
+std::vector<std::string> rolling_pair(const std::string &coeff)
+{
+  const double r = 0.01, RB = 50.0;
+  return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -60 60 -60 60 -60 60", "create_box 2 box",
+          "polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
+          "polyhedron_shape big ellipsoid " + num(RB) + " " + num(RB) + " " + num(RB),
+          "create_atoms 1 single 0 0 " + num(RB + r - 1e-6), "create_atoms 2 single 0 0 0",
+          "polyhedron_set atom 1 density 2000 omega 0 10 0", "polyhedron_set atom 2 shape big density 2000",
+          "group a id 1", "velocity a set 0.1 0 0", "pair_style ellipsoid", "pair_coeff * * " + coeff,
+          "neighbor 0.001 bin", "fix 1 a nve/polyhedron", "fix g a gravity 9.81 vector 0 0 -1",
+          "timestep 5e-5"};
+}
+}    // namespace
+
+TEST(PairEllipsoid, RollingHistoryRestartsExactlyAndItsSizeIsChecked)
+{
+  const std::string rst = ::testing::TempDir() + "polydem_rolling_pair.restart";
+  double ref[6];
+  {
+    Lmp l;
+    l.cmds(rolling_pair("1e4 0.5 0.5 rolling 0.1"));
+    l.cmd("run 400");
+    l.cmd("write_restart " + rst);
+    l.cmd("run 400");
+    auto *a = l.lmp->atom;
+    const int i = a->map(1);
+    for (int k = 0; k < 3; k++) ref[k] = a->x[i][k], ref[3 + k] = a->omega[i][k];
+    // between runs: the history of 8 values cannot become one of 3
+    l.cmd("pair_coeff * * 1e4 0.5 0.5");
+    const std::string err = l.error_of("run 10");
+    EXPECT_NE(err.find("the contact history of the previous run keeps 8 values per pair, this "
+                       "run needs 3"), std::string::npos) << err;
+  }
+  const std::vector<std::string> again = {"comm_modify vel yes", "neighbor 0.001 bin",
+                                          "group a id 1", "fix 1 a nve/polyhedron",
+                                          "fix g a gravity 9.81 vector 0 0 -1", "timestep 5e-5"};
+  {
+    Lmp l;
+    l.cmd("read_restart " + rst);
+    l.cmds(again);
+    l.cmd("run 400");
+    auto *a = l.lmp->atom;
+    const int i = a->map(1);
+    for (int k = 0; k < 3; k++) {
+      EXPECT_EQ(a->x[i][k], ref[k]) << k;
+      EXPECT_EQ(a->omega[i][k], ref[3 + k]) << k;
+    }
+  }
+  Lmp l;
+  l.cmd("read_restart " + rst);
+  l.cmds(again);
+  l.cmd("pair_coeff * * 1e4 0.5 0.5");
+  const std::string err = l.error_of("run 10");
+  EXPECT_NE(err.find("the restart file's contact history keeps 8 values per pair, this run "
+                     "needs 3"), std::string::npos) << err;
+}
+
 // Dry cohesion between two spheres (DMT, issue 30): sphere 2 (r = 1 cm,
 // k_n = 1e4 N/m, e = 0.5, surface energy Gamma = 0.2 J/m^2) touching a fixed
 // sphere 1 of the same size (overlap 1e-7 m), no gravity, settles at the overlap where the
