@@ -2,7 +2,8 @@
 // mpirun -np 2): 18 ellipsoids thrown into a closed 3 cm box mesh cross the
 // subdomain boundary for 1,500 steps, their wall history migrating with
 // them; the box as written and reversed and moving (every contact met from
-// its back); with rolling resistance on the walls (issue 30). Checks: wall_ranks_compare.h (30 or more wall contacts summed
+// its back); with rolling resistance and cohesion on the walls, and the box
+// servo-controlled (issue 30: the servo's force is summed over ranks). Checks: wall_ranks_compare.h (30 or more wall contacts summed
 // over the 150 samples).
 #include "wall_ellipsoid_scene.h"
 #include "wall_ranks_compare.h"
@@ -19,6 +20,7 @@ TEST(WallEllipsoidRanks, OneVsTwoRanks)
   MPI_Barrier(MPI_COMM_WORLD);
   const RanksCase c = {ellipsoid_scene_setup(data), {}, 150, 10, EB, 0.001, 30.0, 0.0,
                        "ell wall"};
-  for (const std::string args : {"", " flip yes move translate 0.03 0 0", " rolling 0.2 cohesion 0.05"})
+  for (const std::string args : {"", " flip yes move translate 0.03 0 0", " rolling 0.2 cohesion 0.05",
+                                 " move servo 0 0 -1 0.02 0.05 0.01"})
     ranks_one_vs_n(c, 18, stl + " friction 0.5" + args);
 }
