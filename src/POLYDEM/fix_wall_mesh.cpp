@@ -8,13 +8,16 @@
 #include "comm.h"
 #include "error.h"
 #include "force.h"
+#include "input.h"
 #include "math_const.h"
 #include "memory.h"
+#include "modify.h"
 #include "neighbor.h"
 #include "pair.h"
 #include "poly_shape_library.h"
 #include "poly_timestep.h"
 #include "update.h"
+#include "variable.h"
 
 #include "polydem_parse.h"
 #include "polydem_damping.h"
@@ -37,7 +40,7 @@ static constexpr int NH = polydem::WALL_HIST_SIZE;
 
 FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), binsize(0.0), merge_tol(1e-9), wall_E(-1.0), wall_nu(-2.0), wall_e(-1.0),
-    wall_mu(-1.0), wall_mur(-1.0), wall_coh(-1.0), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
+    wall_mu(-1.0), wall_mur(-1.0), wall_coh(-1.0), servo_ivar(-1), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
     overlap_warn(0.05), elapsed(0.0), hist(nullptr),
     ellipsoids(0), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
     near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
@@ -150,6 +153,15 @@ int FixWallMesh::setmask()
 
 void FixWallMesh::init()
 {
+  if (!servo_var.empty()) {
+    servo_ivar = input->variable->find(servo_var.c_str());
+    if (servo_ivar < 0)
+      error->all(FLERR, "fix wall/mesh {}: move servo: variable '{}' does not exist", id,
+                 servo_var);
+    if (!input->variable->equalstyle(servo_ivar))
+      error->all(FLERR, "fix wall/mesh {}: move servo: variable '{}' is not equal-style", id,
+                 servo_var);
+  }
   avec = PolyShapeLibrary::of(lmp, "fix wall/mesh");
   // the group's shapes, and those an insertion fix will add to it (every
   // rank sees the same candidates: counted on rank 0)
@@ -386,7 +398,16 @@ void FixWallMesh::post_force(int /*vflag*/)
   compute_forces(true);
   if (geom.motion.style != polydem::MeshMotion::SERVO) return;
   compute_scalar();    // the sums over ranks
+  servo_target();
   geom.motion.servo_step(global);
+}
+
+void FixWallMesh::servo_target()
+{
+  if (servo_ivar < 0) return;
+  modify->clearstep_compute();
+  geom.motion.target = input->variable->compute_equal(servo_ivar);
+  modify->addstep_compute(update->ntimestep + 1);
 }
 
 void FixWallMesh::compute_forces(bool update)

@@ -76,9 +76,12 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
   double wall_mur;    // rolling friction mu_r (< 0: the particle type's like pair's)
   double wall_coh;    // dry cohesion (< 0: the particle type's like pair's)
+  std::string servo_var;    // move servo: the target force's equal-style variable ("": a number)
+  int servo_ivar;
   double core, patch_angle;
   int twosided;                       // keyword sides: both (1, default) or front (0)
   int twist;                          // keyword twist: torsional friction (polydem_contact_law.h)
+  void servo_target();                // move servo: the target from its variable, if any
   double depth_warn, overlap_warn;    // warn beyond these x bounding radius, x particle volume
   double elapsed;    // time since the fix was defined (mesh motion)
 

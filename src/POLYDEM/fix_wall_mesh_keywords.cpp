@@ -167,7 +167,10 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
         const double l = length(motion.dir);
         if (!(l > 0.0)) error->all(FLERR, "fix wall/mesh: move servo direction must be non-zero");
         for (int k = 0; k < 3; k++) motion.dir[k] /= l;
-        motion.target = num(iarg + 5);
+        if (strncmp(arg[iarg + 5], "v_", 2) == 0 && arg[iarg + 5][2] != '\0')
+          servo_var = arg[iarg + 5] + 2;    // evaluated every step (a load program)
+        else
+          motion.target = num(iarg + 5);
         motion.vmax = num(iarg + 6);
         motion.gain = num(iarg + 7);
         if (!(motion.vmax > 0.0))

@@ -276,3 +276,28 @@ TEST(WallServo, LidHoldsTheTargetForce)
                 .find("move servo direction must be non-zero"),
             std::string::npos);
 }
+
+// A load program: the target from an equal-style variable, evaluated every
+// step (2 N, then 6 N from step 4,000): each step's mean force within 1 %.
+TEST(WallServo, TargetFromAVariable)
+{
+  Lmp l;
+  servo_scene(l, 1.0);
+  l.cmds({"unfix lid", "variable load equal 2.0+4.0*(step>=4000)",
+          "fix lid all wall/mesh " + tmpdir() + "/servo_lid.stl move servo 0 0 -1 v_load 0.05 0.02"});
+  for (double target : {2.0, 6.0}) {
+    l.cmd("run 3000");
+    double sum = 0.0;
+    for (int k = 0; k < 100; k++) {
+      l.cmd("run 10 pre no post no");
+      sum += fvec(l, "lid", 2);
+    }
+    std::printf("[ servo ] variable target %.1f N: mean lid force %.6f N\n", target, sum / 100.0);
+    EXPECT_NEAR(sum / 100.0, target, 0.01 * target);
+  }
+  Lmp bad;
+  servo_scene(bad, 1.0);
+  bad.cmds({"unfix lid", "fix lid all wall/mesh " + tmpdir() +
+                             "/servo_lid.stl move servo 0 0 -1 v_nothing 0.05 0.02"});
+  EXPECT_NE(bad.error_of("run 0").find("variable 'nothing' does not exist"), std::string::npos);
+}
