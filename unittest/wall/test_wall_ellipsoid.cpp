@@ -242,7 +242,7 @@ TEST(WallEllipsoid, TriangulationIndependence)
             "neighbor 0.001 bin", "fix nve all nve/polyhedron",
             "fix w all wall/mesh " + stl + " merge no", "timestep 1e-6", "run 0"});
     EXPECT_EQ(fvec(l, "w", 6), nfeet);
-    EXPECT_EQ(l.lmp->modify->fix[l.lmp->modify->find_fix("w")]->size_vector, 8);
+    EXPECT_EQ(l.lmp->modify->fix[l.lmp->modify->find_fix("w")]->size_vector, 10);    // 8 + servo 2
     auto snap = [&]() {
       std::vector<std::vector<double>> s(nfeet);
       auto *a = l.lmp->atom;
