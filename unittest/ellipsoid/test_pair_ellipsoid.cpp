@@ -427,9 +427,10 @@ TEST(PairEllipsoid, RollingSphereOnASphereStopsAtTheClosedForm)
   }
 }
 
-// The rolling torque history (8 values per pair) is written to restart
-// files: a sphere rolling over a fixed sphere (as above) continues bit for
-// bit after write_restart / read_restart; a run that would read or keep a
+// The rolling torque history (8 values per pair) and the rolling and
+// cohesion coefficients are written to restart files: a sphere rolling over
+// a fixed sphere (as above, with cohesion) continues bit for bit after
+// write_restart / read_restart; a run that would read or keep a
 // history of another size (rolling resistance switched off for all pairs
 // after a restart, or between two runs) is an error that says so.
 namespace {
@@ -454,7 +455,7 @@ TEST(PairEllipsoid, RollingHistoryRestartsExactlyAndItsSizeIsChecked)
   double ref[6];
   {
     Lmp l;
-    l.cmds(rolling_pair("1e4 0.5 0.5 rolling 0.1"));
+    l.cmds(rolling_pair("1e4 0.5 0.5 rolling 0.1 cohesion 0.05"));
     l.cmd("run 400");
     l.cmd("write_restart " + rst);
     l.cmd("run 400");
@@ -481,6 +482,13 @@ TEST(PairEllipsoid, RollingHistoryRestartsExactlyAndItsSizeIsChecked)
       EXPECT_EQ(a->x[i][k], ref[k]) << k;
       EXPECT_EQ(a->omega[i][k], ref[3 + k]) << k;
     }
+    // the coefficients came back with the restart file
+    int dim = 0;
+    auto **coh = (double **) l.lmp->force->pair->extract("cohesion", dim);
+    auto **roll = (double **) l.lmp->force->pair->extract("rolling", dim);
+    EXPECT_EQ(coh[1][1], 0.05);
+    EXPECT_EQ(coh[1][2], 0.05);
+    EXPECT_EQ(roll[2][2], 0.1);
   }
   Lmp l;
   l.cmd("read_restart " + rst);
