@@ -312,13 +312,16 @@ POLYDEM_FN T contact_rate(const ContactGeometry<T> &g, const ContactKinematics<T
 
 // the contact's rolling radius R_r = r_A r_B / (r_A + r_B), r_k the
 // distance from body k's centre to the contact point; r_A on a wall (mB = 0)
+template <typename T> POLYDEM_FN T rolling_radius(T rA, T rB, const ContactKinematics<T> &kin)
+{
+  return kin.mB > T(0) ? rA * rB / (rA + rB) : rA;
+}
 template <typename T>
 POLYDEM_FN T rolling_radius(const ContactGeometry<T> &g, const ContactKinematics<T> &kin)
 {
   const T rA = norm(g.centroid - kin.xA);
   if (!(kin.mB > T(0))) return rA;
-  const T rB = norm(g.centroid - kin.xB);
-  return rA * rB / (rA + rB);
+  return rolling_radius(rA, norm(g.centroid - kin.xB), kin);
 }
 
 // Rolling resistance of one contact (EPSD, see above): the torque on A
@@ -332,7 +335,7 @@ POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<
 {
   const Vec3<T> n = g.normal;
   const T rA = norm(g.centroid - kin.xA), rB = norm(g.centroid - kin.xB);
-  const T Rr = rolling_radius(g, kin);
+  const T Rr = rolling_radius(rA, rB, kin);    // the two norms once
   const T kr = rl.kr * k * rl.mu_r * rl.mu_r * Rr * Rr;
   // M_k in the current tangent plane, its length kept
   Vec3<T> M = make_vec3(hist[0], hist[1], hist[2]);
