@@ -32,6 +32,9 @@ namespace polydem {
 enum PlaneOwner : unsigned char { OWNER_NONE = 0, OWNER_A = 1, OWNER_B = 2, OWNER_BOTH = 3 };
 
 constexpr int DUAL_HULL_BOUND_PLANES = 4;
+// tstamp of a triangle that repeats an earlier one's vertex (the fan of a
+// vertex of degree > 3): the initial conflict scan skips it (same violation)
+constexpr int DUAL_HULL_COPY = -2;
 
 // Fixed workspace for up to MaxPlanes planes including the 4 bounding planes.
 // A hull of n dual points has at most 2n-4 triangles; visible triangles are
@@ -169,7 +172,7 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
   const int np = w.nplanes;
   if (np > MP) return STATUS_OVERFLOW;
   w.nfree = 0;
-  for (int p = 0; p < MP; ++p) w.new_by_start[p] = w.new_by_end[p] = -1;
+  for (int p = 0; p < np; ++p) w.new_by_start[p] = w.new_by_end[p] = -1;
   // initial conflicts (seed Algorithm IV)
   for (int l = first; l < np; ++l) {
     const int t0 = preset ? w.conflict[l] : -1;
@@ -182,6 +185,7 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
     w.conflict[l] = -1;
     w.cviol[l] = tol;
     for (int t = 0; t < w.ntslots; ++t) {
+      if (w.tstamp[t] == DUAL_HULL_COPY) continue;
       const T v = viol(w, l, w.P[t]);
       if (v > w.cviol[l]) {
         w.cviol[l] = v;

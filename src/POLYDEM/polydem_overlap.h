@@ -1,9 +1,14 @@
 /* -*- c++ -*- ----------------------------------------------------------
    POLYDEM - overlap polyhedron of two posed convex polyhedra (seed 2.3):
-   Chebyshev centre of the combined half-spaces as polarisation point x_o
-   (polydem_lp.h), dual points of all face planes (Eqs. 4-5, Algorithm II),
-   dual Quickhull and unpolarisation (Algorithms III-VI, polydem_dual_hull.h),
-   then volume (Eq. 9), centroid and the exact gradients of V:
+   dual points of the face planes (Eqs. 4-5, Algorithm II), dual Quickhull
+   and unpolarisation (Algorithms III-VI, polydem_dual_hull.h), then volume
+   (Eq. 9), centroid and the exact gradients of V. The hull starts from the
+   part of A facing B, cut from A's precomputed dual triangulation, and only
+   B's planes near A are inserted (local_seeded_hull: the seed's Sec. 5
+   localization to the contacting faces); the full path (all of A, or a
+   bounding tetrahedron about the Chebyshev centre x_o of both half-space
+   systems, polydem_lp.h) serves templates without a dual triangulation and
+   the rare pairs where the local start is not a simple cut.
 
      S_A = int_{dA in B} n_A dA   = dV/dx_A          (S_B = -S_A)
      M_A = int_{dA in B} (p - x_A) x n_A dA = dV/dtheta_A   (rotation of A
@@ -29,7 +34,8 @@ namespace polydem {
 
 // Per-pair workspace. MaxFaces = the largest face count of the two templates.
 template <typename T, int MaxFaces = MAX_TEMPLATE_FACES> struct OverlapWorkspace {
-  static constexpr int MAX_PLANES = 2 * MaxFaces + DUAL_HULL_BOUND_PLANES;
+  // both shapes' planes, the bounding ones and the localized path's cut
+  static constexpr int MAX_PLANES = 2 * MaxFaces + DUAL_HULL_BOUND_PLANES + 1;
   DualHullWorkspace<T, MAX_PLANES> hull;
 };
 
@@ -54,6 +60,7 @@ template <typename T> struct OverlapResult {
                        // starts from a tetrahedron; V / surface area (= in-radius of
                        // a thin slab) when it starts from A's dual triangulation [length]
   int nverts;          // vertices of the overlap polyhedron
+  int localized;       // 1: built by the localized start (local_seeded_hull)
 };
 
 // Tolerances, dimensionless; multiplied by eps and the smaller bounding radius
@@ -104,6 +111,205 @@ namespace overlap_detail {
     ext = m - q[3];
     return m > lim ? i : -1;
   }
+  // vertex iv of the posed shape a, relative to the hull origin (xa = a.x - x0)
+  template <typename T>
+  POLYDEM_FN Vec3<T> posed_vertex(const PosedShape<T> &a, const Vec3<T> &xa, int iv)
+  {
+    const T *v = a.view->verts + 3 * iv;
+    return xa + a.s * matvec(a.R, make_vec3(v[0], v[1], v[2]));
+  }
+
+  // Localized start (the polyhedral seed's Sec. 5 "overlap calculations
+  // confined to the contacting facets"). Along the centre line n (A -> B),
+  // B lies in n . p >= sB and A in n . p <= sA. The overlap's faces lie on
+  // faces of A that meet B and faces of B that meet A, and its half-spaces
+  // define it exactly; a face of B meets A only if one of its vertices has
+  // n . p <= sA, and B lies in the half-space pi: n . p >= sB - delta. So
+  //   A n B = (A n pi) n {B's planes of faces reaching below sA},
+  // exactly. A n pi is cut from A's dual triangulation directly: its kept
+  // vertices are known from the projections (no flood fill over the part of
+  // A that pi removes), and only A's planes on the kept part are posed.
+  // pi (owner none) lies delta outside B, so B's planes remove its face
+  // entirely; if round-off leaves a trace of it, or the cut is not a simple
+  // ring, the caller takes the full path. Returns STATUS_OK (the hull is in
+  // w, np planes, x0 its origin), STATUS_SEPARATED, or OVERLAP_FULL_PATH.
+  constexpr int OVERLAP_FULL_PATH = -100;
+  template <typename T, int MP>
+  POLYDEM_FN int local_seeded_hull(const PosedShape<T> &a, const PosedShape<T> &b,
+                                   DualHullWorkspace<T, MP> &w, T tol, T Lmin, const Vec3<T> &x0,
+                                   int &np)
+  {
+    constexpr int NB = DUAL_HULL_BOUND_PLANES;
+    const ShapeView<T> &va = *a.view, &vb = *b.view;
+    const int fa = va.nfaces, fb = vb.nfaces, nva = va.nverts, nvb = vb.nverts;
+    if (nva + nvb > w.MAXT || NB + fa + 1 + fb > MP) return OVERLAP_FULL_PATH;
+    Vec3<T> n = b.x - a.x;
+    const T nn = norm(n);
+    n = nn > T(0) ? (T(1) / nn) * n : make_vec3(T(0), T(0), T(1));
+    // projections n . (p - x0) of every vertex: A's in tviol[0..nva), B's after
+    T *pa = w.tviol, *pb = w.tviol + nva;
+    T sA = -T(1e30), sB = T(1e30);
+    {
+      const Vec3<T> na = a.s * matTvec(a.R, n), nb = b.s * matTvec(b.R, n);
+      const T ca = dot(n, a.x - x0), cb = dot(n, b.x - x0);
+      for (int i = 0; i < nva; ++i) {
+        const T *v = va.verts + 3 * i;
+        pa[i] = ca + na.x * v[0] + na.y * v[1] + na.z * v[2];
+        sA = pa[i] > sA ? pa[i] : sA;
+      }
+      for (int i = 0; i < nvb; ++i) {
+        const T *v = vb.verts + 3 * i;
+        pb[i] = cb + nb.x * v[0] + nb.y * v[1] + nb.z * v[2];
+        sB = pb[i] < sB ? pb[i] : sB;
+      }
+    }
+    if (sB > sA + tol) return STATUS_SEPARATED;    // n separates them
+    // pi as a hull plane: (-n) . P <= -(sB - delta); its violation at an A
+    // vertex is (sB - delta) - pa[i]
+    const T cut = sB - (T(1e-6) * Lmin + T(16) * tol);
+    const int ipi = NB + fa;
+    {
+      T *q = w.pl + 4 * ipi;
+      q[0] = -n.x;
+      q[1] = -n.y;
+      q[2] = -n.z;
+      q[3] = -cut;
+      w.owner[ipi] = OWNER_NONE;
+      w.conflict[ipi] = -2;
+    }
+    // A n pi from A's dual triangulation: kept triangles (their vertex within
+    // tol of pi or inside) get compact slots 0..nk-1 (w.stack: old -> new)
+    const int *seed = va.dual;
+    const int nt = seed[0];
+    short *map = w.stack;
+    int nk = 0;
+    for (int t = 0; t < nt; ++t) {
+      const int iv = seed[1 + DUAL_SEED_STRIDE_K * t + 6];
+      map[t] = cut - pa[iv] <= tol ? (short) nk++ : (short) -1;
+    }
+    if (nk == 0) return STATUS_SEPARATED;
+    // A's planes on the kept part are posed once (w.hz_new[l] = 1 marks them);
+    // each vertex is posed once (w.vis: vertex -> its first slot)
+    short *vslot = w.vis;
+    for (int i = 0; i < nva; ++i) vslot[i] = -1;
+    for (int f = 0; f < fa; ++f) w.hz_new[NB + f] = 0;
+    const Vec3<T> xa = a.x - x0;
+    int nka = 0;    // A's kept planes, listed in w.hz_tri
+    int ns = nk;    // slots: kept ones first, then the ring of new ones on pi
+    for (int i = 0; i <= ipi; ++i) w.new_by_start[i] = w.new_by_end[i] = -1;
+    for (int t = 0; t < nt; ++t) {
+      const short k = map[t];
+      if (k < 0) continue;
+      const int *q = seed + 1 + DUAL_SEED_STRIDE_K * t;
+      const int iv = q[6];
+      w.tstate[k] = 1;
+      if (vslot[iv] >= 0) {    // a vertex of degree d is d - 2 triangles
+        w.P[k] = w.P[vslot[iv]];
+        w.tstamp[k] = DUAL_HULL_COPY;
+      } else {
+        w.P[k] = posed_vertex(a, xa, iv);
+        vslot[iv] = k;
+        w.tstamp[k] = -1;
+      }
+      for (int e = 0; e < 3; ++e) {
+        const short l = (short) (NB + q[e]);
+        w.tc[k][e] = l;
+        if (!w.hz_new[l]) {
+          w.hz_new[l] = 1;
+          w.hz_tri[nka++] = l;
+          const T *p = va.planes + 4 * q[e];
+          const Vec3<T> nl = matvec(a.R, make_vec3(p[0], p[1], p[2]));
+          T *d = w.pl + 4 * l;
+          d[0] = nl.x;
+          d[1] = nl.y;
+          d[2] = nl.z;
+          d[3] = a.s * p[3] + dot(nl, xa);
+          w.owner[l] = OWNER_A;
+          w.conflict[l] = -2;
+        }
+      }
+      for (int e = 0; e < 3; ++e) {
+        const int r = q[3 + e];
+        if (map[r] >= 0) {
+          w.tadj[k][e] = map[r];
+          continue;
+        }
+        // edge (u, v) of the removed neighbour r becomes the new triangle
+        // (u, v, pi), as dual_hull_expand builds it; its vertex is where pi
+        // cuts the primal edge from r's vertex to k's
+        if (ns >= w.MAXT) return OVERLAP_FULL_PATH;
+        const short u = (short) (NB + q[(e + 1) % 3]), v = (short) (NB + q[e]);
+        if (w.new_by_start[u] != -1 || w.new_by_end[v] != -1) return OVERLAP_FULL_PATH;
+        const short s = (short) ns++;
+        w.new_by_start[u] = s;
+        w.new_by_end[v] = s;
+        const int ir = seed[1 + DUAL_SEED_STRIDE_K * r + 6];
+        const T v1 = cut - pa[ir], v2 = cut - pa[iv];
+        T f = v1 / (v1 - v2);
+        f = f < T(0) ? T(0) : (f > T(1) ? T(1) : f);
+        const Vec3<T> Pr = posed_vertex(a, xa, ir);
+        w.P[s] = Pr + f * (w.P[k] - Pr);
+        w.tc[s][0] = u;
+        w.tc[s][1] = v;
+        w.tc[s][2] = (short) ipi;
+        w.tadj[s][0] = k;
+        w.tadj[k][e] = s;
+        w.tstate[s] = 1;
+        w.tstamp[s] = -1;
+      }
+    }
+    // link the ring: edge (v, pi) meets the new triangle starting at v,
+    // edge (pi, u) the one ending at u
+    for (int s = nk; s < ns; ++s) {
+      const short ks = w.new_by_start[w.tc[s][1]], ke = w.new_by_end[w.tc[s][0]];
+      if (ks < 0 || ke < 0) return OVERLAP_FULL_PATH;
+      w.tadj[s][1] = ks;
+      w.tadj[s][2] = ke;
+    }
+    for (int s = nk; s < ns; ++s) w.new_by_start[w.tc[s][0]] = w.new_by_end[w.tc[s][1]] = -1;
+    w.ntslots = ns;
+    // B's planes whose faces reach below sA (+ tol), posed; a plane of B that
+    // coincides with one of A's kept planes is merged into it (owner both)
+    const Vec3<T> xb = b.x - x0;
+    np = ipi + 1;
+    for (int f = 0; f < fb; ++f) {
+      bool reach = false;
+      for (int k = vb.face_start[f]; k < vb.face_start[f + 1] && !reach; ++k)
+        reach = pb[vb.face_verts[k]] <= sA + tol;
+      if (!reach) continue;
+      const T *p = vb.planes + 4 * f;
+      const Vec3<T> nl = matvec(b.R, make_vec3(p[0], p[1], p[2]));
+      const T h = b.s * p[3] + dot(nl, xb);
+      bool merged = false;
+      for (int i = 0; i < nka && !merged; ++i) {
+        const int j = w.hz_tri[i];
+        const T *pj = w.pl + 4 * j;
+        const T dx = pj[0] - nl.x;
+        if (fabs(dx) > T(16) * Eps<T>::value) continue;
+        const T dy = pj[1] - nl.y, dz = pj[2] - nl.z;
+        if (dx * dx + dy * dy + dz * dz <= T(256) * Eps<T>::value * Eps<T>::value &&
+            fabs(pj[3] - h) <= tol) {
+          w.owner[j] = OWNER_BOTH;
+          merged = true;
+        }
+      }
+      if (merged) continue;
+      T *d = w.pl + 4 * np;
+      d[0] = nl.x;
+      d[1] = nl.y;
+      d[2] = nl.z;
+      d[3] = h;
+      w.owner[np] = OWNER_B;
+      ++np;
+    }
+    w.nplanes = np;
+    const int st = dual_hull_expand(w, tol, ipi + 1, false);
+    if (st != STATUS_OK) return st == STATUS_SEPARATED ? st : OVERLAP_FULL_PATH;
+    for (int t = 0; t < w.ntslots; ++t)
+      if (w.tstate[t] == 1 && (w.tc[t][0] == ipi || w.tc[t][1] == ipi || w.tc[t][2] == ipi))
+        return OVERLAP_FULL_PATH;
+    return STATUS_OK;
+  }
 }    // namespace overlap_detail
 
 // every field zero (value-initialised aggregate), then the status
@@ -113,11 +319,77 @@ template <typename T> POLYDEM_FN void overlap_result_zero(OverlapResult<T> &r, i
   r.status = status;
 }
 
+namespace overlap_detail {
+  // V, centroid, gradients from the hull in w (np planes, origin x0): shared
+  // by the localized and the full path. seeded: the hull started from A's
+  // dual triangulation (touching is decided by V / surface area), else from a
+  // tetrahedron about the Chebyshev centre of in-radius r.
+  template <typename T, int MP>
+  POLYDEM_FN OverlapResult<T> hull_result(DualHullWorkspace<T, MP> &w, int np, Vec3<T> x0,
+                                          bool seeded, T r, const PosedShape<T> &a,
+                                          const PosedShape<T> &b, T Lmin, T ttouch)
+  {
+    constexpr int NB = DUAL_HULL_BOUND_PLANES;
+    OverlapResult<T> res;
+    overlap_result_zero(res, STATUS_OK);
+    if (seeded) {
+      // integrate about a point inside the overlap (the mean of its vertices):
+      // pyramids from a far point would cancel
+      Vec3<T> c = make_vec3(T(0), T(0), T(0));
+      int nc = 0;
+      for (int t = 0; t < w.ntslots; ++t)
+        if (w.tstate[t] == 1) {
+          c += w.P[t];
+          ++nc;
+        }
+      c = (T(1) / T(nc > 0 ? nc : 1)) * c;
+      for (int t = 0; t < w.ntslots; ++t) w.P[t] -= c;
+      // move the planes of the overlap's faces (only those are integrated;
+      // w.hz_new marks them)
+      for (int l = NB; l < np; ++l) w.hz_new[l] = 0;
+      for (int t = 0; t < w.ntslots; ++t)
+        if (w.tstate[t] == 1)
+          for (int e = 0; e < 3; ++e) w.hz_new[w.tc[t][e]] = 1;
+      for (int l = NB; l < np; ++l) {
+        if (!w.hz_new[l]) continue;
+        T *q = w.pl + 4 * l;
+        q[3] = offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), c);
+      }
+      x0 += c;
+    }
+    Vec3<T> ref[2] = {a.x - x0, b.x - x0};
+    HullIntegrals<T> hi;
+    dual_hull_integrate(w, ref, hi, T(1e-3) * Lmin);
+    // half-thickness V / (surface area), which is the in-radius of a thin slab
+    // (and r/3 of a ball): the in-radius r decides touching on the Chebyshev
+    // path, this on the seeded path, with the same threshold
+    const T atot = hi.area[0] + hi.area[1];
+    const T thick = atot > T(0) ? hi.volume / atot : T(0);
+    if (!(hi.volume > T(0)) || (seeded && thick <= ttouch)) {
+      overlap_result_zero(res, STATUS_SEPARATED);
+      res.depth = thick > T(0) ? thick : T(0);
+      return res;
+    }
+    res.volume = hi.volume;
+    res.centroid = x0 + (T(1) / hi.volume) * hi.vmoment;
+    // S_B = -S_A exactly for the closed polyhedron; average the two for symmetry
+    res.S_A = T(0.5) * (hi.S[0] - hi.S[1]);
+    res.M_A = hi.M[0];
+    res.M_B = hi.M[1];
+    res.area = norm(res.S_A);
+    res.normal = res.area > T(0) ? (T(1) / res.area) * res.S_A : make_vec3(T(0), T(0), T(0));
+    res.depth = seeded ? thick : r;
+    res.nverts = hi.nverts;
+    return res;
+  }
+}    // namespace overlap_detail
+
 // Overlap of two posed polyhedra. Call after GJK has reported intersection
-// (it is also correct, only slower, on separated pairs).
+// (it is also correct, only slower, on separated pairs). localize = false
+// takes the full path (for the tests that compare the two).
 template <typename T, int MF>
 POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const PosedShape<T> &b,
-                                               OverlapWorkspace<T, MF> &ws)
+                                               OverlapWorkspace<T, MF> &ws, bool localize = true)
 {
   OverlapResult<T> res;
   overlap_result_zero(res, STATUS_OK);
@@ -142,6 +414,23 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   const T ttouch = eps * (T(OVERLAP_TOUCH_TOL) * Lmin + T(4) * L);    // [length]
   // planes relative to the start point xs (midpoint of the centroids)
   const Vec3<T> xs = T(0.5) * (a.x + b.x);
+  const int *seed = a.view->dual;
+  const bool seeded =
+      seed != nullptr && seed[0] >= 4 && seed[0] <= w.MAXT && a.view->nverts <= w.MAXT;
+  if (seeded && localize) {
+    int np = 0;
+    const int st = overlap_detail::local_seeded_hull(a, b, w, tol, Lmin, xs, np);
+    if (st == STATUS_OK) {
+      res = overlap_detail::hull_result(w, np, xs, true, T(0), a, b, Lmin, ttouch);
+      res.localized = 1;
+      return res;
+    }
+    if (st == STATUS_SEPARATED) {
+      overlap_result_zero(res, STATUS_SEPARATED);
+      return res;
+    }
+  }
+  // the full path: all of A, B's planes that cut it
   T *pl = w.pl + 4 * NB;
   overlap_detail::posed_planes(a, xs, pl);
   overlap_detail::posed_planes(b, xs, pl + 4 * fa);
@@ -180,9 +469,6 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
   // triangulation (then only B's planes are inserted, and no interior point
   // is needed to build), else a bounding tetrahedron about the Chebyshev
   // centre of both half-space systems (polarisation point, seed Eq. 4).
-  const int *seed = a.view->dual;
-  const bool seeded =
-      seed != nullptr && seed[0] >= 4 && seed[0] <= w.MAXT && a.view->nverts <= w.MAXT;
   Vec3<T> xc = make_vec3(T(0), T(0), T(0));
   T r = T(0);
   if (!seeded) {
@@ -269,63 +555,11 @@ POLYDEM_FN OverlapResult<T> polyhedron_overlap(const PosedShape<T> &a, const Pos
     const T H = T(1.5) * (norm(a.x - x0) + posed_radius(a)) + L;
     st = dual_hull_build(w, H, tol);
   }
-  if (st == STATUS_SEPARATED) {
-    overlap_result_zero(res, STATUS_SEPARATED);
-    return res;
-  }
   if (st != STATUS_OK) {
     overlap_result_zero(res, st);
     return res;
   }
-  if (seeded) {
-    // integrate about a point inside the overlap (the mean of its vertices):
-    // pyramids from a far point would cancel
-    Vec3<T> c = make_vec3(T(0), T(0), T(0));
-    int nc = 0;
-    for (int t = 0; t < w.ntslots; ++t)
-      if (w.tstate[t] == 1) {
-        c += w.P[t];
-        ++nc;
-      }
-    c = (T(1) / T(nc > 0 ? nc : 1)) * c;
-    for (int t = 0; t < w.ntslots; ++t) w.P[t] -= c;
-    // move the planes of the overlap's faces (only those are integrated;
-    // w.hz_new marks them)
-    for (int l = NB; l < np; ++l) w.hz_new[l] = 0;
-    for (int t = 0; t < w.ntslots; ++t)
-      if (w.tstate[t] == 1)
-        for (int e = 0; e < 3; ++e) w.hz_new[w.tc[t][e]] = 1;
-    for (int l = NB; l < np; ++l) {
-      if (!w.hz_new[l]) continue;
-      T *q = w.pl + 4 * l;
-      q[3] = offset_minus_dot(q[3], make_vec3(q[0], q[1], q[2]), c);
-    }
-    x0 += c;
-  }
-  Vec3<T> ref[2] = {a.x - x0, b.x - x0};
-  HullIntegrals<T> hi;
-  dual_hull_integrate(w, ref, hi, T(1e-3) * Lmin);
-  // half-thickness V / (surface area), which is the in-radius of a thin slab
-  // (and r/3 of a ball): the in-radius r decides touching on the Chebyshev
-  // path, this on the seeded path, with the same threshold
-  const T atot = hi.area[0] + hi.area[1];
-  const T thick = atot > T(0) ? hi.volume / atot : T(0);
-  if (!(hi.volume > T(0)) || (seeded && thick <= ttouch)) {
-    overlap_result_zero(res, STATUS_SEPARATED);
-    res.depth = thick > T(0) ? thick : T(0);
-    return res;
-  }
-  res.volume = hi.volume;
-  res.centroid = x0 + (T(1) / hi.volume) * hi.vmoment;
-  // S_B = -S_A exactly for the closed polyhedron; average the two for symmetry
-  res.S_A = T(0.5) * (hi.S[0] - hi.S[1]);
-  res.M_A = hi.M[0];
-  res.M_B = hi.M[1];
-  res.area = norm(res.S_A);
-  res.normal = res.area > T(0) ? (T(1) / res.area) * res.S_A : make_vec3(T(0), T(0), T(0));
-  res.depth = seeded ? thick : r;
-  res.nverts = hi.nverts;
-  return res;
+  return overlap_detail::hull_result(w, np, x0, seeded, r, a, b, Lmin, ttouch);
 }
 
 }    // namespace polydem

@@ -364,15 +364,23 @@ TEST(KernelOverlap, SliversVsExactHalfspaces)
               n, max_vd, nwell, nbeyond, max_cd, max_sens);
 }
 
-// The hull may start from A's precomputed dual triangulation (the default
-// for templates) or from a bounding tetrahedron about the Chebyshev centre
-// (views without one). Both must give the same overlap to round-off.
-TEST(KernelOverlap, SeededAndTetraStartAgree)
+// The hull may start from the part of A facing B (the default for
+// templates, localized), from all of A (its precomputed dual
+// triangulation: the full path) or from a bounding tetrahedron about the
+// Chebyshev centre (views without one). All three must give the same overlap
+// to round-off, and the localized start must serve nearly every pair.
+TEST(KernelOverlap, LocalizedSeededAndTetraStartAgree)
 {
   std::mt19937_64 rng(5);
-  static OverlapWorkspace<double> ws2;
-  double e = 0;
-  int n = 0, seeded = 0;
+  static OverlapWorkspace<double> ws2, ws3;
+  double e_tetra = 0, e_full = 0;
+  int n = 0, seeded = 0, localized = 0;
+  auto dev = [](const OverlapResult<double> &r1, const OverlapResult<double> &r2, double L,
+                double Vp) {
+    return std::max({std::fabs(r1.volume - r2.volume) / Vp, norm(r1.centroid - r2.centroid) / L,
+                     norm(r1.S_A - r2.S_A) / (L * L), norm(r1.M_A - r2.M_A) / (L * L * L),
+                     norm(r1.M_B - r2.M_B) / (L * L * L)});
+  };
   for (int i = 0; i < scale_count(2000); ++i) {
     const Pair p = random_pair(pool(), rng);
     const ShapeView<double> &va = pool().d[p.a]->view;
@@ -381,18 +389,25 @@ TEST(KernelOverlap, SeededAndTetraStartAgree)
     na.dual = nb.dual = nullptr;
     const OverlapResult<double> r1 = run_d(p);
     const OverlapResult<double> r2 = polyhedron_overlap(make_posed(na, p.pa), make_posed(nb, p.pb), ws2);
+    const OverlapResult<double> r3 = polyhedron_overlap(
+        make_posed(va, p.pa), make_posed(pool().d[p.b]->view, p.pb), ws3, false);
     ASSERT_EQ(r1.status == STATUS_OK, r2.status == STATUS_OK) << "V " << r1.volume << " " << r2.volume;
+    ASSERT_EQ(r1.status == STATUS_OK, r3.status == STATUS_OK) << "V " << r1.volume << " " << r3.volume;
+    EXPECT_EQ(r3.localized, 0);
     if (r1.status != STATUS_OK) continue;
     const double L = length_of(p), Vp = vpart(p);
-    e = std::max({e, std::fabs(r1.volume - r2.volume) / Vp, norm(r1.centroid - r2.centroid) / L,
-                  norm(r1.S_A - r2.S_A) / (L * L), norm(r1.M_A - r2.M_A) / (L * L * L),
-                  norm(r1.M_B - r2.M_B) / (L * L * L)});
+    e_tetra = std::max(e_tetra, dev(r1, r2, L, Vp));
+    e_full = std::max(e_full, dev(r1, r3, L, Vp));
+    localized += r1.localized;
     ++n;
   }
-  std::printf("[ seeded vs tetra start ] %d overlapping pairs (%d seeded): max deviation %.2e "
-              "(V/Vp, c/L, S/L^2, M/L^3)\n", n, seeded, e);
+  std::printf("[ localized vs full vs tetra start ] %d overlapping pairs (%d seeded, %d localized):"
+              " max deviation from full %.2e, from tetra %.2e (V/Vp, c/L, S/L^2, M/L^3)\n",
+              n, seeded, localized, e_full, e_tetra);
   EXPECT_EQ(seeded, scale_count(2000));
-  EXPECT_LE(e, 1e-12);
+  EXPECT_GE(localized, 0.99 * n);
+  EXPECT_LE(e_full, 1e-12);
+  EXPECT_LE(e_tetra, 1e-12);
 }
 
 // Aligned unit cubes pressed face to face (side planes coincident, merged
