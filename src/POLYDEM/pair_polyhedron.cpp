@@ -343,7 +343,8 @@ void PairPolyhedron::compute(int eflag, int vflag)
       const auto vj = avec->shape(pshape[j]).view();
       const auto B = polydem::gather_polyhedron_body(atoms, j, vj);
       const auto c =
-          polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate, shear, *ws, local_counts);
+          polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate, shear, *ws, local_counts,
+                                           touch[jj] != 0);
       touch[jj] = c.contact;
       if (!c.contact) continue;
       polydem::scatter_contact_host(f, torque, i, j, newton_pair || j < nlocal, c.cf);

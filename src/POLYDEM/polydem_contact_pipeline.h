@@ -128,21 +128,26 @@ template <typename T> struct PolyhedronBody : BodyMotion<T> {
 // One polyhedron pair (A = the list's i): hist = its tab.nhist values in
 // the pair convention (contact_history_sign), advanced and kept if update
 // (not at setup, where dt does not increment it); ws: the overlap workspace;
-// count[PP_*] incremented.
+// count[PP_*] incremented. touching: the pair was in contact at the last
+// step (the neighbor history's flag); then GJK, only a filter, is skipped,
+// since the overlap decides separation by itself and a pair in contact
+// mostly stays so.
 template <typename T, int MF, typename C>
 POLYDEM_FN PairContactResult<T>
 polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
                         const LawTable<T> &tab, T dt, bool update, T *hist,
-                        OverlapWorkspace<T, MF> &ws, C *count)
+                        OverlapWorkspace<T, MF> &ws, C *count, bool touching = false)
 {
   PairContactResult<T> r;
   r.contact = 0;
-  const auto g = gjk_intersect(A.shape, B.shape);
-  if (g.status == STATUS_SEPARATED) {
-    history_release(hist, tab.nhist);
-    return r;
+  if (!touching) {
+    const auto g = gjk_intersect(A.shape, B.shape);
+    if (g.status == STATUS_SEPARATED) {
+      history_release(hist, tab.nhist);
+      return r;
+    }
+    if (g.status != STATUS_OK) count[PP_NOCONV] += C(1);
   }
-  if (g.status != STATUS_OK) count[PP_NOCONV] += C(1);
   const OverlapResult<T> ov = polyhedron_overlap(A.shape, B.shape, ws);
   if (ov.status != STATUS_OK) {
     if (ov.status == STATUS_OVERFLOW)
