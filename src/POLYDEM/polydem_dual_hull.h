@@ -370,7 +370,7 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
 // pass (seed Eq. 9), accurate to round-off there, and skips the second pass.
 // The default (infinite) always takes the second pass.
 template <typename T, int MP>
-POLYDEM_FN void dual_hull_integrate(DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2],
+POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2],
                                     HullIntegrals<T> &out, T thin_below = T(1e30))
 {
   const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
@@ -379,42 +379,28 @@ POLYDEM_FN void dual_hull_integrate(DualHullWorkspace<T, MP> &w, const Vec3<T> r
   Vec3<T> S[2] = {zero, zero}, M[2] = {zero, zero}, am[2] = {zero, zero};
   T ar[2] = {T(0), T(0)};
   int nv = 0;
-  // per face a: its fan's area A_a (w.cviol) and first moment int p dA
-  // (w.hz_P); the face's normal and offset are constant over it, so the
-  // pyramids, S and M follow face by face (M_k += (int p dA - A ref_k) x n)
-  const int np = w.nplanes;
-  for (int l = 0; l < np; ++l) {
-    w.cviol[l] = T(0);
-    w.hz_P[l] = zero;
-  }
   for (int t = 0; t < w.ntslots; ++t) {
     if (w.tstate[t] != 1) continue;
     ++nv;
     for (int e = 0; e < 3; ++e) {
       const int a = w.tc[t][e];
+      const T *q = w.pl + 4 * a;
       Vec3<T> n, F, p1, p2;
       const T sa = hull_detail::fan_triangle(w, t, e, n, F, p1, p2);
-      w.cviol[a] += sa;
-      w.hz_P[a] += (sa / T(3)) * (F + p1 + p2);
+      const Vec3<T> ct = (T(1) / T(3)) * (F + p1 + p2);
+      vol += q[3] * sa;
+      vm += (T(0.25) * q[3] * sa) * ct;
+      const unsigned char own = w.owner[a];
+      const T wgt = own == OWNER_BOTH ? T(0.5) : T(1);
+      for (int k = 0; k < 2; ++k)
+        if (own & (1 << k)) {
+          const T s = wgt * sa;
+          S[k] += s * n;
+          M[k] += s * cross(ct - ref[k], n);
+          ar[k] += s;
+          am[k] += s * ct;
+        }
     }
-  }
-  for (int a = 0; a < np; ++a) {
-    const T sa = w.cviol[a];
-    if (sa == T(0)) continue;
-    const T *q = w.pl + 4 * a;
-    const Vec3<T> n = make_vec3(q[0], q[1], q[2]);
-    const Vec3<T> &pm = w.hz_P[a];
-    vol += q[3] * sa;
-    vm += (T(0.25) * q[3]) * pm;
-    const unsigned char own = w.owner[a];
-    const T wgt = own == OWNER_BOTH ? T(0.5) : T(1);
-    for (int k = 0; k < 2; ++k)
-      if (own & (1 << k)) {
-        S[k] += (wgt * sa) * n;
-        M[k] += wgt * cross(pm - sa * ref[k], n);
-        ar[k] += wgt * sa;
-        am[k] += wgt * pm;
-      }
   }
   // global orientation of the dual triangles: volume must be positive
   const T sgn = vol < T(0) ? T(-1) : T(1);
