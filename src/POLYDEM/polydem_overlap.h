@@ -77,20 +77,24 @@ namespace overlap_detail {
     return s - s == T(0);
   }
 
-  // planes of a posed shape relative to the point o: n_lab, h = d_lab - n_lab . o
+  // plane f of a posed shape relative to the hull origin (xo = a.x - origin):
+  // n_lab, h = d_lab - n_lab . origin, into d[0..3]
+  template <typename T>
+  POLYDEM_FN void posed_plane(const PosedShape<T> &a, int f, const Vec3<T> &xo, T *d)
+  {
+    const T *q = a.view->planes + 4 * f;
+    const Vec3<T> n = matvec(a.R, make_vec3(q[0], q[1], q[2]));
+    d[0] = n.x;
+    d[1] = n.y;
+    d[2] = n.z;
+    d[3] = a.s * q[3] + dot(n, xo);
+  }
+  // all planes of a posed shape relative to the point o
   template <typename T>
   POLYDEM_FN void posed_planes(const PosedShape<T> &a, const Vec3<T> &o, T *pl)
   {
-    const ShapeView<T> &v = *a.view;
     const Vec3<T> xo = a.x - o;
-    for (int f = 0; f < v.nfaces; ++f) {
-      const T *q = v.planes + 4 * f;
-      const Vec3<T> n = matvec(a.R, make_vec3(q[0], q[1], q[2]));
-      pl[4 * f] = n.x;
-      pl[4 * f + 1] = n.y;
-      pl[4 * f + 2] = n.z;
-      pl[4 * f + 3] = a.s * q[3] + dot(n, xo);
-    }
+    for (int f = 0; f < a.view->nfaces; ++f) posed_plane(a, f, xo, pl + 4 * f);
   }
   // -1 if the posed shape o lies inside n . (p - xs) <= h - tol: the plane
   // cannot bound the overlap with o and may be dropped; else the index of
@@ -217,13 +221,7 @@ namespace overlap_detail {
         if (!w.hz_new[l]) {
           w.hz_new[l] = 1;
           w.hz_tri[nka++] = l;
-          const T *p = va.planes + 4 * q[e];
-          const Vec3<T> nl = matvec(a.R, make_vec3(p[0], p[1], p[2]));
-          T *d = w.pl + 4 * l;
-          d[0] = nl.x;
-          d[1] = nl.y;
-          d[2] = nl.z;
-          d[3] = a.s * p[3] + dot(nl, xa);
+          posed_plane(a, q[e], xa, w.pl + 4 * l);
           w.owner[l] = OWNER_A;
           w.conflict[l] = -2;
         }
@@ -277,28 +275,23 @@ namespace overlap_detail {
       for (int k = vb.face_start[f]; k < vb.face_start[f + 1] && !reach; ++k)
         reach = pb[vb.face_verts[k]] <= sA + tol;
       if (!reach) continue;
-      const T *p = vb.planes + 4 * f;
-      const Vec3<T> nl = matvec(b.R, make_vec3(p[0], p[1], p[2]));
-      const T h = b.s * p[3] + dot(nl, xb);
+      // posed into slot np, kept there unless merged
+      T *d = w.pl + 4 * np;
+      posed_plane(b, f, xb, d);
       bool merged = false;
       for (int i = 0; i < nka && !merged; ++i) {
         const int j = w.hz_tri[i];
         const T *pj = w.pl + 4 * j;
-        const T dx = pj[0] - nl.x;
+        const T dx = pj[0] - d[0];
         if (fabs(dx) > T(16) * Eps<T>::value) continue;
-        const T dy = pj[1] - nl.y, dz = pj[2] - nl.z;
+        const T dy = pj[1] - d[1], dz = pj[2] - d[2];
         if (dx * dx + dy * dy + dz * dz <= T(256) * Eps<T>::value * Eps<T>::value &&
-            fabs(pj[3] - h) <= tol) {
+            fabs(pj[3] - d[3]) <= tol) {
           w.owner[j] = OWNER_BOTH;
           merged = true;
         }
       }
       if (merged) continue;
-      T *d = w.pl + 4 * np;
-      d[0] = nl.x;
-      d[1] = nl.y;
-      d[2] = nl.z;
-      d[3] = h;
       w.owner[np] = OWNER_B;
       ++np;
     }
