@@ -37,6 +37,7 @@
 #include "polydem_clip.h"
 #include "polydem_contact_law.h"
 #include "polydem_defs.h"
+#include "polydem_ellipsoid_overlap.h"
 #include "polydem_gjk.h"
 #include "polydem_math.h"
 #include "polydem_overlap.h"
@@ -84,6 +85,7 @@ enum Slot : int {
   R_TX, R_TY, R_TZ,
   R_E,
   R_Q0, R_Q1, R_Q2, R_Q3,
+  R_EV, R_ESX, R_ESY, R_ESZ, R_EMX, R_EMY, R_EMZ,
   NSLOT
 };
 enum StatusSlot : int { S_GJK, S_OVERLAP, S_CLIP, NSTATUS };
@@ -92,7 +94,9 @@ static const char *const slot_name[NSLOT] = {
     "gjk distance", "V", "centroid.x", "centroid.y", "centroid.z", "S.x", "S.y", "S.z",
     "M_A.x", "M_A.y", "M_A.z", "M_B.x", "M_B.y", "M_B.z", "clip area", "clip volume",
     "clip S.x", "clip S.y", "clip S.z", "clip M.x", "clip M.y", "clip M.z", "F.x", "F.y",
-    "F.z", "tau.x", "tau.y", "tau.z", "energy", "q.w", "q.x", "q.y", "q.z"};
+    "F.z", "tau.x", "tau.y", "tau.z", "energy", "q.w", "q.x", "q.y", "q.z",
+    "ellipsoid V", "ellipsoid S.x", "ellipsoid S.y", "ellipsoid S.z", "ellipsoid M_A.x",
+    "ellipsoid M_A.y", "ellipsoid M_A.z"};
 #endif
 
 // one pair's input: two posed templates, a triangle, the velocities
@@ -178,6 +182,20 @@ KOKKOS_INLINE_FUNCTION void run_pair(const ShapeView<T> &va, const ShapeView<T> 
   r[R_Q1] = q[1];
   r[R_Q2] = q[2];
   r[R_Q3] = q[3];
+  // A against an ellipsoid at B's pose, semi-axes (1, 0.7, 0.5) x B's bounding radius
+  EllipsoidPose<T> e;
+  e.x = c.pb.x;
+  e.q = c.pb.q;
+  const T rb = c.pb.s * vb.radius;
+  e.axes = make_vec3(rb, T(0.7) * rb, T(0.5) * rb);
+  const OverlapResult<T> eo = polyhedron_ellipsoid_overlap(a, e);
+  r[R_EV] = eo.volume;
+  r[R_ESX] = eo.S_A.x;
+  r[R_ESY] = eo.S_A.y;
+  r[R_ESZ] = eo.S_A.z;
+  r[R_EMX] = eo.M_A.x;
+  r[R_EMY] = eo.M_A.y;
+  r[R_EMZ] = eo.M_A.z;
 }
 
 // The arrays of all templates (type T) in one memory space, and views into them.
