@@ -3,9 +3,11 @@
 // cylinder pairs (D = 8 mm, L = 5.3 mm, 20 points per rim) in random
 // orientations at overlaps of 0.1-1 % of the particle volume; ns per
 // polyhedron-triangle clip (fix wall/mesh) for triangles near a particle's
-// lowest point.
+// lowest point; ns per polyhedron-sphere and polyhedron-ellipsoid overlap
+// (the same volume as the polyhedron) at the same overlaps.
 // Results: bench/RESULTS.md, section "Geometry kernels".
 #include "polydem_clip.h"
+#include "polydem_ellipsoid_overlap.h"
 #include "polydem_gjk.h"
 #include "polydem_overlap.h"
 #include "polydem_shape_template.h"
@@ -190,7 +192,74 @@ template <int MF> void gjk_then_overlap(benchmark::State &st, PairSet &ps)
   }
 }
 
+// a polyhedron against an ellipsoid of the polyhedron's volume, semi-axes in
+// the ratios `ratio`, at overlap V / V_particle uniform in [1e-3, 1e-2]
+struct MixedSet {
+  Shape shape;
+  std::vector<PosedShape<double>> a;
+  std::vector<EllipsoidPose<double>> b;
+  double vp = 0;
+};
+
+MixedSet *make_mixed(Shape s, Vec3<double> ratio, int n)
+{
+  auto *ms = new MixedSet{std::move(s), {}, {}, 0};
+  ms->vp = ms->shape.tmpl->volume();
+  const double k = std::cbrt(ms->vp / (4.0 / 3.0 * M_PI * ratio.x * ratio.y * ratio.z));
+  const Vec3<double> axes = k * ratio;
+  std::mt19937_64 rng(2);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> g(0, 1);
+  while ((int) ms->a.size() < n) {
+    Pose<double> pa;
+    pa.x = make_vec3(0.0, 0.0, 0.0);
+    pa.q = rquat(rng);
+    pa.s = 1.0;
+    EllipsoidPose<double> e;
+    e.q = rquat(rng);
+    e.axes = axes;
+    Vec3<double> d = make_vec3(g(rng), g(rng), g(rng));
+    d = (1.0 / norm(d)) * d;
+    const double target = ms->vp * (1e-3 + 9e-3 * u(rng));
+    double lo = 0, hi = 1.1 * (ms->shape.view.radius + std::fmax(axes.x, std::fmax(axes.y, axes.z)));
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      e.x = mid * d;
+      const double v = polyhedron_ellipsoid_overlap(make_posed(ms->shape.view, pa), e).volume;
+      (v > target ? lo : hi) = mid;
+    }
+    e.x = lo * d;
+    ms->a.push_back(make_posed(ms->shape.view, pa));
+    ms->b.push_back(e);
+  }
+  for (auto &a : ms->a) a.view = &ms->shape.view;
+  return ms;
+}
+
+void ellipsoid_overlap(benchmark::State &st, MixedSet *ms)
+{
+  size_t i = 0, n = ms->a.size();
+  double vsum = 0;
+  int bad = 0;
+  for (auto _ : st) {
+    auto r = polyhedron_ellipsoid_overlap(ms->a[i], ms->b[i]);
+    benchmark::DoNotOptimize(r);
+    vsum += r.volume;
+    bad += r.status != STATUS_OK;
+    if (++i == n) i = 0;
+  }
+  st.counters["V/Vp"] = vsum / st.iterations() / ms->vp;
+  st.counters["not_ok"] = bad;
+}
+
 }    // namespace
+
+BENCHMARK_CAPTURE(ellipsoid_overlap, dodecahedron_sphere,
+                  make_mixed(dodecahedron(true), make_vec3(1.0, 1.0, 1.0), 512));
+BENCHMARK_CAPTURE(ellipsoid_overlap, dodecahedron_ellipsoid,
+                  make_mixed(dodecahedron(true), make_vec3(1.4, 1.0, 0.7), 512));
+BENCHMARK_CAPTURE(ellipsoid_overlap, cylinder42_sphere,
+                  make_mixed(cylinder(true), make_vec3(1.0, 1.0, 1.0), 512));
 
 void overlap_ws12(benchmark::State &st, PairSet &ps)
 {

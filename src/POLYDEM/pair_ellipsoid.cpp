@@ -197,7 +197,7 @@ void PairEllipsoid::init_style()
     MPI_Allreduce(&f, &gf, 1, MPI_INT, MPI_MAX, world);
     error->all(FLERR, "pair_style ellipsoid: {} atoms have a polyhedron shape (e.g. '{}'); "
                "define their shape with 'polyhedron_shape ID ellipsoid a b c' or use "
-               "pair_style polyhedron (mixed contacts are not supported)", all,
+               "pair_style polyhedron, which takes polyhedra together with spheres", all,
                avec->shape_id(gf));
   }
 

@@ -197,17 +197,39 @@ void PairPolyhedron::init_style()
     if (avec->shape(t).nfaces() > 128)
       error->all(FLERR, "pair_style polyhedron: shape '{}' has {} faces, more than 128",
                  avec->shape_id(t), avec->shape(t).nfaces());
-  // ellipsoid templates belong to pair_style ellipsoid (mixed contacts not supported)
-  int nell = 0;
-  for (int i = 0; i < atom->nlocal; i++) nell += avec->shape(atom->pshape[i]).is_ellipsoid();
-  MPI_Allreduce(MPI_IN_PLACE, &nell, 1, MPI_INT, MPI_SUM, world);
-  if (nell) error->all(FLERR, "pair_style polyhedron: {} atoms have an ellipsoid shape; "
-                       "use pair_style ellipsoid (mixed contacts are not supported)", nell);
-  // and those an insertion fix will add
-  for (const auto &c : ParticleSource::candidates(lmp))
-    if (avec->shape(c.ishape).is_ellipsoid())
-      error->all(FLERR, "fix {}: shape '{}' is an ellipsoid, but pair_style polyhedron takes "
-                 "polyhedra only", c.source, avec->shape_id(c.ishape));
+  // spheres and ellipsoids meet polyhedra and spheres by their exact overlap
+  // volume; two ellipsoids of which one has unequal semi-axes have no volume
+  // kernel (pair_style ellipsoid takes scenes of ellipsoids alone)
+  auto aniso = [&](int ishape) {
+    const auto &sh = avec->shape(ishape);
+    if (!sh.is_ellipsoid()) return false;
+    const auto &a = sh.semi_axes();
+    return !(a[0] == a[1] && a[0] == a[2]);
+  };
+  int nell[2] = {0, 0}, first = -1;    // ellipsoid atoms, of them with unequal axes
+  for (int i = 0; i < atom->nlocal; i++)
+    if (avec->shape(atom->pshape[i]).is_ellipsoid()) {
+      nell[0]++;
+      if (aniso(atom->pshape[i])) {
+        nell[1]++;
+        first = atom->pshape[i];
+      }
+    }
+  MPI_Allreduce(MPI_IN_PLACE, nell, 2, MPI_INT, MPI_SUM, world);
+  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MAX, world);
+  bool source_ell = false;
+  for (const auto &c : ParticleSource::candidates(lmp)) {
+    source_ell = source_ell || avec->shape(c.ishape).is_ellipsoid();
+    if (aniso(c.ishape)) {
+      nell[1]++;
+      first = c.ishape;
+    }
+  }
+  if (nell[1] > 0 && (nell[0] > 1 || source_ell))
+    error->all(FLERR, "pair_style polyhedron: shape '{}' is an ellipsoid with unequal semi-axes; "
+               "two ellipsoids meet by overlap volume only if both are spheres (equal "
+               "semi-axes). Use spheres, or pair_style ellipsoid for a scene of ellipsoids alone",
+               avec->shape_id(first));
 
   dt = update->dt;
 
@@ -280,6 +302,7 @@ void PairPolyhedron::check_timestep()
     const double R = s * cbrt(3.0 * V / (4.0 * MY_PI));
     const double kn = 2.0 * youngs[type] * R;
     check.contact(0.5 * m, kn * force->ftm2v);
+    if (shape.is_ellipsoid()) return;
     // like pair of this particle, its largest face flat on another's
     const double Vs = V * s * s * s, ms = m / force->ftm2v;
     const auto law = polydem::feng_law(youngs[type], 0.0, Vs, youngs[type], 0.0, Vs,
@@ -290,8 +313,7 @@ void PairPolyhedron::check_timestep()
   for (int i = 0; i < atom->nlocal; i++)
     consider(atom->pshape[i], atom->pscale[i], atom->rmass[i], atom->type[i]);
   // and the smallest of each kind an insertion fix will add
-  for (const auto &c : ParticleSource::candidates(lmp))
-    if (!avec->shape(c.ishape).is_ellipsoid()) consider(c.ishape, c.scale, c.mass, c.type);
+  for (const auto &c : ParticleSource::candidates(lmp)) consider(c.ishape, c.scale, c.mass, c.type);
   check.report(lmp, "pair polyhedron", "like pair, contact area R^2", "a like grain", core);
 }
 

@@ -6,7 +6,10 @@
    bounded loops).
 
      polyhedron_pair_contact  pair polyhedron:  GJK -> overlap polyhedron
-                              (polydem_overlap.h) -> Feng law
+                              (polydem_overlap.h), or the exact overlap of
+                              a polyhedron and a sphere or ellipsoid, or of
+                              two spheres (polydem_ellipsoid_overlap.h)
+                              -> Feng law
      ellipsoid_pair_contact   pair ellipsoid:   characteristic quartic and
                               contact point (polydem_ellipsoid_force.h) ->
                               linear law
@@ -19,7 +22,7 @@
    history slot, and returns the force, torques and energy; its kernel
    counters are added to the caller's array (indices PP_*, EP_*; the wall's
    are in WallPatches and WallWarnings). A new contact kind (mixed
-   polyhedron-ellipsoid, composites) is one more entry point here.
+   composites) is one more entry point here.
 
    The law of each contact comes from the style's LawTable (polydem_law_table.h).
 ------------------------------------------------------------------------- */
@@ -27,6 +30,7 @@
 #ifndef POLYDEM_CONTACT_PIPELINE_H
 #define POLYDEM_CONTACT_PIPELINE_H
 
+#include "polydem_ellipsoid_overlap.h"
 #include "polydem_law_table.h"
 #include "polydem_overlap.h"
 #include "polydem_pair_counts.h"
@@ -125,7 +129,35 @@ template <typename T> struct PolyhedronBody : BodyMotion<T> {
 };
 
 
-// One polyhedron pair (A = the list's i): hist = its tab.nhist values in
+// The overlap of a pair of which at least one is an ellipsoid template
+// (view_is_ellipsoid): a polyhedron and an ellipsoid (either order), two
+// spheres; two ellipsoids of which one has unequal semi-axes are
+// STATUS_UNSUPPORTED (pair_style polyhedron refuses them at its init).
+template <typename T>
+POLYDEM_FN OverlapResult<T> mixed_pair_overlap(const PosedShape<T> &A, const PosedShape<T> &B)
+{
+  const T *aa = A.view->axes, *ab = B.view->axes;
+  const bool ea = view_is_ellipsoid(*A.view), eb = view_is_ellipsoid(*B.view);
+  if (ea && eb) {
+    if (aa[0] == aa[1] && aa[0] == aa[2] && ab[0] == ab[1] && ab[0] == ab[2])
+      return sphere_pair_overlap(A.x, A.s * aa[0], B.x, B.s * ab[0]);
+    OverlapResult<T> r = sphere_pair_overlap(A.x, T(-1), B.x, T(-1));
+    r.status = STATUS_UNSUPPORTED;
+    return r;
+  }
+  if (eb) return polyhedron_ellipsoid_overlap(A, B.x, B.R, B.s * make_vec3(ab[0], ab[1], ab[2]));
+  // A is the ellipsoid: B against A, the roles swapped back
+  OverlapResult<T> r = polyhedron_ellipsoid_overlap(B, A.x, A.R, A.s * make_vec3(aa[0], aa[1], aa[2]));
+  const Vec3<T> m = r.M_A;
+  r.S_A = -r.S_A;
+  r.normal = -r.normal;
+  r.M_A = r.M_B;
+  r.M_B = m;
+  return r;
+}
+
+// One pair of pair polyhedron (A = the list's i): polyhedra, spheres and
+// ellipsoids by their overlap volume; hist = its tab.nhist values in
 // the pair convention (contact_history_sign), advanced and kept if update
 // (not at setup, where dt does not increment it); ws: the overlap workspace;
 // count[PP_*] incremented. touching: the pair was in contact at the last
@@ -140,7 +172,8 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
 {
   PairContactResult<T> r;
   r.contact = 0;
-  if (!touching) {
+  const bool mixed = view_is_ellipsoid(*A.shape.view) || view_is_ellipsoid(*B.shape.view);
+  if (!touching && !mixed) {
     const auto g = gjk_intersect(A.shape, B.shape);
     if (g.status == STATUS_SEPARATED) {
       history_release(hist, tab.nhist);
@@ -148,11 +181,12 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     }
     if (g.status != STATUS_OK) count[PP_NOCONV] += C(1);
   }
-  const OverlapResult<T> ov = polyhedron_overlap(A.shape, B.shape, ws);
+  const OverlapResult<T> ov =
+      mixed ? mixed_pair_overlap(A.shape, B.shape) : polyhedron_overlap(A.shape, B.shape, ws);
   if (ov.status != STATUS_OK) {
     if (ov.status == STATUS_OVERFLOW)
       count[PP_OVERFLOW] += C(1);
-    else if (ov.status == STATUS_DEGENERATE)
+    else if (ov.status == STATUS_DEGENERATE || ov.status == STATUS_UNSUPPORTED)
       count[PP_DEGENERATE] += C(1);
     history_release(hist, tab.nhist);
     return r;

@@ -37,7 +37,8 @@ enum Status : int {
   STATUS_SEPARATED = 1,    // no overlap (result valid: zero)
   STATUS_OVERFLOW = 2,     // fixed-size workspace too small; result invalid
   STATUS_NO_CONVERGENCE = 3,    // iteration cap hit; result invalid
-  STATUS_DEGENERATE = 4    // input degenerate (NaN, zero size...); result invalid
+  STATUS_DEGENERATE = 4,   // input degenerate (NaN, zero size...); result invalid
+  STATUS_UNSUPPORTED = 5   // no kernel for this pair of shapes; result invalid
 };
 
 template <typename T> struct Eps;

@@ -65,6 +65,20 @@ namespace ellipsoid_overlap_detail {
     bool robust;
   };
 
+  // apart: V = 0, every field zero
+  template <typename T> POLYDEM_FN OverlapResult<T> no_overlap()
+  {
+    OverlapResult<T> r;
+  r.status = STATUS_SEPARATED;
+  r.volume = T(0);
+  r.centroid = r.S_A = r.M_A = r.M_B = r.normal = make_vec3(T(0), T(0), T(0));
+  r.area = T(0);
+  r.depth = T(0);
+  r.nverts = 0;
+  r.localized = 0;
+    return r;
+  }
+
   template <typename T> POLYDEM_FN void zero(FaceMoments<T> &f, bool robust)
   {
     f.area = T(0);
@@ -167,28 +181,23 @@ namespace ellipsoid_overlap_detail {
 // STATUS_DEGENERATE for non-finite or non-positive input. always_robust:
 // take the well-conditioned solid-angle sum even where it is not needed
 // (tests compare the two).
+// B given by its centre xB, rotation RB (body -> lab) and lab semi-axes.
 template <typename T>
 POLYDEM_FN OverlapResult<T> polyhedron_ellipsoid_overlap(const PosedShape<T> &A,
-                                                         const EllipsoidPose<T> &B,
+                                                         const Vec3<T> &xB, const Mat3<T> &RB,
+                                                         const Vec3<T> &axes,
                                                          bool always_robust = false)
 {
   namespace D = ellipsoid_overlap_detail;
-  OverlapResult<T> r;
-  r.status = STATUS_SEPARATED;
-  r.volume = T(0);
-  r.centroid = r.S_A = r.M_A = r.M_B = r.normal = make_vec3(T(0), T(0), T(0));
-  r.area = T(0);
-  r.depth = T(0);
-  r.nverts = 0;
-  r.localized = 0;
+  OverlapResult<T> r = D::no_overlap<T>();
 
   const ShapeView<T> &sv = *A.view;
-  const Vec3<T> ax = B.axes;
+  const Vec3<T> ax = axes;
   if (!(ax.x > T(0) && ax.y > T(0) && ax.z > T(0)) || !(A.s > T(0)) || sv.nfaces < 4) {
     r.status = STATUS_DEGENERATE;
     return r;
   }
-  const Vec3<T> dAB = A.x - B.x;
+  const Vec3<T> dAB = A.x - xB;
   const T amax = ax.x > ax.y ? (ax.x > ax.z ? ax.x : ax.z) : (ax.y > ax.z ? ax.y : ax.z);
   const T reach = A.s * sv.radius + amax;
   if (!(dot(dAB, dAB) <= reach * reach)) {
@@ -197,7 +206,6 @@ POLYDEM_FN OverlapResult<T> polyhedron_ellipsoid_overlap(const PosedShape<T> &A,
   }
 
   // B's frame: Q = R_B^T R_A takes A's body axes to B's, t = A's centroid
-  const Mat3<T> RB = quat_to_mat(B.q);
   Mat3<T> Q;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -245,7 +253,7 @@ POLYDEM_FN OverlapResult<T> polyhedron_ellipsoid_overlap(const PosedShape<T> &A,
     if (inside) {
       r.status = STATUS_OK;
       r.volume = abc * FOUR_PI / T(3);
-      r.centroid = B.x;
+      r.centroid = xB;
       r.M_B = r.M_A = make_vec3(T(0), T(0), T(0));
     }
     return r;
@@ -268,25 +276,46 @@ POLYDEM_FN OverlapResult<T> polyhedron_ellipsoid_overlap(const PosedShape<T> &A,
     T s;
     mapped_plane(f, n, s);
     const int k0 = sv.face_start[f], k1 = sv.face_start[f + 1];
-    if (!(s < T(1) && s > T(-1))) {
-      if (robust) {    // Omega(F), signed, by the fan from the face's first vertex
-        const Vec3<T> v0 = map_vertex(sv.face_verts[k0]);
-        Vec3<T> v1 = map_vertex(sv.face_verts[k0 + 1]);
-        const T l0 = norm(v0);
-        for (int k = k0 + 2; k < k1; ++k) {
-          const Vec3<T> v2 = map_vertex(sv.face_verts[k]);
-          const T l1 = norm(v1), l2 = norm(v2);
-          wout += T(2) * atan2(dot(v0, cross(v1, v2)),
-                               l0 * l1 * l2 + dot(v0, v1) * l2 + dot(v0, v2) * l1 +
-                                   dot(v1, v2) * l0);
-          v1 = v2;
-        }
+    // Omega(F), signed, by the fan from the face's first vertex
+    auto fan_omega = [&]() {
+      const Vec3<T> v0 = map_vertex(sv.face_verts[k0]);
+      Vec3<T> v1 = map_vertex(sv.face_verts[k0 + 1]);
+      const T l0 = norm(v0);
+      T w = T(0);
+      for (int k = k0 + 2; k < k1; ++k) {
+        const Vec3<T> v2 = map_vertex(sv.face_verts[k]);
+        const T l1 = norm(v1), l2 = norm(v2);
+        w += T(2) * atan2(dot(v0, cross(v1, v2)),
+                          l0 * l1 * l2 + dot(v0, v1) * l2 + dot(v0, v2) * l1 + dot(v1, v2) * l0);
+        v1 = v2;
       }
+      return w;
+    };
+    if (!(s < T(1) && s > T(-1))) {
+      if (robust) wout += fan_omega();
       continue;
     }
     const Vec3<T> o = s * n;
     const T as = s >= T(0) ? s : -s;
     const T rho = sqrt((T(1) - s) * (T(1) + s));
+    // the disk wholly beyond one of the face's edges: F n D is empty (its
+    // fan's pieces would cancel exactly)
+    {
+      bool apart = false;
+      const Vec3<T> first = map_vertex(sv.face_verts[k0]) - o;
+      Vec3<T> p = first;
+      for (int k = k0; k < k1 && !apart; ++k) {
+        const Vec3<T> q = k + 1 < k1 ? map_vertex(sv.face_verts[k + 1]) - o : first;
+        const Vec3<T> m = cross(q - p, n);    // outward in the face's plane
+        const T out = -dot(p, m);             // |m| x distance of o beyond the edge
+        apart = out > T(0) && out * out > rho * rho * dot(m, m);
+        p = q;
+      }
+      if (apart) {
+        if (robust) wout += fan_omega();
+        continue;
+      }
+    }
     D::FaceMoments<T> fm;
     D::zero(fm, robust);
     const Vec3<T> first = map_vertex(sv.face_verts[k0]) - o;
@@ -321,13 +350,67 @@ POLYDEM_FN OverlapResult<T> polyhedron_ellipsoid_overlap(const PosedShape<T> &A,
   r.status = STATUS_OK;
   r.volume = abc * vmap;
   const Vec3<T> cm = (T(1) / vmap) * moment;
-  r.centroid = B.x + matvec(RB, make_vec3(cm.x * ax.x, cm.y * ax.y, cm.z * ax.z));
+  r.centroid = xB + matvec(RB, make_vec3(cm.x * ax.x, cm.y * ax.y, cm.z * ax.z));
   r.S_A = abc * matvec(RB, make_vec3(area_m.x * inv.x, area_m.y * inv.y, area_m.z * inv.z));
   r.M_A = abc * matvec(RB, torque_b);
   r.M_B = -r.M_A - cross(dAB, r.S_A);
   r.area = norm(r.S_A);
   if (r.area > T(0)) r.normal = (T(1) / r.area) * r.S_A;
   if (area_abs > T(0)) r.depth = r.volume / (T(2) * area_abs);
+  return r;
+}
+
+template <typename T>
+POLYDEM_FN OverlapResult<T> polyhedron_ellipsoid_overlap(const PosedShape<T> &A,
+                                                         const EllipsoidPose<T> &B,
+                                                         bool always_robust = false)
+{
+  return polyhedron_ellipsoid_overlap(A, B.x, quat_to_mat(B.q), B.axes, always_robust);
+}
+
+// Two spheres (a lens, two caps): V = pi (ra + rb - d)^2 (d^2 + 2 d (ra + rb)
+// - 3 (ra - rb)^2) / (12 d); S_A = pi a^2 (xB - xA)/d, a the radius of the
+// circle where the spheres meet; M_A = M_B = 0; the centroid from the caps'.
+// A sphere inside the other: the smaller sphere, no gradient.
+template <typename T>
+POLYDEM_FN OverlapResult<T> sphere_pair_overlap(const Vec3<T> &xA, T ra, const Vec3<T> &xB, T rb)
+{
+  OverlapResult<T> r = ellipsoid_overlap_detail::no_overlap<T>();
+  const Vec3<T> dv = xB - xA;
+  const T d = norm(dv);
+  if (!(ra > T(0) && rb > T(0)) || !(d - d == T(0))) {
+    r.status = STATUS_DEGENERATE;
+    return r;
+  }
+  if (!(d < ra + rb)) return r;
+  constexpr T PI = T(3.14159265358979323846264338327950288);
+  const T rmin = ra < rb ? ra : rb;
+  if (d <= (ra > rb ? ra - rb : rb - ra)) {    // one inside the other
+    r.status = STATUS_OK;
+    r.volume = T(4) / T(3) * PI * rmin * rmin * rmin;
+    r.centroid = ra < rb ? xA : xB;
+    r.depth = rmin;
+    return r;
+  }
+  const Vec3<T> n = (T(1) / d) * dv;
+  // the circle's plane at distance ha from xA; the caps' heights
+  const T ha = T(0.5) * (d + (ra - rb) * (ra + rb) / d);
+  const T capa = ra - ha, capb = rb - (d - ha);
+  const T vol_a = PI * capa * capa * (T(3) * ra - capa) / T(3);
+  const T vol_b = PI * capb * capb * (T(3) * rb - capb) / T(3);
+  const T V = vol_a + vol_b;
+  if (!(V > T(1024) * Eps<T>::value * rmin * rmin * rmin)) return r;
+  // a cap's centroid from its sphere's centre: 3 (2r - h)^2 / (4 (3r - h))
+  const T za = T(3) * (T(2) * ra - capa) * (T(2) * ra - capa) / (T(4) * (T(3) * ra - capa));
+  const T zb = T(3) * (T(2) * rb - capb) * (T(2) * rb - capb) / (T(4) * (T(3) * rb - capb));
+  const T a2 = capa * (ra + ha);
+  r.status = STATUS_OK;
+  r.volume = V;
+  r.centroid = xA + ((vol_a * za + vol_b * (d - zb)) / V) * n;
+  r.area = PI * (a2 > T(0) ? a2 : T(0));
+  r.S_A = r.area * n;
+  r.normal = n;
+  if (r.area > T(0)) r.depth = V / (T(2) * r.area);
   return r;
 }
 

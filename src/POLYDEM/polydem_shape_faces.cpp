@@ -98,7 +98,7 @@ template <typename T>
 static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, const int *fs,
                               const int *fv, const int *ed, double r, double vol,
                               const std::array<double, 3> &mom, const int *dual,
-                              const int *vadj)
+                              const int *vadj, const std::array<double, 3> &axes)
 {
   ShapeView<T> s;
   s.nverts = nv;
@@ -114,6 +114,7 @@ static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, c
   for (int i = 0; i < 3; ++i) s.inertia[i] = (T) mom[i];
   s.dual = dual;
   s.vadj = vadj;
+  for (int i = 0; i < 3; ++i) s.axes[i] = (T) axes[i];
   return s;
 }
 
@@ -122,7 +123,7 @@ ShapeView<double> PolyShapeTemplate::view() const
   return make_view<double>(nverts(), nfaces(), nedges(), verts_.data(), planes_.data(),
                            face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
                            moments_, dual_.empty() ? nullptr : dual_.data(),
-                           vadj_.empty() ? nullptr : vadj_.data());
+                           vadj_.empty() ? nullptr : vadj_.data(), axes_);
 }
 
 ShapeView<float> PolyShapeTemplate::view_float() const
@@ -130,7 +131,7 @@ ShapeView<float> PolyShapeTemplate::view_float() const
   return make_view<float>(nverts(), nfaces(), nedges(), verts_f_.data(), planes_f_.data(),
                           face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
                           moments_, dual_.empty() ? nullptr : dual_.data(),
-                           vadj_.empty() ? nullptr : vadj_.data());
+                           vadj_.empty() ? nullptr : vadj_.data(), axes_);
 }
 
 }    // namespace polydem

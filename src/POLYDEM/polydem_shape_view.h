@@ -41,7 +41,15 @@ template <typename T> struct ShapeView {
   // then scans every vertex instead of climbing along the edges.
   // vadj[v]..vadj[v+1]-1 index the neighbours of v within vadj itself.
   const int *vadj = nullptr;
+  // an ellipsoid template (no vertices or faces): its semi-axes along the
+  // body axes at unit scale; zero for a polyhedron (view_is_ellipsoid)
+  T axes[3] = {T(0), T(0), T(0)};
 };
+
+template <typename T> POLYDEM_FN bool view_is_ellipsoid(const ShapeView<T> &v)
+{
+  return v.axes[0] > T(0);
+}
 
 // ints in a view's dual triangulation array (0 if it has none)
 template <typename T> POLYDEM_FN int dual_seed_ints(const ShapeView<T> &v)

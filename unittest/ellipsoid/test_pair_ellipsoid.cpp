@@ -335,7 +335,8 @@ TEST(PairEllipsoid, BadInput)
             std::string::npos);
   l.cmds({"polyhedron_set atom 2 shape e", "run 0", "pair_style polyhedron",
           "pair_coeff * * 1e7 0.3 0.9 0.0"});
-  EXPECT_NE(l.error_of("run 0").find("2 atoms have an ellipsoid shape"), std::string::npos);
+  EXPECT_NE(l.error_of("run 0").find("shape 'e' is an ellipsoid with unequal semi-axes"),
+            std::string::npos);
 }
 
 // Friction (pair_coeff ... mu): two spheres (r = 2 cm) both spinning at

@@ -563,7 +563,7 @@ TEST(Insert, BadInputIsRefusedClearly)
     l.cmds(box);
     l.cmds({"comm_modify vel yes", f + "10 1 density 1 region box shape e 1 scale 0.001 per 1",
             "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.5 0.5"});
-    EXPECT_TRUE(has(l.error_of("run 0"), "is an ellipsoid, but pair_style polyhedron"));
+    EXPECT_TRUE(has(l.error_of("run 0"), "shape 'e' is an ellipsoid with unequal semi-axes"));
   }
   {
     // and the other way round (the pair styles refuse, through ParticleSource)

@@ -5,6 +5,9 @@
 #include "polydem_overlap.h"
 #include "test_shapes.h"
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 
@@ -219,6 +222,25 @@ inline Pair degenerate_pair(const ShapePool &pool, std::mt19937_64 &rng, int kin
     }
   }
   return p;
+}
+
+// S_A, M_A, M_B of r against their central differences fs, fma, fmb: the
+// errors relative to |S_A| (the moments' to |S_A| L) kept as maxima in
+// emax[3], each expected <= tol
+inline void expect_gradients(const polydem::OverlapResult<double> &r, const Vec3<double> &fs,
+                             const Vec3<double> &fma, const Vec3<double> &fmb, double L,
+                             double *emax, double tol = 1e-6)
+{
+  using polydem::norm;
+  const double es = norm(fs - r.S_A) / norm(r.S_A);
+  const double ema = norm(fma - r.M_A) / (norm(r.S_A) * L);
+  const double emb = norm(fmb - r.M_B) / (norm(r.S_A) * L);
+  emax[0] = std::max(emax[0], es);
+  emax[1] = std::max(emax[1], ema);
+  emax[2] = std::max(emax[2], emb);
+  EXPECT_LE(es, tol);
+  EXPECT_LE(ema, tol);
+  EXPECT_LE(emb, tol);
 }
 
 }    // namespace polydem_test

@@ -314,15 +314,7 @@ TEST(KernelEllipsoidOverlap, GradientsVsFiniteDifferences)
       fmb[c] = (polyhedron_ellipsoid_overlap(posed(k, pa), B1).volume -
                 polyhedron_ellipsoid_overlap(posed(k, pa), B2).volume) / (2 * ha);
     }
-    const double es = norm(fs - r.S_A) / norm(r.S_A);
-    const double ema = norm(fma - r.M_A) / (norm(r.S_A) * L);
-    const double emb = norm(fmb - r.M_B) / (norm(r.S_A) * L);
-    emax[0] = std::max(emax[0], es);
-    emax[1] = std::max(emax[1], ema);
-    emax[2] = std::max(emax[2], emb);
-    EXPECT_LE(es, 1e-6);
-    EXPECT_LE(ema, 1e-6);
-    EXPECT_LE(emb, 1e-6);
+    expect_gradients(r, fs, fma, fmb, L, emax);
   }
   std::printf("[ gradients ] %d poses: max rel err S_A %.2e, M_A %.2e, M_B %.2e "
               "(M relative to |S_A| L)\n",
@@ -402,4 +394,36 @@ TEST(KernelEllipsoidOverlap, SeparatedAndDegenerate)
   EXPECT_EQ(r.status, STATUS_DEGENERATE);
   r = polyhedron_ellipsoid_overlap(A, ellipsoid(make_vec3(0.0, 0.0, 0.0), make_vec3(0.0, 1.0, 1.0)));
   EXPECT_EQ(r.status, STATUS_DEGENERATE);
+}
+
+// two spheres: the lens volume, S_A = pi a^2 n against central differences,
+// the centroid of equal spheres halfway, one inside the other
+TEST(KernelEllipsoidOverlap, SpherePairLens)
+{
+  const double ra = 0.7, rb = 0.4;
+  for (double d : {1.09, 1.0, 0.8, 0.5, 0.31}) {
+    const Vec3<double> xa = make_vec3(0.1, 0.2, 0.3), n = make_vec3(0.6, 0.0, 0.8);
+    const auto r = sphere_pair_overlap(xa, ra, xa + d * n, rb);
+    const double V = M_PI * (ra + rb - d) * (ra + rb - d) *
+        (d * d + 2 * d * (ra + rb) - 3 * (ra - rb) * (ra - rb)) / (12 * d);
+    ASSERT_EQ(r.status, STATUS_OK) << d;
+    EXPECT_NEAR(r.volume, V, 1e-15) << d;
+    const double h = 1e-6;
+    const double dv = (sphere_pair_overlap(xa, ra, xa + (d - h) * n, rb).volume -
+                       sphere_pair_overlap(xa, ra, xa + (d + h) * n, rb).volume) / (2 * h);
+    EXPECT_LE(norm(r.S_A - dv * n), 1e-8) << d;
+    EXPECT_LE(norm(r.M_A) + norm(r.M_B), 0.0);
+    // the centroid lies on the line of centres, between the cap bases' ends
+    const double z = dot(r.centroid - xa, n);
+    EXPECT_LE(norm(r.centroid - xa - z * n), 1e-15);
+    EXPECT_GT(z, d - rb);
+    EXPECT_LT(z, ra);
+  }
+  auto r = sphere_pair_overlap(make_vec3(0.0, 0.0, 0.0), 0.5, make_vec3(0.0, 0.0, 0.6), 0.5);
+  EXPECT_NEAR(r.centroid.z, 0.3, 1e-15);
+  r = sphere_pair_overlap(make_vec3(0.0, 0.0, 0.0), 0.5, make_vec3(0.0, 0.0, 1.0), 0.5);
+  EXPECT_EQ(r.status, STATUS_SEPARATED);
+  r = sphere_pair_overlap(make_vec3(0.0, 0.0, 0.0), 0.5, make_vec3(0.0, 0.1, 0.0), 0.2);
+  EXPECT_NEAR(r.volume, 4 * M_PI / 3 * 0.008, 1e-15);
+  EXPECT_EQ(norm(r.S_A), 0.0);
 }

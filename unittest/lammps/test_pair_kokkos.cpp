@@ -239,6 +239,26 @@ TEST(PairKokkos, RollingResistanceMatchesPlain)
   compare(plain, kk, "rolling, run 100", true);
 }
 
+// a quarter of the grains spheres (issue 29): sphere-polyhedron and
+// sphere-sphere contacts by their overlap volume, alike in both styles
+TEST(PairKokkos, SpheresAmongPolyhedraMatchPlain)
+{
+  Lmp plain, kk(KK);
+  for (Lmp *l : {&plain, &kk}) {
+    l->cmds(setup());
+    l->cmds({"polyhedron_shape ball ellipsoid 0.47 0.47 0.47",
+             "polyhedron_set group g1 shape ball density 1.0"});
+  }
+  plain.cmd("run 100");
+  kk.cmd("run 100");
+  compare(plain, kk, "spheres, run 100", true);
+  auto *p = plain.lmp->force->pair;
+  int dim;
+  const double *cnt = (const double *) p->extract("counters", dim);
+  ASSERT_NE(cnt, nullptr);
+  EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
+}
+
 // the same style run as /kk/host must give the same numbers
 TEST(PairKokkos, HostVariantMatchesPlain)
 {
