@@ -193,6 +193,29 @@ TEST(Insert, PackMixedShapesNeverOverlap)
   EXPECT_GT(overlaps(l, 5000), 10);
 }
 
+// polyhedra and spheres packed under pair_style polyhedron (issue 29): the
+// pair style's exact overlap volumes (polyhedron pairs, polyhedron-sphere,
+// sphere pairs) find no contact at the first step
+TEST(Insert, PackPolyhedraAndSpheresUnderPairPolyhedron)
+{
+  Lmp l;
+  l.cmds(mixed_box(0.03));
+  l.cmds({"polyhedron_shape s ellipsoid 1.0 1.0 1.0", "comm_modify vel yes",
+          "fix ins all insert/polyhedron 800 4711 region box mode pack density 2500 all_in no "
+          "shape d 0.5 scale uniform 0.0008 0.0012 shape s 0.5 scale uniform 0.0008 0.0013",
+          "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.5 0.3", "thermo_style custom step pe",
+          "run 0"});
+  ASSERT_EQ(l.lmp->atom->natoms, 800);
+  int close = 0;
+  EXPECT_EQ(overlaps(l, 0, &close), 0);
+  EXPECT_GT(close, 100);
+  EXPECT_EQ(l.thermo("pe"), 0.0);
+  // and a sphere placed into the pack does touch (the check can fail)
+  l.cmds({"create_atoms 1 random 20 31 NULL",
+          "polyhedron_set atom 801*820 shape s scale 0.0012 density 2500", "run 0"});
+  EXPECT_GT(l.thermo("pe"), 0.0);
+}
+
 // Acceptance 1 (rate): 5,000 insertions of the same mixture at a high rate
 // into a small falling stream (no contacts: particles pass through each
 // other, so the feed region stays crowded and the test of each new particle
