@@ -133,7 +133,7 @@ TEST(MpiRanks, OneVsTwoRanksIdentical)
 // With contacts (pair_style polyhedron, damping and friction history): 1 and
 // 2 ranks agree to 1e-10 over the first 100 steps (summation order differs,
 // so not bit for bit), and no particle is lost (issue 4, item 5, short).
-TEST(MpiRanks, ContactsOneVsTwoRanksAgree)
+void contacts_one_vs_two(const std::vector<std::string> &extra)
 {
   int me, nprocs;
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
@@ -143,6 +143,7 @@ TEST(MpiRanks, ContactsOneVsTwoRanksAgree)
   auto cmds = setup(data);
   cmds.insert(cmds.end() - 4, {"comm_modify vel yes", "pair_style polyhedron",
                                "pair_coeff * * 1.0e4 0.3 0.8 0.5"});
+  cmds.insert(cmds.end() - 4, extra.begin(), extra.end());
   cmds.push_back("timestep 0.001");
   std::vector<double> multi;
   double contacts = 0.0;
@@ -175,3 +176,17 @@ TEST(MpiRanks, ContactsOneVsTwoRanksAgree)
   MPI_Comm_free(&self);
   if (me == 0) std::remove(data.c_str());
 }
+
+TEST(MpiRanks, ContactsOneVsTwoRanksAgree)
+{
+  contacts_one_vs_two({});
+}
+
+// every second particle a sphere (issue 29): polyhedron-sphere and sphere
+// pairs across the subdomain boundary
+TEST(MpiRanks, SpheresOneVsTwoRanksAgree)
+{
+  contacts_one_vs_two({"polyhedron_shape ball ellipsoid 0.8 0.8 0.8", "variable odd atom id%2",
+                       "group odd variable odd", "polyhedron_set group odd shape ball"});
+}
+
