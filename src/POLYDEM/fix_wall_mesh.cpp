@@ -200,7 +200,9 @@ void FixWallMesh::init()
   if (nkind[1] && !ell_mat)
     error->all(FLERR, "fix wall/mesh: {} atoms of its group have an ellipsoid shape; their wall "
                "contact takes k_n, e and mu from pair_style ellipsoid (pair_coeff I I kn e mu), "
-               "pair_style is '{}'", nkind[1], pstyle);
+               "pair_style is '{}'{}", nkind[1], pstyle,
+               poly_mat ? " (under pair_style polyhedron, fix wall/mesh does not take spheres "
+                          "or ellipsoids yet)" : "");
   if (!nkind[1] && !poly_mat && !ell_mat)
     error->all(FLERR, "fix wall/mesh: requires pair_style polyhedron (the particles' E and nu "
                "come from its pair_coeff) or pair_style ellipsoid (k_n)");
