@@ -165,13 +165,19 @@ void FixWallMesh::init()
   avec = PolyShapeLibrary::of(lmp, "fix wall/mesh");
   // the group's shapes, and those an insertion fix will add to it (every
   // rank sees the same candidates: counted on rank 0)
-  int nkind[2] = {0, 0};    // polyhedra, ellipsoids
+  int nkind[3] = {0, 0, 0};    // polyhedra, ellipsoids, of them spheres
+  auto count = [&](int ishape) {
+    const auto &sh = avec->shape(ishape);
+    nkind[sh.is_ellipsoid() ? 1 : 0]++;
+    const auto &a = sh.semi_axes();
+    if (sh.is_ellipsoid() && a[0] == a[1] && a[0] == a[2]) nkind[2]++;
+  };
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) nkind[avec->shape(atom->pshape[i]).is_ellipsoid() ? 1 : 0]++;
+    if (atom->mask[i] & groupbit) count(atom->pshape[i]);
   if (comm->me == 0)
     for (const auto &c : ParticleSource::candidates(lmp))
-      if (c.mask & groupbit) nkind[avec->shape(c.ishape).is_ellipsoid() ? 1 : 0]++;
-  MPI_Allreduce(MPI_IN_PLACE, nkind, 2, MPI_INT, MPI_SUM, world);
+      if (c.mask & groupbit) count(c.ishape);
+  MPI_Allreduce(MPI_IN_PLACE, nkind, 3, MPI_INT, MPI_SUM, world);
   // material: polyhedra E, nu (pair_style polyhedron), ellipsoids k_n and
   // the tangential ratios (pair_style ellipsoid); e and mu from either
   int dim = 0;
@@ -193,20 +199,23 @@ void FixWallMesh::init()
   }
   const bool poly_mat = E && nu && e && mu, ell_mat = kn && ktr && gtr && e && mu;
   const std::string pstyle = force->pair_style ? force->pair_style : "none";
-  if (nkind[0] && nkind[1])
+  // under pair_style polyhedron, spheres take the polyhedra's volume law
+  // (polydem_wall_ellipsoid.h, sphere_cap_contacts) and may share a wall
+  const bool spheres_by_volume = poly_mat && !ell_mat && nkind[1] == nkind[2];
+  if (nkind[0] && nkind[1] && !spheres_by_volume)
     error->all(FLERR, "fix wall/mesh: its group has {} polyhedra and {} ellipsoids; one wall "
                "takes one kind (their material comes from pair_style polyhedron or ellipsoid): "
                "use a fix for each group", nkind[0], nkind[1]);
-  if (nkind[1] && !ell_mat)
+  if (nkind[1] && !ell_mat && !spheres_by_volume)
     error->all(FLERR, "fix wall/mesh: {} atoms of its group have an ellipsoid shape; their wall "
                "contact takes k_n, e and mu from pair_style ellipsoid (pair_coeff I I kn e mu), "
                "pair_style is '{}'{}", nkind[1], pstyle,
-               poly_mat ? " (under pair_style polyhedron, fix wall/mesh does not take spheres "
-                          "or ellipsoids yet)" : "");
+               poly_mat ? " (under pair_style polyhedron it takes spheres only, by their "
+                          "overlap volume)" : "");
   if (!nkind[1] && !poly_mat && !ell_mat)
     error->all(FLERR, "fix wall/mesh: requires pair_style polyhedron (the particles' E and nu "
                "come from its pair_coeff) or pair_style ellipsoid (k_n)");
-  ellipsoids = nkind[1] > 0 || !poly_mat;
+  ellipsoids = (nkind[1] > 0 && !spheres_by_volume) || !poly_mat;
   if (ellipsoids && (wall_E > 0.0 || wall_nu > -1.0) && comm->me == 0)
     error->warning(FLERR, "fix wall/mesh {}: youngs and poisson do not apply to ellipsoids "
                    "(their wall stiffness is k_n of pair_coeff)", id);
@@ -281,9 +290,15 @@ void FixWallMesh::check_timestep()
   TimestepCheck check;
   bigint nover = 0;
   auto consider = [&](int type, int ishape, double s, double m) {
-    if (avec->shape(ishape).is_ellipsoid()) {
+    if (avec->shape(ishape).is_ellipsoid() && ellipsoids) {
       // ellipsoids: the linear spring's contact time (central impact)
       check.contact(m, law_entries[type].kn * force->ftm2v);
+      return;
+    }
+    if (avec->shape(ishape).is_ellipsoid()) {
+      // spheres under the volume law: as pair polyhedron, k_n = 2 E R
+      check.contact(m, 2.0 * law_entries[type].E1 * s * avec->shape(ishape).semi_axes()[0] *
+                           force->ftm2v);
       return;
     }
     const auto L = law_of(type, ishape, s);
@@ -352,12 +367,12 @@ polydem::MeshPose<double> FixWallMesh::mesh_pose() const
 polydem::WallScene<double> FixWallMesh::scene() const
 {
   return {mesh_pose(), geom.grid_view(), geom.cosmax, twosided, depth_warn, overlap_warn,
-          near_skin};
+          near_skin, ellipsoids ? 0 : 1};
 }
 
 polydem::ContactLaw<double> FixWallMesh::law_of(int t, int ishape, double s) const
 {
-  if (avec->shape(ishape).is_ellipsoid()) return polydem::wall_ellipsoid_law(laws, t);
+  if (ellipsoids) return polydem::wall_ellipsoid_law(laws, t);
   const double V = avec->shape(ishape).volume() * s * s * s;
   return polydem::wall_polyhedron_law(laws, t, V);
 }

@@ -318,6 +318,7 @@ template <typename T> struct WallScene {
   int both;
   T depth_warn, overlap_warn;
   T near_skin;
+  int sphere_volume;    // the wall takes pair polyhedron's material: spheres by their cap volume
 };
 
 // What a particle's wall contact returns: forces on it (and per patch),
@@ -345,8 +346,10 @@ POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const La
   r.near_built = r.near_overflow = 0;
   if (b.axes.x > T(0)) {    // an ellipsoid: the grid query (no near list, no workspace)
     const Vec3<T> ax = make_vec3(s * b.axes.x, s * b.axes.y, s * b.axes.z);
-    r.wf = wall_ellipsoid_particle(ax, b.pose, sc.mp, sc.grid, wall_ellipsoid_law(tab, b.type), b.m,
-                                   dts, sc.cosmax, sc.both, b.v, b.w, hist, update, P);
+    const ContactLaw<T> law =
+        sc.sphere_volume ? wall_polyhedron_law(tab, b.type, V) : wall_ellipsoid_law(tab, b.type);
+    r.wf = wall_ellipsoid_particle(ax, b.pose, sc.mp, sc.grid, law, b.m, dts, sc.cosmax, sc.both,
+                                   b.v, b.w, hist, update, P, sc.sphere_volume != 0);
   } else {
     if (near) {
       near->skin = sc.near_skin * sv.radius * s;

@@ -299,16 +299,38 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
   return C;
 }
 
+// A sphere of radius r under the volume law (fix wall/mesh with the
+// material of pair_style polyhedron): each patch's measure delta becomes the
+// volume of the cap the patch's plane cuts off, V = pi delta^2 (3r - delta)/3,
+// exact where the section lies within the patch, and its gradient
+// dV/d delta = pi delta (2r - delta) (the section's area) times delta's:
+// the force stays the gradient of W(V(delta)).
+template <typename T> POLYDEM_FN void sphere_cap_contacts(WallContacts<T> &C, T r)
+{
+  constexpr T PI = T(3.14159265358979323846264338327950288);
+  for (int k = 0; k < C.n; ++k) {
+    if (!C.on[k]) continue;
+    ContactGeometry<T> &g = C.g[k];
+    const T d = g.volume < T(2) * r ? g.volume : T(2) * r;
+    const T A = PI * d * (T(2) * r - d);
+    g.volume = PI * d * d * (T(3) * r - d) / T(3);
+    g.S_A = A * g.S_A;
+    g.M_A = A * g.M_A;
+    g.area = norm(g.S_A);
+  }
+}
+
 // Everything for one ellipsoid (semi-axes ax [length], lab pose x, q;
 // velocity v, spin w): pose into the mesh frame, patches, forces back in the
 // lab frame (wall_contact_forces, the contact point's mass with the solid
-// ellipsoid's moments I_x = m (b^2 + c^2) / 5, ...). law: ellipsoid_law.
+// ellipsoid's moments I_x = m (b^2 + c^2) / 5, ...). law: ellipsoid_law;
+// or, for a sphere with sphere_volume, wall_polyhedron_law (sphere_cap_contacts).
 template <typename T>
 POLYDEM_FN WallForce<T>
 wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T> &mp,
                         const MeshGridView<T> &g, const ContactLaw<T> &law, T m, T dt, T cosmax,
                         int both, const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update,
-                        WallPatches<T> &P)
+                        WallPatches<T> &P, bool sphere_volume = false)
 {
   WallEllipsoid<T> e;
   e.c = mesh_point(mp, lab.x);
@@ -316,7 +338,9 @@ wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T>
   e.ax = ax;
   const WallSides<T> sides = wall_kept_sides(hist, mp, both);
   wall_ellipsoid_patches(e, g, cosmax, P, &sides);
-  return wall_contact_forces(wall_ellipsoid_contacts(P, mp), mp, law, m, ellipsoid_inverse_moments(m, ax),
+  WallContacts<T> C = wall_ellipsoid_contacts(P, mp);
+  if (sphere_volume) sphere_cap_contacts(C, ax.x);
+  return wall_contact_forces(C, mp, law, m, ellipsoid_inverse_moments(m, ax),
                              quat_to_mat(lab.q), cosmax, lab.x, v, w, dt, hist, update);
 }
 

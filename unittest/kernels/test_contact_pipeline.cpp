@@ -242,6 +242,7 @@ TEST(ContactPipeline, WallBodyIsTheComposition)
   sc.depth_warn = 0.25;
   sc.overlap_warn = 0.05;
   sc.near_skin = 0.02;
+  sc.sphere_volume = 0;
   Table tab(true);
 
   const auto shape = polydem_test::make_shape(polydem_test::cube_points(1.0));

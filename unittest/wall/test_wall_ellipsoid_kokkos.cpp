@@ -48,3 +48,21 @@ TEST(WallEllipsoidKokkos, KkEqualsPlain)
   kk_compare(sc, p, k, "reversed box and curved floor");
   EXPECT_GE(p.contacts, 30.0);
 }
+
+// spheres under pair_style polyhedron (issue 29): the wall's volume law for
+// spheres (sphere_cap_contacts) alike in the plain and /kk fixes
+TEST(WallEllipsoidKokkos, SpheresByVolumeKkEqualsPlain)
+{
+  const std::string box = tmpdir() + "/sph_kk_box.stl";
+  write_binary(box, closed_box(EB, 4));
+  KkScene sc = scene();
+  for (auto &c : sc.setup) {
+    if (c.rfind("polyhedron_shape e", 0) == 0) c = "polyhedron_shape e ellipsoid 0.7 0.7 0.7";
+    if (c.rfind("pair_style", 0) == 0) c = "pair_style polyhedron";
+    if (c.rfind("pair_coeff", 0) == 0) c = "pair_coeff * * 1e6 0.3 0.6 0.3";
+  }
+  const std::string args = box + " friction 0.5 restitution 0.5 move translate 0.05 0 0";
+  const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);
+  kk_compare(sc, p, k, "spheres by volume");
+  EXPECT_GE(p.contacts, 30.0);
+}
