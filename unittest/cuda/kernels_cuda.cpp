@@ -107,6 +107,14 @@ template <typename T> struct PairCase {
   Vec3<T> vb, wa;
 };
 
+// r[k..k+2] = v
+template <typename T> KOKKOS_INLINE_FUNCTION void put3(T *r, int k, const Vec3<T> &v)
+{
+  r[k] = v.x;
+  r[k + 1] = v.y;
+  r[k + 2] = v.z;
+}
+
 // Everything a pair computes; the same function on the device and the host.
 template <typename T, int MF, int ME>
 KOKKOS_INLINE_FUNCTION void run_pair(const ShapeView<T> &va, const ShapeView<T> &vb,
@@ -120,28 +128,16 @@ KOKKOS_INLINE_FUNCTION void run_pair(const ShapeView<T> &va, const ShapeView<T> 
   const OverlapResult<T> o = polyhedron_overlap(a, b, ows);
   st[S_OVERLAP] = o.status;
   r[R_V] = o.volume;
-  r[R_CX] = o.centroid.x;
-  r[R_CY] = o.centroid.y;
-  r[R_CZ] = o.centroid.z;
-  r[R_SX] = o.S_A.x;
-  r[R_SY] = o.S_A.y;
-  r[R_SZ] = o.S_A.z;
-  r[R_MAX] = o.M_A.x;
-  r[R_MAY] = o.M_A.y;
-  r[R_MAZ] = o.M_A.z;
-  r[R_MBX] = o.M_B.x;
-  r[R_MBY] = o.M_B.y;
-  r[R_MBZ] = o.M_B.z;
+  put3(r, R_CX, o.centroid);
+  put3(r, R_SX, o.S_A);
+  put3(r, R_MAX, o.M_A);
+  put3(r, R_MBX, o.M_B);
   const ClipResult<T> k = polyhedron_triangle(a, c.tri, cws);
   st[S_CLIP] = k.status;
   r[R_CLIP_A] = k.area;
   r[R_CLIP_V] = k.volume;
-  r[R_CLIP_SX] = k.S.x;
-  r[R_CLIP_SY] = k.S.y;
-  r[R_CLIP_SZ] = k.S.z;
-  r[R_CLIP_MX] = k.M.x;
-  r[R_CLIP_MY] = k.M.y;
-  r[R_CLIP_MZ] = k.M.z;
+  put3(r, R_CLIP_SX, k.S);
+  put3(r, R_CLIP_MX, k.M);
   // contact step of the overlap (Feng's law with its core, twisting friction),
   // three steps on one history so that the spring and the cap act
   Vec3<T> F = make_vec3(T(0), T(0), T(0)), tau = F;
@@ -166,12 +162,8 @@ KOKKOS_INLINE_FUNCTION void run_pair(const ShapeView<T> &va, const ShapeView<T> 
       energy = cf.energy;
     }
   }
-  r[R_FX] = F.x;
-  r[R_FY] = F.y;
-  r[R_FZ] = F.z;
-  r[R_TX] = tau.x;
-  r[R_TY] = tau.y;
-  r[R_TZ] = tau.z;
+  put3(r, R_FX, F);
+  put3(r, R_TX, tau);
   r[R_E] = energy;
   // free rotor (polydem_rigid.h): 20 steps of A's orientation
   const T inertia[3] = {va.inertia[0], va.inertia[1], va.inertia[2]};
@@ -190,12 +182,8 @@ KOKKOS_INLINE_FUNCTION void run_pair(const ShapeView<T> &va, const ShapeView<T> 
   e.axes = make_vec3(rb, T(0.7) * rb, T(0.5) * rb);
   const OverlapResult<T> eo = polyhedron_ellipsoid_overlap(a, e);
   r[R_EV] = eo.volume;
-  r[R_ESX] = eo.S_A.x;
-  r[R_ESY] = eo.S_A.y;
-  r[R_ESZ] = eo.S_A.z;
-  r[R_EMX] = eo.M_A.x;
-  r[R_EMY] = eo.M_A.y;
-  r[R_EMZ] = eo.M_A.z;
+  put3(r, R_ESX, eo.S_A);
+  put3(r, R_EMX, eo.M_A);
 }
 
 // The arrays of all templates (type T) in one memory space, and views into them.

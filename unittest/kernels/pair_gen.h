@@ -224,6 +224,26 @@ inline Pair degenerate_pair(const ShapePool &pool, std::mt19937_64 &rng, int kin
   return p;
 }
 
+// central differences of f(Pose) about p: ft in translation (step h), fr
+// in rotation about the lab axes through p.x (step ha, radians)
+template <class F>
+inline void pose_differences(F f, const Pose<double> &p, double h, double ha, Vec3<double> &ft,
+                             Vec3<double> &fr)
+{
+  for (int k = 0; k < 3; ++k) {
+    Vec3<double> e = make_vec3(0.0, 0.0, 0.0);
+    e[k] = 1.0;
+    Pose<double> a = p, b = p;
+    a.x += h * e;
+    b.x -= h * e;
+    ft[k] = (f(a) - f(b)) / (2 * h);
+    a = b = p;
+    a.q = polydem::qmul(axis_angle(e, ha), p.q);
+    b.q = polydem::qmul(axis_angle(e, -ha), p.q);
+    fr[k] = (f(a) - f(b)) / (2 * ha);
+  }
+}
+
 // S_A, M_A, M_B of r against their central differences fs, fma, fmb: the
 // errors relative to |S_A| (the moments' to |S_A| L) kept as maxima in
 // emax[3], each expected <= tol

@@ -210,20 +210,8 @@ TEST(KernelClip, FlatWallGradients)
     if (norm(S) < 1e-2 * sd.radius * sd.radius) continue;
     const double h = 1e-7 * sd.radius;
     Vec3<double> fs, fm;
-    for (int k = 0; k < 3; ++k) {
-      Vec3<double> e = make_vec3(0.0, 0.0, 0.0);
-      e[k] = 1.0;
-      Pose<double> a = p, b = p;
-      a.x += h * e;
-      b.x -= h * e;
-      fs[k] = (wall(a, nullptr, nullptr) - wall(b, nullptr, nullptr)) / (2 * h);
-      const double ha = h / sd.radius;
-      a = p;
-      b = p;
-      a.q = qmul(axis_angle(e, ha), p.q);
-      b.q = qmul(axis_angle(e, -ha), p.q);
-      fm[k] = (wall(a, nullptr, nullptr) - wall(b, nullptr, nullptr)) / (2 * ha);
-    }
+    pose_differences([&](const Pose<double> &x) { return wall(x, nullptr, nullptr); }, p, h,
+                     h / sd.radius, fs, fm);
     const double e = std::max(norm(fs - S) / norm(S), norm(fm - M) / (norm(S) * sd.radius));
     emax = std::max(emax, e);
     EXPECT_LE(e, 1e-6);
@@ -267,20 +255,7 @@ TEST(KernelClip, OpenBorderGradients)
     if (r.volume < 1e-3 * sd.volume) continue;
     const double h = 1e-6 * L;
     Vec3<double> fs, fm;
-    for (int k = 0; k < 3; ++k) {
-      Vec3<double> e = make_vec3(0.0, 0.0, 0.0);
-      e[k] = 1.0;
-      Pose<double> a = p, b = p;
-      a.x += h * e;
-      b.x -= h * e;
-      fs[k] = (vol(a) - vol(b)) / (2 * h);
-      const double ha = h / L;
-      a = p;
-      b = p;
-      a.q = qmul(axis_angle(e, ha), p.q);
-      b.q = qmul(axis_angle(e, -ha), p.q);
-      fm[k] = (vol(a) - vol(b)) / (2 * ha);
-    }
+    pose_differences(vol, p, h, h / L, fs, fm);
     // the sides' share of the gradient: S minus the section form
     const double side = norm(r.S + r.area * r.normal) / (L * L);
     if (side > 1e-3) ++ncut;

@@ -293,27 +293,18 @@ TEST(KernelEllipsoidOverlap, GradientsVsFiniteDifferences)
     if (r.status != STATUS_OK || r.area < 1e-2 * L * L) continue;
     ++tested;
     const double h = 1e-6 * L, ha = 1e-6;
-    Vec3<double> fs, fma, fmb;
-    for (int c = 0; c < 3; ++c) {
-      Vec3<double> e = make_vec3(0.0, 0.0, 0.0);
-      e[c] = 1.0;
-      Pose<double> p1 = pa, p2 = pa;
-      p1.x += h * e;
-      p2.x -= h * e;
-      fs[c] = (polyhedron_ellipsoid_overlap(posed(k, p1), B).volume -
-               polyhedron_ellipsoid_overlap(posed(k, p2), B).volume) / (2 * h);
-      p1 = pa;
-      p2 = pa;
-      p1.q = qmul(axis_angle(e, ha), pa.q);
-      p2.q = qmul(axis_angle(e, -ha), pa.q);
-      fma[c] = (polyhedron_ellipsoid_overlap(posed(k, p1), B).volume -
-                polyhedron_ellipsoid_overlap(posed(k, p2), B).volume) / (2 * ha);
-      auto B1 = B, B2 = B;
-      B1.q = qmul(axis_angle(e, ha), B.q);
-      B2.q = qmul(axis_angle(e, -ha), B.q);
-      fmb[c] = (polyhedron_ellipsoid_overlap(posed(k, pa), B1).volume -
-                polyhedron_ellipsoid_overlap(posed(k, pa), B2).volume) / (2 * ha);
-    }
+    Vec3<double> fs, fma, fmb, unused;
+    pose_differences([&](const Pose<double> &x) { return polyhedron_ellipsoid_overlap(posed(k, x), B).volume; },
+                     pa, h, ha, fs, fma);
+    // B's rotation about its centre: a Pose with B's centre and orientation
+    Pose<double> pb = pose(B.x, B.q);
+    pose_differences(
+        [&](const Pose<double> &x) {
+          auto B1 = B;
+          B1.q = x.q;
+          return polyhedron_ellipsoid_overlap(posed(k, pa), B1).volume;
+        },
+        pb, h, ha, unused, fmb);
     expect_gradients(r, fs, fma, fmb, L, emax);
   }
   std::printf("[ gradients ] %d poses: max rel err S_A %.2e, M_A %.2e, M_B %.2e "

@@ -200,26 +200,11 @@ TEST(KernelOverlap, GradientsVsFiniteDifferences)
     if (r.status != STATUS_OK || r.area < 1e-2 * L * L) continue;
     ++tested;
     const double h = 1e-7 * L;
-    Vec3<double> fs, fma, fmb;
-    for (int k = 0; k < 3; ++k) {
-      Vec3<double> e = make_vec3(0.0, 0.0, 0.0);
-      e[k] = 1.0;
-      Pair q1 = p, q2 = p;
-      q1.pa.x += h * e;
-      q2.pa.x -= h * e;
-      fs[k] = (run_d(q1).volume - run_d(q2).volume) / (2 * h);
-      const double ha = h / L;    // angle
-      q1 = p;
-      q2 = p;
-      q1.pa.q = qmul(axis_angle(e, ha), p.pa.q);
-      q2.pa.q = qmul(axis_angle(e, -ha), p.pa.q);
-      fma[k] = (run_d(q1).volume - run_d(q2).volume) / (2 * ha);
-      q1 = p;
-      q2 = p;
-      q1.pb.q = qmul(axis_angle(e, ha), p.pb.q);
-      q2.pb.q = qmul(axis_angle(e, -ha), p.pb.q);
-      fmb[k] = (run_d(q1).volume - run_d(q2).volume) / (2 * ha);
-    }
+    Vec3<double> fs, fma, fmb, unused;
+    pose_differences([&](const Pose<double> &x) { Pair q = p; q.pa = x; return run_d(q).volume; },
+                     p.pa, h, h / L, fs, fma);
+    pose_differences([&](const Pose<double> &x) { Pair q = p; q.pb = x; return run_d(q).volume; },
+                     p.pb, h, h / L, unused, fmb);
     expect_gradients(r, fs, fma, fmb, L, emax);
   }
   std::printf("[ gradients ] %d pairs: max rel err S_A %.2e, M_A %.2e, M_B %.2e "
