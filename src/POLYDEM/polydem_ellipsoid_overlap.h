@@ -219,9 +219,16 @@ POLYDEM_FN OverlapResult<T> polyhedron_ellipsoid_overlap(const PosedShape<T> &A,
   };
 
   // face f's plane in the mapped frame: n' . x' = s, n' = D R_B^T n / L
+  // (a sphere: n' = R_B^T n, already a unit vector, and L = r)
+  const bool sphere = ax.x == ax.y && ax.x == ax.z;
   auto mapped_plane = [&](int f, Vec3<T> &n, T &s) {
     const T *pl = sv.planes + 4 * f;
     const Vec3<T> nB = matvec(Q, make_vec3(pl[0], pl[1], pl[2]));
+    if (sphere) {
+      n = nB;
+      s = (A.s * pl[3] + dot(nB, t)) * inv.x;
+      return;
+    }
     const Vec3<T> nD = make_vec3(nB.x * ax.x, nB.y * ax.y, nB.z * ax.z);
     const T L = norm(nD);
     n = (T(1) / L) * nD;
