@@ -7,12 +7,14 @@
 
 #include "force.h"
 #include "pair.h"
+#include "polydem_pair_counts.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <vector>
 #include <cstdio>
+#include <map>
+#include <vector>
 
 using polydem_test::Lmp;
 using polydem_test::potentials;
@@ -633,4 +635,62 @@ TEST(PairPolyhedron, CohesionEquilibriumOfFaceToFaceCubes)
   EXPECT_GT(d_hold, 0.0);
   EXPECT_LT(d_off, 0.0);
   EXPECT_GT(v_off, 0.0);
+}
+
+// A mixed scene (issue 29) continues bit for bit from a restart file: 4 x 4 x 3
+// lattice of cubes and dodecahedra, a third of them turned into spheres,
+// frictional contacts (tangential history), 60 steps straight through
+// against 30 + write_restart + read_restart (new instance) + 30.
+TEST(PairPolyhedron, MixedSceneRestartIsExact)
+{
+  const std::string file = ::testing::TempDir() + "polydem_mixed_restart.bin";
+  const std::vector<std::string> after = {
+      "polyhedron_shape ball ellipsoid 0.45 0.45 0.45", "variable third atom id%3==0",
+      "group third variable third", "polyhedron_set group third shape ball density 2.0",
+      "velocity all create 2.0 5151 loop geom", "pair_style polyhedron",
+      "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.01 bin",
+      "neigh_modify every 1 delay 0 check yes"};
+  const std::vector<std::string> run = {"fix 1 all nve/polyhedron", "timestep 1.0e-4"};
+  auto state = [](Lmp &l) {
+    std::map<long, std::vector<double>> s;
+    auto *a = l.lmp->atom;
+    for (int i = 0; i < a->nlocal; i++) {
+      auto &v = s[(long) a->tag[i]];
+      for (int k = 0; k < 3; k++) v.insert(v.end(), {a->x[i][k], a->v[i][k], a->angmom[i][k]});
+    }
+    return s;
+  };
+  std::map<long, std::vector<double>> ref, got;
+  double contacts = 0.0;
+  {
+    Lmp l;
+    l.cmds(polydem_test::cube_dode_lattice(
+        {"units lj", "atom_style polyhedron", "atom_modify map array", "comm_modify vel yes",
+         "boundary p p p"},
+        4, 4, 3, after));
+    l.cmds(run);
+    l.cmd("run 30");
+    l.cmd("write_restart " + file);
+    l.cmd("run 30");
+    ref = state(l);
+    int dim;
+    contacts = ((double *) l.lmp->force->pair->extract("counters", dim))[polydem::PP_CONTACTS];
+  }
+  {
+    Lmp l;
+    l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 0.01 bin",
+            "neigh_modify every 1 delay 0 check yes"});
+    l.cmds(run);
+    l.cmd("run 30");
+    got = state(l);
+  }
+  std::remove(file.c_str());
+  EXPECT_GT(contacts, 50.0);
+  ASSERT_EQ(ref.size(), got.size());
+  double diff = 0.0;
+  for (auto &kv : ref)
+    for (size_t k = 0; k < kv.second.size(); k++)
+      diff = std::fmax(diff, std::fabs(kv.second[k] - got[kv.first][k]));
+  std::printf("mixed restart: %.0f contact evaluations; largest difference %.3g\n", contacts, diff);
+  EXPECT_EQ(diff, 0.0);
 }
