@@ -169,8 +169,7 @@ void FixWallMesh::init()
   auto count = [&](int ishape) {
     const auto &sh = avec->shape(ishape);
     nkind[sh.is_ellipsoid() ? 1 : 0]++;
-    const auto &a = sh.semi_axes();
-    if (sh.is_ellipsoid() && a[0] == a[1] && a[0] == a[2]) nkind[2]++;
+    if (sh.is_sphere()) nkind[2]++;
   };
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) count(atom->pshape[i]);

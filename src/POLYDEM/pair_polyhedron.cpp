@@ -202,9 +202,7 @@ void PairPolyhedron::init_style()
   // kernel (pair_style ellipsoid takes scenes of ellipsoids alone)
   auto aniso = [&](int ishape) {
     const auto &sh = avec->shape(ishape);
-    if (!sh.is_ellipsoid()) return false;
-    const auto &a = sh.semi_axes();
-    return !(a[0] == a[1] && a[0] == a[2]);
+    return sh.is_ellipsoid() && !sh.is_sphere();
   };
   int nell[2] = {0, 0}, first = -1;    // ellipsoid atoms, of them with unequal axes
   for (int i = 0; i < atom->nlocal; i++)

@@ -141,7 +141,7 @@ POLYDEM_FN OverlapResult<T> mixed_pair_overlap(const PosedShape<T> &A, const Pos
   if (ea && eb) {
     if (aa[0] == aa[1] && aa[0] == aa[2] && ab[0] == ab[1] && ab[0] == ab[2])
       return sphere_pair_overlap(A.x, A.s * aa[0], B.x, B.s * ab[0]);
-    OverlapResult<T> r = sphere_pair_overlap(A.x, T(-1), B.x, T(-1));
+    OverlapResult<T> r = ellipsoid_overlap_detail::no_overlap<T>();
     r.status = STATUS_UNSUPPORTED;
     return r;
   }

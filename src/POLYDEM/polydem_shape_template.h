@@ -60,6 +60,8 @@ class PolyShapeTemplate {
   // no vertices or faces. Throws ShapeError for non-positive or non-finite axes.
   static PolyShapeTemplate ellipsoid(double a, double b, double c, const std::string &name);
   bool is_ellipsoid() const { return ellipsoid_; }
+  // an ellipsoid template with three equal semi-axes
+  bool is_sphere() const { return ellipsoid_ && axes_[0] == axes_[1] && axes_[0] == axes_[2]; }
   // semi-axes at unit scale (ellipsoids only; zero for polyhedra)
   const std::array<double, 3> &semi_axes() const { return axes_; }
 
