@@ -94,16 +94,10 @@ void DumpPolyhedronVTK::write_data(int n, double *mybuf)
    quadrilaterals between the rings (every point lies on the surface)
 ------------------------------------------------------------------------- */
 
-const DumpPolyhedronVTK::DrawMesh &DumpPolyhedronVTK::mesh_of(int shape)
+// the faces of a convex template (an ellipsoid: a UV sphere of 128 faces),
+// body frame, unit scale
+static void draw_convex(const polydem::PolyShapeTemplate &t, DumpPolyhedronVTK::DrawMesh &m)
 {
-  if (meshes_version != avec->shape_version()) {
-    meshes.clear();
-    meshes_version = avec->shape_version();
-  }
-  if ((int) meshes.size() <= shape) meshes.resize(shape + 1);
-  DrawMesh &m = meshes[shape];
-  if (!m.face_start.empty()) return m;
-  const auto &t = avec->shape(shape);
   if (t.is_ellipsoid()) {
     constexpr int NLAT = 8, NLON = 16;    // 2 + 7 x 16 points, 128 faces
     const auto ax = t.semi_axes();
@@ -135,6 +129,40 @@ const DumpPolyhedronVTK::DrawMesh &DumpPolyhedronVTK::mesh_of(int shape)
     m.verts.assign(v.verts, v.verts + 3 * v.nverts);
     m.face_start.assign(v.face_start, v.face_start + v.nfaces + 1);
     m.face_verts.assign(v.face_verts, v.face_verts + v.face_start[v.nfaces]);
+  }
+}
+
+const DumpPolyhedronVTK::DrawMesh &DumpPolyhedronVTK::mesh_of(int shape)
+{
+  if (meshes_version != avec->shape_version()) {
+    meshes.clear();
+    meshes_version = avec->shape_version();
+  }
+  if ((int) meshes.size() <= shape) meshes.resize(shape + 1);
+  DrawMesh &m = meshes[shape];
+  if (!m.face_start.empty()) return m;
+  const auto &t = avec->shape(shape);
+  if (!t.is_composite()) {
+    draw_convex(t, m);
+    return m;
+  }
+  // a composite: each part's faces, placed in the body frame
+  m.face_start.push_back(0);
+  for (int k = 0; k < t.nparts(); k++) {
+    DrawMesh pm;
+    draw_convex(t.part_shape(k), pm);
+    const auto &pl = t.part(k);
+    const int base = m.nverts();
+    for (int v = 0; v < pm.nverts(); v++) {
+      const double *b = &pm.verts[3 * v];
+      for (int i = 0; i < 3; i++)
+        m.verts.push_back(pl.x[i] + pl.R[i][0] * b[0] + pl.R[i][1] * b[1] + pl.R[i][2] * b[2]);
+    }
+    for (int f = 0; f < pm.nfaces(); f++) {
+      for (int j = pm.face_start[f]; j < pm.face_start[f + 1]; j++)
+        m.face_verts.push_back(base + pm.face_verts[j]);
+      m.face_start.push_back((int) m.face_verts.size());
+    }
   }
   return m;
 }

@@ -24,6 +24,16 @@ class DumpPolyhedronVTK : public Dump {
  public:
   DumpPolyhedronVTK(class LAMMPS *, int, char **);
 
+  // what is drawn for each shape template (unit scale, body frame): the
+  // polyhedron itself, a tessellation of an ellipsoid's surface, or the
+  // parts of a composite placed in its frame
+  struct DrawMesh {
+    std::vector<double> verts;
+    std::vector<int> face_start, face_verts;
+    int nverts() const { return (int) verts.size() / 3; }
+    int nfaces() const { return (int) face_start.size() - 1; }
+  };
+
  protected:
   void init_style() override;
   void write_header(bigint) override;
@@ -34,14 +44,6 @@ class DumpPolyhedronVTK : public Dump {
   class PolyShapeLibrary *avec;
   bigint nexpected;               // particles in this snapshot
   std::vector<double> records;    // gathered on the writing rank
-  // what is drawn for each shape template (unit scale, body frame): the
-  // polyhedron itself, or a tessellation of an ellipsoid's surface
-  struct DrawMesh {
-    std::vector<double> verts;
-    std::vector<int> face_start, face_verts;
-    int nverts() const { return (int) verts.size() / 3; }
-    int nfaces() const { return (int) face_start.size() - 1; }
-  };
   std::vector<DrawMesh> meshes;
   int meshes_version;
   const DrawMesh &mesh_of(int shape);

@@ -165,11 +165,12 @@ void FixWallMesh::init()
   avec = PolyShapeLibrary::of(lmp, "fix wall/mesh");
   // the group's shapes, and those an insertion fix will add to it (every
   // rank sees the same candidates: counted on rank 0)
-  int nkind[3] = {0, 0, 0};    // polyhedra, ellipsoids, of them spheres
+  int nkind[4] = {0, 0, 0, -1};    // polyhedra, ellipsoids, of them spheres; a composite
   auto count = [&](int ishape) {
     const auto &sh = avec->shape(ishape);
     nkind[sh.is_ellipsoid() ? 1 : 0]++;
     if (sh.is_sphere()) nkind[2]++;
+    if (sh.is_composite()) nkind[3] = ishape;
   };
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) count(atom->pshape[i]);
@@ -177,6 +178,11 @@ void FixWallMesh::init()
     for (const auto &c : ParticleSource::candidates(lmp))
       if (c.mask & groupbit) count(c.ishape);
   MPI_Allreduce(MPI_IN_PLACE, nkind, 3, MPI_INT, MPI_SUM, world);
+  MPI_Allreduce(MPI_IN_PLACE, &nkind[3], 1, MPI_INT, MPI_MAX, world);
+  if (nkind[3] >= 0)
+    error->all(FLERR, "fix wall/mesh {}: shape '{}' of its group is a composite; walls do not "
+               "take composite grains yet (contain them by fixed grains or periodic "
+               "boundaries)", id, avec->shape_id(nkind[3]));
   // material: polyhedra E, nu (pair_style polyhedron), ellipsoids k_n and
   // the tangential ratios (pair_style ellipsoid); e and mu from either
   int dim = 0;

@@ -34,7 +34,7 @@ static constexpr double RESTART_VERSION = -3.0;
 static constexpr double RESTART_VERSION_NO_ROLLING = -2.0;
 
 PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nhist, int ncnt) :
-    Pair(lmp), style_name(style), history_tag(tag), nhistory_base(nhist), nhistory(nhist),
+    Pair(lmp), style_name(style), history_tag(tag), nhistory_base(nhist), nhistory(nhist), nhistory_contact(nhist),
     nhistory_restart(0), restart_format(3), nhistory_fix(0), ncount(ncnt), rolling(nullptr),
     cohesion(nullptr), roll_kr(polydem::RollingLaw<double>().kr),
     roll_eta(polydem::RollingLaw<double>().eta), avec(nullptr), fix_dummy(nullptr),
@@ -137,9 +137,12 @@ int PairPolydem::rolling_used() const
 
 void PairPolydem::choose_history_size()
 {
-  nhistory = rolling_used() ? polydem::CONTACT_HIST_ROLL : nhistory_base;
+  nhistory_contact = rolling_used() ? polydem::CONTACT_HIST_ROLL : nhistory_base;
+  const int slots = history_slots();
+  nhistory = slots > 0 ? slots * (1 + nhistory_contact) : nhistory_contact;
   const char *why = "rolling resistance (pair_coeff ... rolling mu_r) is on for some type pair "
-                    "in one and off for all in the other";
+                    "in one and off for all in the other, or composite shapes (part contacts "
+                    "kept per pair) are defined in one and not in the other";
   if (fix_history && nhistory_fix != nhistory)
     error->all(FLERR, "pair_style {}: the contact history of the previous run keeps {} values "
                "per pair, this run needs {}: {}; define pair_style again to start without "

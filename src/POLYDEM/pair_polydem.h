@@ -61,6 +61,7 @@ class PairPolydem : public Pair {
   const std::string history_tag;
   const int nhistory_base;    // values per pair without rolling resistance
   int nhistory;               // values per pair (set in init_style: choose_history_size)
+  int nhistory_contact;       // of them per contact (nhistory without part slots)
   int nhistory_restart;       // the restart file's (0: none read)
   int restart_format;         // the restart file's format (2, 3) while it is read
   int nhistory_fix;           // values per pair of the history fix made (0: none yet)
@@ -93,10 +94,13 @@ class PairPolydem : public Pair {
   int settings_rolling(int narg, char **arg, int iarg);
   // some type pair has rolling resistance (coefficients are global)
   int rolling_used() const;
-  // nhistory for this run: nhistory_base, or CONTACT_HIST_ROLL with rolling
-  // resistance; an error where an existing history (this run's fix or the
-  // restart file's) has another size
+  // nhistory for this run: per contact nhistory_base, or CONTACT_HIST_ROLL
+  // with rolling resistance (nhistory_contact); times 1 + that per keyed
+  // part contact where composites need history_slots(); an error where an
+  // existing history (this run's fix or the restart file's) has another size
   void choose_history_size();
+  // keyed part contacts per pair (composite templates), 0: one contact
+  virtual int history_slots() { return 0; }
   // restart: the rolling settings, and the pair's mu_r and cohesion
   void rolling_settings_fields(RestartFields &io);
   void rolling_coeff_fields(RestartFields &io, int i, int j);

@@ -193,20 +193,35 @@ void PairPolyhedron::coeff(int nargs, char **arg)
 void PairPolyhedron::init_style()
 {
   init_common(true);
-  for (int t = 0; t < avec->ntemplates(); t++)
-    if (avec->shape(t).nfaces() > 128)
-      error->all(FLERR, "pair_style polyhedron: shape '{}' has {} faces, more than 128",
-                 avec->shape_id(t), avec->shape(t).nfaces());
+  for (int t = 0; t < avec->ntemplates(); t++) {
+    const auto &sh = avec->shape(t);
+    for (int k = 0; k < std::max(1, sh.nparts()); k++) {
+      const int nf = sh.is_composite() ? sh.part_shape(k).nfaces() : sh.nfaces();
+      if (nf > 128)
+        error->all(FLERR, "pair_style polyhedron: shape '{}' has {} faces, more than 128",
+                   avec->shape_id(t), nf);
+    }
+  }
   // spheres and ellipsoids meet polyhedra and spheres by their exact overlap
   // volume; two ellipsoids of which one has unequal semi-axes have no volume
   // kernel (pair_style ellipsoid takes scenes of ellipsoids alone)
-  auto aniso = [&](int ishape) {
+  // (composites: by their parts)
+  auto parts_any = [&](int ishape, bool aniso_only) {
     const auto &sh = avec->shape(ishape);
-    return sh.is_ellipsoid() && !sh.is_sphere();
+    auto one = [&](const polydem::PolyShapeTemplate &p) {
+      return p.is_ellipsoid() && (!aniso_only || !p.is_sphere());
+    };
+    if (!sh.is_composite()) return one(sh);
+    for (int k = 0; k < sh.nparts(); k++)
+      if (one(sh.part_shape(k))) return true;
+    return false;
+  };
+  auto aniso = [&](int ishape) {
+    return parts_any(ishape, true);
   };
   int nell[2] = {0, 0}, first = -1;    // ellipsoid atoms, of them with unequal axes
   for (int i = 0; i < atom->nlocal; i++)
-    if (avec->shape(atom->pshape[i]).is_ellipsoid()) {
+    if (parts_any(atom->pshape[i], false)) {
       nell[0]++;
       if (aniso(atom->pshape[i])) {
         nell[1]++;
@@ -217,7 +232,7 @@ void PairPolyhedron::init_style()
   MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MAX, world);
   bool source_ell = false;
   for (const auto &c : ParticleSource::candidates(lmp)) {
-    source_ell = source_ell || avec->shape(c.ishape).is_ellipsoid();
+    source_ell = source_ell || parts_any(c.ishape, false);
     if (aniso(c.ishape)) {
       nell[1]++;
       first = c.ishape;
@@ -241,9 +256,15 @@ void PairPolyhedron::init_style()
   laws.roll_kr = roll_kr;
   laws.roll_eta = roll_eta;
   choose_history_size();
-  laws.nhist = nhistory;
+  laws.nhist = nhistory_contact;
+  laws.nslot = history_slots();
   setup_history_fix();
   check_timestep();
+}
+
+int PairPolyhedron::history_slots()
+{
+  return polydem::part_contact_slots(PolyShapeLibrary::of(lmp, "pair_style polyhedron")->max_parts());
 }
 
 /* ----------------------------------------------------------------------
@@ -421,7 +442,9 @@ void PairPolyhedron::report_counters()
   const char *what[] = {"overlap workspace overflows (contact skipped)",
                         "degenerate contacts (NaN or zero size; contact skipped)",
                         "GJK non-convergences (overlap computed anyway)",
-                        "overlaps beyond overlap/warn of the smaller particle volume"};
+                        "overlaps beyond overlap/warn of the smaller particle volume",
+                        "part contacts of composites beyond the pair's history slots (friction "
+                        "without history)"};
   PairPolydem::report_counters(what, polydem::PP_CONTACTS);
 }
 

@@ -157,7 +157,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
     // the history is that of the lower-tag atom (polydem_contact_law.h);
     // FixNeighHistoryKokkos copies it to the partner unchanged
     const auto c = polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate != 0,
-                                                    &firstshear(i, laws.nhist * jj), ws, red.cnt,
+                                                    &firstshear(i, polydem::pair_history_stride(laws) * jj), ws, red.cnt,
                                                     firsttouch(i, jj) != 0);
     firsttouch(i, jj) = c.contact;
     if (!c.contact) return;

@@ -18,6 +18,7 @@
 #include "polydem_shape_template.h"
 
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -98,6 +99,7 @@ void PolyShapeLibrary::process_args(int narg, char **arg)
                        arg[iarg + 1], err);
     templates.push_back(std::move(t));
     template_ids.emplace_back(arg[iarg + 1]);
+    template_records.emplace_back(arg[iarg + 2]);
     iarg += 3;
   }
   version++;
@@ -156,6 +158,7 @@ int PolyShapeLibrary::add_shape(const std::string &id,
     error->all(FLERR, "polyhedron_shape: shape ID '{}' is already defined", id);
   templates.push_back(std::move(t));
   template_ids.push_back(id);
+  template_records.push_back(record);
   version++;
 
   // append "shape ID RECORD" to the owner's stored arguments
@@ -168,6 +171,13 @@ int PolyShapeLibrary::add_shape(const std::string &id,
   owner->argcopy = newargs;
   owner->nargcopy += 3;
   return (int) templates.size() - 1;
+}
+
+int PolyShapeLibrary::max_parts() const
+{
+  int m = 1;
+  for (const auto &t : templates) m = std::max(m, t->nparts());
+  return m;
 }
 
 /* ---------------------------------------------------------------------- */

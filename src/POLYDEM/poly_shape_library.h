@@ -42,6 +42,10 @@ class PolyShapeLibrary : protected Pointers {
   int ntemplates() const { return (int) templates.size(); }
   const polydem::PolyShapeTemplate &shape(int i) const { return *templates[i]; }
   const std::string &shape_id(int i) const { return template_ids[i]; }
+  // its serialised form (polydem_shape_record.h), as stored in restart files
+  const std::string &shape_record(int i) const { return template_records[i]; }
+  // largest part count of the templates (1: none is a composite)
+  int max_parts() const;
   int find_shape(const std::string &id) const;
   // add a template; 'record' is its serialised form, kept in the atom style's
   // arguments so that restart files carry the templates (see process_args)
@@ -77,7 +81,7 @@ class PolyShapeLibrary : protected Pointers {
  private:
   class AtomVec *owner;
   std::vector<std::unique_ptr<polydem::PolyShapeTemplate>> templates;
-  std::vector<std::string> template_ids;
+  std::vector<std::string> template_ids, template_records;
   int version;
 
   int pshape_one;    // atom values swapped out by pack_data_pre

@@ -156,45 +156,63 @@ POLYDEM_FN OverlapResult<T> mixed_pair_overlap(const PosedShape<T> &A, const Pos
   return r;
 }
 
-// One pair of pair polyhedron (A = the list's i): polyhedra, spheres and
-// ellipsoids by their overlap volume; hist = its tab.nhist values in
-// the pair convention (contact_history_sign), advanced and kept if update
-// (not at setup, where dt does not increment it); ws: the overlap workspace;
-// count[PP_*] incremented. touching: the pair was in contact at the last
-// step (the neighbor history's flag); then GJK, only a filter, is skipped,
-// since the overlap decides separation by itself and a pair in contact
-// mostly stays so.
-template <typename T, int MF, typename C>
-POLYDEM_FN PairContactResult<T>
-polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
-                        const LawTable<T> &tab, T dt, bool update, T *hist,
-                        OverlapWorkspace<T, MF> &ws, C *count, bool touching = false)
+// part k of a posed composite (the body itself if it is not one): the
+// part's template at x + s R x_k, rotated by R R_k
+template <typename T> POLYDEM_FN PosedShape<T> posed_part(const PosedShape<T> &body, int k)
 {
-  PairContactResult<T> r;
-  r.contact = 0;
-  const bool mixed = view_is_ellipsoid(*A.shape.view) || view_is_ellipsoid(*B.shape.view);
+  const ShapeView<T> &v = *body.view;
+  if (!view_is_composite(v)) return body;
+  const ShapePart<T> &p = v.parts[k];
+  PosedShape<T> r;
+  r.view = p.view;
+  r.s = body.s;
+  r.x = body.x + body.s * matvec(body.R, make_vec3(p.x[0], p.x[1], p.x[2]));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      r.R.m[i][j] = body.R.m[i][0] * p.R[0][j] + body.R.m[i][1] * p.R[1][j] +
+          body.R.m[i][2] * p.R[2][j];
+  return r;
+}
+
+// The overlap of two convex shapes (polyhedra, spheres, ellipsoids):
+// status counted in count[PP_*]; GJK (a filter for polyhedron pairs) is
+// skipped if touching.
+template <typename T, int MF, typename C>
+POLYDEM_FN OverlapResult<T> convex_overlap(const PosedShape<T> &A, const PosedShape<T> &B,
+                                           OverlapWorkspace<T, MF> &ws, C *count, bool touching)
+{
+  const bool mixed = view_is_ellipsoid(*A.view) || view_is_ellipsoid(*B.view);
   if (!touching && !mixed) {
-    const auto g = gjk_intersect(A.shape, B.shape);
+    const auto g = gjk_intersect(A, B);
     if (g.status == STATUS_SEPARATED) {
-      history_release(hist, tab.nhist);
+      OverlapResult<T> r = ellipsoid_overlap_detail::no_overlap<T>();
+      r.status = STATUS_SEPARATED;
       return r;
     }
     if (g.status != STATUS_OK) count[PP_NOCONV] += C(1);
   }
-  const OverlapResult<T> ov =
-      mixed ? mixed_pair_overlap(A.shape, B.shape) : polyhedron_overlap(A.shape, B.shape, ws);
-  if (ov.status != STATUS_OK) {
-    if (ov.status == STATUS_OVERFLOW)
-      count[PP_OVERFLOW] += C(1);
-    else if (ov.status == STATUS_DEGENERATE || ov.status == STATUS_UNSUPPORTED)
-      count[PP_DEGENERATE] += C(1);
-    history_release(hist, tab.nhist);
-    return r;
-  }
+  const OverlapResult<T> ov = mixed ? mixed_pair_overlap(A, B) : polyhedron_overlap(A, B, ws);
+  if (ov.status == STATUS_OVERFLOW)
+    count[PP_OVERFLOW] += C(1);
+  else if (ov.status == STATUS_DEGENERATE || ov.status == STATUS_UNSUPPORTED)
+    count[PP_DEGENERATE] += C(1);
+  return ov;
+}
+
+// The contact of convex shapes a (of body A) and b (of body B) with overlap
+// ov: the law of their volumes, the bodies' kinematics about their centres,
+// the history h (nhist values, or null), counted.
+template <typename T, typename C>
+POLYDEM_FN PairContactResult<T>
+convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                    const PosedShape<T> &a, const PosedShape<T> &b, const OverlapResult<T> &ov,
+                    const LawTable<T> &tab, T dt, bool update, T *h, C *count)
+{
+  PairContactResult<T> r;
   r.contact = 1;
   count[PP_CONTACTS] += C(1);
-  const T si = A.shape.s, sj = B.shape.s;
-  const T Vi = A.shape.view->volume * si * si * si, Vj = B.shape.view->volume * sj * sj * sj;
+  const T si = a.s, sj = b.s;
+  const T Vi = a.view->volume * si * si * si, Vj = b.view->volume * sj * sj * sj;
   r.vmin = Vi < Vj ? Vi : Vj;
   if (ov.volume > tab.overlap_warn * r.vmin) count[PP_BIGOVERLAP] += C(1);
 
@@ -203,9 +221,117 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
                                                    A.m * B.m / (A.m + B.m), update ? dt : T(0),
                                                    A.m, B.m);
   r.geo = contact_geometry<T>(ov);
-  r.cf = pair_contact_step(r.geo, law, kin, hist, tab.nhist,
+  // dV/dtheta about the bodies' centres (Feng's Eq. 9 torques): rotating a
+  // part about its body's centre also moves it by theta x (x_part - x_body)
+  r.geo.M_A += cross(a.x - A.shape.x, ov.S_A);
+  r.geo.M_B -= cross(b.x - B.shape.x, ov.S_A);
+  r.cf = pair_contact_step(r.geo, law, kin, h, tab.nhist,
                            T(contact_history_sign(A.tag, B.tag)), update);
   return r;
+}
+
+// A pair of which one or both are composites, in a table with part slots
+// (tab.nslot > 0): every pair of parts whose bounding spheres meet is a
+// contact of its own, with its history in the slot keyed 1 + (part of the
+// lower-tag body) x MAX_COMPOSITE_PARTS + (part of the other); the forces
+// and torques are summed on the bodies. The result's geometry is that of
+// the deepest part contact with the summed volume and area.
+template <typename T, int MF, typename C>
+POLYDEM_FN PairContactResult<T>
+composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                       const LawTable<T> &tab, T dt, bool update, T *hist,
+                       OverlapWorkspace<T, MF> &ws, C *count)
+{
+  PairContactResult<T> r;
+  r.contact = 0;
+  const int na = view_is_composite(*A.shape.view) ? A.shape.view->nparts : 1;
+  const int nb = view_is_composite(*B.shape.view) ? B.shape.view->nparts : 1;
+  const bool a_low = A.tag < B.tag;
+  const int stride = 1 + tab.nhist;
+  T deepest = T(-1), volume = T(0), area = T(0);
+  for (int ka = 0; ka < na; ++ka) {
+    const PosedShape<T> a = posed_part(A.shape, ka);
+    for (int kb = 0; kb < nb; ++kb) {
+      const PosedShape<T> b = posed_part(B.shape, kb);
+      const T key = T(1 + (a_low ? ka * MAX_COMPOSITE_PARTS + kb : kb * MAX_COMPOSITE_PARTS + ka));
+      T *slot = nullptr;
+      for (int k = 0; k < tab.nslot; ++k)
+        if (hist[k * stride] == key) slot = hist + k * stride;
+      const T reach = a.s * a.view->radius + b.s * b.view->radius;
+      OverlapResult<T> ov;
+      ov.status = STATUS_SEPARATED;
+      if (norm2(a.x - b.x) < reach * reach) ov = convex_overlap(a, b, ws, count, slot != nullptr);
+      if (ov.status != STATUS_OK) {
+        history_release(slot, stride);
+        continue;
+      }
+      if (!slot && update)
+        for (int k = 0; k < tab.nslot && !slot; ++k)
+          if (hist[k * stride] == T(0)) {
+            slot = hist + k * stride;
+            slot[0] = key;
+          }
+      if (!slot && update) count[PP_NOSLOT] += C(1);    // more part contacts than slots
+      const PairContactResult<T> c =
+          convex_contact_step(A, B, a, b, ov, tab, dt, update, slot ? slot + 1 : nullptr, count);
+      if (!r.contact) {
+        r.cf = c.cf;
+      } else {
+        r.cf.F_A += c.cf.F_A;
+        r.cf.tau_A += c.cf.tau_A;
+        r.cf.tau_B += c.cf.tau_B;
+        r.cf.energy += c.cf.energy;
+        r.cf.fn += c.cf.fn;
+        r.cf.ft += c.cf.ft;
+      }
+      r.contact = 1;
+      volume += c.geo.volume;
+      area += c.geo.area;
+      if (c.geo.volume > deepest) {
+        deepest = c.geo.volume;
+        r.geo = c.geo;
+        r.cf.rate = c.cf.rate;
+      }
+    }
+  }
+  if (r.contact) {
+    r.geo.volume = volume;
+    r.geo.area = area;
+    const T si = A.shape.s, sj = B.shape.s;
+    const T Vi = A.shape.view->volume * si * si * si, Vj = B.shape.view->volume * sj * sj * sj;
+    r.vmin = Vi < Vj ? Vi : Vj;
+  }
+  return r;
+}
+
+// One pair of pair polyhedron (A = the list's i): polyhedra, spheres,
+// ellipsoids and composites of them by their overlap volume; hist = its
+// pair_history_stride(tab) values in the pair convention
+// (contact_history_sign), advanced and kept if update (not at setup, where
+// dt does not increment it); ws: the overlap workspace; count[PP_*]
+// incremented. touching: the pair was in contact at the last step (the
+// neighbor history's flag); then GJK, only a filter, is skipped, since the
+// overlap decides separation by itself and a pair in contact mostly stays so.
+template <typename T, int MF, typename C>
+POLYDEM_FN PairContactResult<T>
+polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                        const LawTable<T> &tab, T dt, bool update, T *hist,
+                        OverlapWorkspace<T, MF> &ws, C *count, bool touching = false)
+{
+  const bool ca = view_is_composite(*A.shape.view), cb = view_is_composite(*B.shape.view);
+  if (tab.nslot > 0 && (ca || cb))
+    return composite_pair_contact(A, B, tab, dt, update, hist, ws, count);
+  // convex, or composites of one part (no slots): the part itself
+  const PosedShape<T> a = ca ? posed_part(A.shape, 0) : A.shape;
+  const PosedShape<T> b = cb ? posed_part(B.shape, 0) : B.shape;
+  const OverlapResult<T> ov = convex_overlap(a, b, ws, count, touching);
+  if (ov.status != STATUS_OK) {
+    history_release(hist, tab.nhist);
+    PairContactResult<T> r;
+    r.contact = 0;
+    return r;
+  }
+  return convex_contact_step(A, B, a, b, ov, tab, dt, update, hist, count);
 }
 
 // atom k with its template's view (which outlives the body)

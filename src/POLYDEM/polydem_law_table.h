@@ -36,6 +36,9 @@ template <typename T> struct LawTable {
   // values kept per pair contact (CONTACT_HIST, ELLIPSOID_HIST, or
   // CONTACT_HIST_ROLL when a type pair has rolling resistance)
   int nhist;
+  // composites in the scene: a pair keeps nslot keyed part contacts of
+  // 1 + nhist values each (pair_history_stride); 0: one contact of nhist
+  int nslot;
   // rolling resistance (RollingLaw): k_r factor and dashpot ratio eta_r
   T roll_kr, roll_eta;
   // Feng (polyhedra): polynomial core V0 = core x smaller volume; twisting friction
@@ -53,6 +56,19 @@ template <typename T> struct LawTable {
   POLYDEM_FN const LawEntry<T> &wall(int t) const { return entry[t]; }
 };
 
+// values a pair of the table keeps in the neighbor history
+template <typename T> POLYDEM_FN int pair_history_stride(const LawTable<T> &t)
+{
+  return t.nslot > 0 ? t.nslot * (1 + t.nhist) : t.nhist;
+}
+
+// keyed part contacts a pair keeps when the largest template has maxparts
+// parts: every pair of parts, at most 8 (more are counted, without history)
+inline int part_contact_slots(int maxparts)
+{
+  return maxparts > 1 ? (maxparts * maxparts < 8 ? maxparts * maxparts : 8) : 0;
+}
+
 // the table over nentry entries (zero: the caller fills them), its settings
 // at their defaults
 template <typename T> inline LawTable<T> law_table(const LawEntry<T> *entry, int ntypes, int nentry)
@@ -69,6 +85,7 @@ template <typename T> inline LawTable<T> law_table(const LawEntry<T> *entry, int
   t.damping_mass = DAMPING_REDUCED;
   t.overlap_warn = T(1);
   t.nhist = CONTACT_HIST;
+  t.nslot = 0;
   const RollingLaw<T> r;
   t.roll_kr = r.kr;
   t.roll_eta = r.eta;

@@ -15,6 +15,7 @@ enum PolyhedronPairCount : int {
   PP_DEGENERATE,    // degenerate overlaps (contact skipped)
   PP_NOCONV,        // GJK non-convergences (overlap computed anyway)
   PP_BIGOVERLAP,    // V > overlap_warn x smaller volume
+  PP_NOSLOT,        // part contacts of composites beyond the pair's slots (no history)
   PP_CONTACTS,      // pair-steps in contact
   PP_NCOUNT
 };

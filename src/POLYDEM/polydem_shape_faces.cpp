@@ -73,6 +73,7 @@ double PolyShapeTemplate::inradius() const
 {
   if (ellipsoid_) return std::min(axes_[0], std::min(axes_[1], axes_[2]));
   double r = 1e300;
+  for (const auto &p : input_parts_) r = std::min(r, p.shape->inradius());    // the thinnest part
   for (int f = 0; f < nfaces(); f++) r = std::min(r, planes_[4 * f + 3]);
   return r;
 }
@@ -80,6 +81,7 @@ double PolyShapeTemplate::inradius() const
 double PolyShapeTemplate::max_face_area() const
 {
   double amax = 0.0;
+  for (const auto &p : input_parts_) amax = std::max(amax, p.shape->max_face_area());
   for (int f = 0; f < nfaces(); f++) {
     double a[3] = {0.0, 0.0, 0.0};    // sum of p_k x p_k+1 = 2 area n
     for (int k = face_start_[f]; k < face_start_[f + 1]; k++) {
@@ -120,10 +122,16 @@ static ShapeView<T> make_view(int nv, int nf, int ne, const T *v, const T *pl, c
 
 ShapeView<double> PolyShapeTemplate::view() const
 {
-  return make_view<double>(nverts(), nfaces(), nedges(), verts_.data(), planes_.data(),
-                           face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
-                           moments_, dual_.empty() ? nullptr : dual_.data(),
-                           vadj_.empty() ? nullptr : vadj_.data(), axes_);
+  ShapeView<double> v =
+      make_view<double>(nverts(), nfaces(), nedges(), verts_.data(), planes_.data(),
+                        face_start_.data(), face_verts_.data(), edges_.data(), radius_, volume_,
+                        moments_, dual_.empty() ? nullptr : dual_.data(),
+                        vadj_.empty() ? nullptr : vadj_.data(), axes_);
+  if (parts_) {
+    v.nparts = (int) parts_->size();
+    v.parts = parts_->data();
+  }
+  return v;
 }
 
 ShapeView<float> PolyShapeTemplate::view_float() const

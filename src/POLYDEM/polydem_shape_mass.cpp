@@ -213,6 +213,11 @@ namespace {
 
 }    // namespace
 
+void shape_impl::principal_axes(const double inertia[3][3], double R[3][3])
+{
+  choose_axes(inertia, R);
+}
+
 // Phase 6, principal frame: exact volume, centroid and inertia of the hull
 // in input coordinates; the centroid moves to the origin and the principal
 // axes become the body axes (choose_axes). Sets centroid_ and rot_ and

@@ -8,6 +8,8 @@
    template equals the original bit for bit.
    Format: "polydem-shape-1 <hull 0|1> <name> <npoints> x y z x y z ..."
    Ellipsoids: "polydem-ellipsoid-1 <name> a b c" (semi-axes, 17 digits).
+   Composites: "polydem-composite-1 <name> <nparts>" and per part
+   " <id> x y z qw qx qy qz <length> <the part's record>".
 ------------------------------------------------------------------------- */
 
 #include "polydem_shape_record.h"
@@ -22,6 +24,8 @@ namespace polydem {
 static const char *RECORD_TAG = "polydem-shape-1";
 
 static const char *ELLIPSOID_TAG = "polydem-ellipsoid-1";
+
+static const char *COMPOSITE_TAG = "polydem-composite-1";
 
 static std::string record_name(std::string name)
 {
@@ -81,9 +85,75 @@ std::unique_ptr<PolyShapeTemplate> shape_ellipsoid(double a, double b, double c,
   }
 }
 
+std::unique_ptr<PolyShapeTemplate> shape_composite(const std::vector<CompositePartRecord> &parts,
+                                                   const std::string &name, std::string &record,
+                                                   std::string &err)
+{
+  std::vector<PolyShapeTemplate::InputPart> in;
+  std::string rec = std::string(COMPOSITE_TAG) + " " + record_name(name) + " " +
+      std::to_string(parts.size());
+  char buf[256];
+  for (const auto &p : parts) {
+    auto t = shape_from_record(p.record, err);
+    if (!t) {
+      err = name + ": part '" + p.id + "': " + err;
+      return nullptr;
+    }
+    PolyShapeTemplate::InputPart ip;
+    ip.shape = std::move(t);
+    ip.id = p.id;
+    ip.x = {p.x[0], p.x[1], p.x[2]};
+    ip.q = make_quat(p.q[0], p.q[1], p.q[2], p.q[3]);
+    in.push_back(std::move(ip));
+    snprintf(buf, sizeof(buf), " %.17g %.17g %.17g %.17g %.17g %.17g %.17g", p.x[0], p.x[1],
+             p.x[2], p.q[0], p.q[1], p.q[2], p.q[3]);
+    rec += " " + record_name(p.id) + buf + " " + std::to_string(p.record.size()) + " " + p.record;
+  }
+  try {
+    auto t = std::make_unique<PolyShapeTemplate>(PolyShapeTemplate::composite(in, record_name(name)));
+    record = rec;
+    return t;
+  } catch (std::exception &e) {
+    err = e.what();
+    return nullptr;
+  }
+}
+
+static std::unique_ptr<PolyShapeTemplate> composite_from_record(std::istringstream &in,
+                                                                std::string &err)
+{
+  std::string tag, name;
+  long n = 0;
+  if (!(in >> tag >> name >> n) || tag != COMPOSITE_TAG || n < 1 || n > MAX_COMPOSITE_PARTS) {
+    err = "not a POLYDEM composite record";
+    return nullptr;
+  }
+  std::vector<CompositePartRecord> parts((size_t) n);
+  for (auto &p : parts) {
+    std::string tok[7];
+    long len = 0;
+    if (!(in >> p.id >> tok[0] >> tok[1] >> tok[2] >> tok[3] >> tok[4] >> tok[5] >> tok[6] >>
+          len) ||
+        len < 1 || len > 100000000L || in.get() != ' ') {
+      err = "composite record truncated";
+      return nullptr;
+    }
+    for (int k = 0; k < 3; k++) p.x[k] = std::strtod(tok[k].c_str(), nullptr);
+    for (int k = 0; k < 4; k++) p.q[k] = std::strtod(tok[3 + k].c_str(), nullptr);
+    p.record.resize((size_t) len);
+    if (!in.read(&p.record[0], len)) {
+      err = "composite record truncated";
+      return nullptr;
+    }
+  }
+  std::string rec;
+  return shape_composite(parts, name, rec, err);
+}
+
 std::unique_ptr<PolyShapeTemplate> shape_from_record(const std::string &record, std::string &err)
 {
   std::istringstream in(record);
+  if (record.rfind(COMPOSITE_TAG, 0) == 0) return composite_from_record(in, err);
   if (record.rfind(ELLIPSOID_TAG, 0) == 0) {
     std::string tag, name, tok[3];
     if (!(in >> tag >> name >> tok[0] >> tok[1] >> tok[2]) || tag != ELLIPSOID_TAG) {

@@ -27,6 +27,20 @@ std::unique_ptr<PolyShapeTemplate> shape_ellipsoid(double a, double b, double c,
                                                    const std::string &name, std::string &record,
                                                    std::string &err);
 
+// A part of a composite: its shape's record, its name in messages, its
+// position and orientation (w, x, y, z) in the composite's input frame.
+struct CompositePartRecord {
+  std::string id, record;
+  double x[3];
+  double q[4];
+};
+
+// A composite template of the given parts (each rebuilt from its record).
+// On failure returns nullptr and sets err.
+std::unique_ptr<PolyShapeTemplate> shape_composite(const std::vector<CompositePartRecord> &parts,
+                                                   const std::string &name, std::string &record,
+                                                   std::string &err);
+
 // Rebuild a template from its record, bit-identical to the one recorded.
 std::unique_ptr<PolyShapeTemplate> shape_from_record(const std::string &record,
                                                      std::string &err);

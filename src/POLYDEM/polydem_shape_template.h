@@ -18,6 +18,7 @@
 #include "polydem_shape_view.h"
 
 #include <array>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -64,6 +65,28 @@ class PolyShapeTemplate {
   bool is_sphere() const { return ellipsoid_ && axes_[0] == axes_[1] && axes_[0] == axes_[2]; }
   // semi-axes at unit scale (ellipsoids only; zero for polyhedra)
   const std::array<double, 3> &semi_axes() const { return axes_; }
+
+  // A composite template: the rigid union of convex parts (polyhedra or
+  // ellipsoids), each placed by a position and an orientation in the
+  // composite's input frame. Parts may overlap where both are polyhedra
+  // (the union's mass properties are computed exactly, with CGAL's Nef
+  // polyhedra); a part that is an ellipsoid must be disjoint from the others.
+  // A composite of one part has that part's body frame. Throws ShapeError.
+  struct InputPart {
+    std::shared_ptr<const PolyShapeTemplate> shape;    // convex (not a composite)
+    std::string id;                                    // name of the part in messages
+    Point x;                                           // position of its centroid
+    Quat<double> q;                                    // its orientation (unit)
+  };
+  static PolyShapeTemplate composite(const std::vector<InputPart> &parts, const std::string &name);
+  bool is_composite() const { return !input_parts_.empty(); }
+  int nparts() const { return (int) input_parts_.size(); }
+  const std::vector<InputPart> &input_parts() const { return input_parts_; }
+  // part k in the body frame: its template, position and rotation (unit scale)
+  const PolyShapeTemplate &part_shape(int k) const { return *input_parts_[k].shape; }
+  const ShapePart<double> &part(int k) const { return (*parts_)[k]; }
+  // volume of the union over the sum of the parts' volumes (1: disjoint)
+  double union_fraction() const { return union_fraction_; }
 
   // Kernel view into this object's storage: valid while the object lives
   // (a move keeps the storage, a copy has its own).
@@ -140,6 +163,13 @@ class PolyShapeTemplate {
   std::vector<int> dual_;    // dual triangulation (polydem_dual_seed.h)
   std::vector<int> vadj_;    // vertex adjacency (polydem_dual_seed.h)
   std::vector<float> verts_f_, planes_f_;
+
+  // composites: the parts as given, their views (shared by copies, so that
+  // the pointers of parts_ stay valid) and their body-frame placements
+  std::vector<InputPart> input_parts_;
+  std::shared_ptr<const std::vector<ShapeView<double>>> part_views_;
+  std::shared_ptr<const std::vector<ShapePart<double>>> parts_;
+  double union_fraction_ = 1.0;
 
   bool ellipsoid_ = false;
   std::array<double, 3> axes_ = {0.0, 0.0, 0.0};

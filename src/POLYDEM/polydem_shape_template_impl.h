@@ -63,6 +63,11 @@ namespace shape_impl {
     return n;
   }
 
+  // Principal axes of an inertia tensor as the columns of R (a proper
+  // rotation), moments ascending; degenerate moments keep the input axes
+  // (polydem_shape_mass.cpp).
+  void principal_axes(const double inertia[3][3], double R[3][3]);
+
 }    // namespace shape_impl
 }    // namespace polydem
 

@@ -22,6 +22,8 @@ constexpr int MAX_TEMPLATE_FACES = 128;
 // ints per triangle of ShapeView::dual (polydem_dual_seed.h)
 constexpr int DUAL_SEED_STRIDE_K = 7;
 
+template <typename T> struct ShapePart;
+
 template <typename T> struct ShapeView {
   int nverts;             // number of hull vertices
   int nfaces;             // number of (merged, planar, convex) faces
@@ -44,7 +46,28 @@ template <typename T> struct ShapeView {
   // an ellipsoid template (no vertices or faces): its semi-axes along the
   // body axes at unit scale; zero for a polyhedron (view_is_ellipsoid)
   T axes[3] = {T(0), T(0), T(0)};
+  // a composite template (a rigid union of convex parts, each a polyhedron
+  // or an ellipsoid): its parts, or nparts = 0. A composite has no
+  // vertices, faces or axes of its own (view_is_composite).
+  int nparts = 0;
+  const ShapePart<T> *parts = nullptr;
 };
+
+// Maximum parts of a composite template (history keys, workspaces).
+constexpr int MAX_COMPOSITE_PARTS = 16;
+
+// One part of a composite: its convex template and its placement in the
+// composite's body frame at unit scale, p_body = x + R p_part.
+template <typename T> struct ShapePart {
+  const ShapeView<T> *view;
+  T x[3];
+  T R[3][3];
+};
+
+template <typename T> POLYDEM_FN bool view_is_composite(const ShapeView<T> &v)
+{
+  return v.nparts > 0;
+}
 
 template <typename T> POLYDEM_FN bool view_is_ellipsoid(const ShapeView<T> &v)
 {

@@ -4,6 +4,8 @@
    every template's vertices, planes, face loops, edges and int arrays (dual
    seed, vertex adjacency) flat in a few Views, one ShapeView per template
    whose pointers address them, and the semi-axes of ellipsoid templates.
+   The parts of composite templates follow the templates (views n, n+1, ...)
+   and each composite's ShapePart entries point to them.
    Uploaded again only when the library's shape version changes.
 ------------------------------------------------------------------------- */
 
@@ -18,6 +20,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 namespace polydem_kk {
 
@@ -28,6 +31,7 @@ template <class DeviceType> struct DeviceShapes {
   Kokkos::View<int *, DeviceType> face_start, face_verts, edges;
   Kokkos::View<int *, DeviceType> ints;    // per template: dual seed (with_dual), vertex adjacency
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> views;
+  Kokkos::View<polydem::ShapePart<double> *, DeviceType> parts;    // of the composites
   Kokkos::View<double *[3], DeviceType> axes;    // semi-axes of ellipsoid templates, else 0
 
   // upload if the library changed; with_dual: also the dual seeds (the
@@ -36,6 +40,16 @@ template <class DeviceType> struct DeviceShapes {
   {
     if (version == lib.shape_version()) return false;
     const int n = lib.ntemplates();
+    // every template, then the parts of the composites (views n, n+1, ...)
+    std::vector<const polydem::PolyShapeTemplate *> all;
+    for (int t = 0; t < n; t++) all.push_back(&lib.shape(t));
+    int nparts = 0;
+    for (int t = 0; t < n; t++)
+      for (int k = 0; k < lib.shape(t).nparts(); k++) {
+        all.push_back(&lib.shape(t).part_shape(k));
+        nparts++;
+      }
+    const int nall = (int) all.size();
     enum { VERTS, PLANES, FSTART, FVERTS, EDGES, DUAL, VADJ, NARRAY };
     auto sizes = [&](const polydem::ShapeView<double> &sv, int *add) {
       add[VERTS] = 3 * sv.nverts;
@@ -48,13 +62,13 @@ template <class DeviceType> struct DeviceShapes {
     };
     int size[NARRAY] = {0, 0, 0, 0, 0, 0, 0}, add[NARRAY];
     max_faces = 0;
-    for (int t = 0; t < n; t++) {
-      const auto sv = lib.shape(t).view();
+    for (int t = 0; t < nall; t++) {
+      const auto sv = all[t]->view();
       sizes(sv, add);
       for (int k = 0; k < NARRAY; k++) size[k] += add[k];
       max_faces = std::max(max_faces, sv.nfaces);
     }
-    const int m = n > 0 ? n : 1;
+    const int m = nall > 0 ? nall : 1;
     verts = Kokkos::View<double *, DeviceType>(label + ":verts", size[VERTS]);
     planes = Kokkos::View<double *, DeviceType>(label + ":planes", size[PLANES]);
     face_start = Kokkos::View<int *, DeviceType>(label + ":face_start", size[FSTART]);
@@ -62,6 +76,8 @@ template <class DeviceType> struct DeviceShapes {
     edges = Kokkos::View<int *, DeviceType>(label + ":edges", size[EDGES]);
     ints = Kokkos::View<int *, DeviceType>(label + ":dual_vadj", size[DUAL] + size[VADJ]);
     views = Kokkos::View<polydem::ShapeView<double> *, DeviceType>(label + ":shapes", m);
+    parts = Kokkos::View<polydem::ShapePart<double> *, DeviceType>(label + ":parts",
+                                                                    nparts > 0 ? nparts : 1);
     axes = Kokkos::View<double *[3], DeviceType>(label + ":axes", m);
     auto h_verts = Kokkos::create_mirror_view(verts);
     auto h_planes = Kokkos::create_mirror_view(planes);
@@ -70,11 +86,13 @@ template <class DeviceType> struct DeviceShapes {
     auto h_edges = Kokkos::create_mirror_view(edges);
     auto h_ints = Kokkos::create_mirror_view(ints);
     auto h_views = Kokkos::create_mirror_view(views);
+    auto h_parts = Kokkos::create_mirror_view(parts);
     auto h_axes = Kokkos::create_mirror_view(axes);
     int off[NARRAY] = {0, 0, 0, 0, 0, 0, 0};
     int iints = 0;    // the dual seed and the adjacency of a template, in one int array
-    for (int t = 0; t < n; t++) {
-      const auto &shape = lib.shape(t);
+    int ipart = 0;    // next part, in the order of the views n, n+1, ...
+    for (int t = 0; t < nall; t++) {
+      const auto &shape = *all[t];
       const auto sv = shape.view();
       sizes(sv, add);
       for (int k = 0; k < add[VERTS]; k++) h_verts(off[VERTS] + k) = sv.verts[k];
@@ -92,6 +110,14 @@ template <class DeviceType> struct DeviceShapes {
       dv.edges = edges.data() + off[EDGES];
       dv.dual = add[DUAL] > 0 ? ints.data() + iints : nullptr;
       dv.vadj = add[VADJ] > 0 ? ints.data() + iints + add[DUAL] : nullptr;
+      if (sv.nparts > 0) {    // its parts' placements, their views on the device
+        dv.parts = parts.data() + ipart;
+        for (int k = 0; k < sv.nparts; k++) {
+          polydem::ShapePart<double> p = sv.parts[k];
+          p.view = views.data() + n + ipart;
+          h_parts(ipart++) = p;
+        }
+      }
       h_views(t) = dv;
       for (int k = 0; k < 3; k++) h_axes(t, k) = shape.is_ellipsoid() ? shape.semi_axes()[k] : 0.0;
       for (int k = 0; k < NARRAY; k++) off[k] += add[k];
@@ -104,6 +130,7 @@ template <class DeviceType> struct DeviceShapes {
     Kokkos::deep_copy(edges, h_edges);
     Kokkos::deep_copy(ints, h_ints);
     Kokkos::deep_copy(views, h_views);
+    Kokkos::deep_copy(parts, h_parts);
     Kokkos::deep_copy(axes, h_axes);
     version = lib.shape_version();
     return true;
@@ -114,7 +141,8 @@ template <class DeviceType> struct DeviceShapes {
     return (double) (verts.extent(0) + planes.extent(0) + 3 * axes.extent(0)) * sizeof(double) +
         (double) (face_start.extent(0) + face_verts.extent(0) + edges.extent(0) +
                   ints.extent(0)) * sizeof(int) +
-        (double) views.extent(0) * sizeof(polydem::ShapeView<double>);
+        (double) views.extent(0) * sizeof(polydem::ShapeView<double>) +
+        (double) parts.extent(0) * sizeof(polydem::ShapePart<double>);
   }
 };
 

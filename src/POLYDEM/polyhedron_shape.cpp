@@ -20,6 +20,7 @@ using namespace LAMMPS_NS;
 /* ----------------------------------------------------------------------
    polyhedron_shape ID file [hull yes|no]
    polyhedron_shape ID ellipsoid a b c
+   polyhedron_shape ID composite part SHAPE x y z [quat w i j k] part ...
    Every rank parses the file itself (templates are small); errors are
    identical on all ranks, so error->all is safe.
 ------------------------------------------------------------------------- */
@@ -60,6 +61,11 @@ void PolyhedronShape::command(int narg, char **arg)
     return;
   }
 
+  if (strcmp(arg[1], "composite") == 0) {
+    composite(id, narg - 2, arg + 2);
+    return;
+  }
+
   const std::string file = arg[1];
 
   bool hull = false;
@@ -89,5 +95,64 @@ void PolyhedronShape::command(int narg, char **arg)
                    "volume {:.10g}, bounding radius {:.10g}, principal moments/density "
                    "{:.10g} {:.10g} {:.10g}\n",
                    id, index + 1, v.nverts, v.nfaces, v.nedges, v.volume, v.radius,
+                   v.inertia[0], v.inertia[1], v.inertia[2]);
+}
+
+/* ----------------------------------------------------------------------
+   polyhedron_shape ID composite part SHAPE x y z [quat w i j k] part ...
+   SHAPE: a convex template defined before (polyhedron or ellipsoid);
+   x y z: its centroid, quat: its orientation, in the composite's frame
+------------------------------------------------------------------------- */
+
+void PolyhedronShape::composite(const std::string &id, int narg, char **arg)
+{
+  auto avec = PolyShapeLibrary::of(lmp, "polyhedron_shape");
+  const std::string me = "polyhedron_shape " + id + " composite";
+  std::vector<polydem::CompositePartRecord> parts;
+  int iarg = 0;
+  while (iarg < narg) {
+    if (strcmp(arg[iarg], "part") != 0)
+      error->all(FLERR, "{}: expected 'part SHAPE x y z [quat w i j k]', got '{}'", me, arg[iarg]);
+    if (iarg + 5 > narg)
+      error->all(FLERR, "{}: 'part' needs a shape ID and a position x y z", me);
+    const std::string pid = arg[iarg + 1];
+    const int k = avec->find_shape(pid);
+    if (k < 0)
+      error->all(FLERR, "{}: part shape '{}' is not defined (define it with polyhedron_shape "
+                 "first)", me, pid);
+    if (avec->shape(k).is_composite())
+      error->all(FLERR, "{}: part shape '{}' is a composite (parts are polyhedra or ellipsoids)",
+                 me, pid);
+    polydem::CompositePartRecord p;
+    p.id = pid;
+    p.record = avec->shape_record(k);
+    for (int d = 0; d < 3; d++) p.x[d] = polydem_parse::number(FLERR, arg[iarg + 2 + d], lmp, me);
+    p.q[0] = 1.0;
+    p.q[1] = p.q[2] = p.q[3] = 0.0;
+    iarg += 5;
+    if (iarg < narg && strcmp(arg[iarg], "quat") == 0) {
+      if (iarg + 5 > narg) error->all(FLERR, "{}: 'quat' needs 4 values w i j k", me);
+      for (int d = 0; d < 4; d++) p.q[d] = polydem_parse::number(FLERR, arg[iarg + 1 + d], lmp, me);
+      iarg += 5;
+    }
+    parts.push_back(p);
+  }
+  if (parts.empty()) error->all(FLERR, "{}: no parts (part SHAPE x y z [quat w i j k] ...)", me);
+  if ((int) parts.size() > polydem::MAX_COMPOSITE_PARTS)
+    error->all(FLERR, "{}: {} parts, at most {}", me, parts.size(), polydem::MAX_COMPOSITE_PARTS);
+
+  std::string err, record;
+  auto t = polydem::shape_composite(parts, id, record, err);
+  if (!t) error->all(FLERR, "polyhedron_shape: {}", err);
+  const auto v = t->view();
+  const double frac = t->union_fraction();
+  const auto c = t->input_centroid();
+  const int index = avec->add_shape(id, std::move(t), record);
+  if (comm->me == 0)
+    utils::logmesg(lmp,
+                   "polyhedron_shape {} (index {}): composite of {} parts, volume {:.10g} "
+                   "({:.10g} of the parts' sum), centroid {:.10g} {:.10g} {:.10g}, bounding "
+                   "radius {:.10g}, principal moments/density {:.10g} {:.10g} {:.10g}\n",
+                   id, index + 1, v.nparts, v.volume, frac, c[0], c[1], c[2], v.radius,
                    v.inertia[0], v.inertia[1], v.inertia[2]);
 }

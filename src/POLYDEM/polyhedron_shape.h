@@ -1,6 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    POLYDEM - command polyhedron_shape ID file [hull yes|no]
-   Loads a shape template (potentials/*.shape) into atom_style polyhedron.
+   Loads a shape template (potentials/*.shape), an ellipsoid or a composite
+   of convex parts into atom_style polyhedron.
 ------------------------------------------------------------------------- */
 
 #ifdef COMMAND_CLASS
@@ -14,12 +15,17 @@ CommandStyle(polyhedron_shape,PolyhedronShape);
 
 #include "command.h"
 
+#include <string>
+
 namespace LAMMPS_NS {
 
 class PolyhedronShape : public Command {
  public:
   PolyhedronShape(class LAMMPS *lmp) : Command(lmp) {}
   void command(int, char **) override;
+
+ private:
+  void composite(const std::string &id, int narg, char **arg);
 };
 
 }    // namespace LAMMPS_NS

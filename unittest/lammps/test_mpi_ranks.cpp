@@ -7,6 +7,7 @@
 
 #include "force.h"
 #include "pair.h"
+#include "polydem_pair_counts.h"
 
 #include <gtest/gtest.h>
 
@@ -153,7 +154,7 @@ void contacts_one_vs_two(const std::vector<std::string> &extra)
     l.cmd("run 100");
     EXPECT_EQ(l.thermo("atoms"), 2 * n);
     int dim;
-    contacts = ((double *) l.lmp->force->pair->extract("counters", dim))[4];
+    contacts = ((double *) l.lmp->force->pair->extract("counters", dim))[polydem::PP_CONTACTS];
     multi = gather(l, MPI_COMM_WORLD);
   }
   MPI_Comm self;
@@ -188,5 +189,16 @@ TEST(MpiRanks, SpheresOneVsTwoRanksAgree)
 {
   contacts_one_vs_two({"polyhedron_shape ball ellipsoid 0.8 0.8 0.8", "variable odd atom id%2",
                        "group odd variable odd", "polyhedron_set group odd shape ball"});
+}
+
+// every third particle a composite (issue 29): two cubes and a sphere, whose
+// part contacts cross the subdomain boundary with their keyed histories
+TEST(MpiRanks, CompositesOneVsTwoRanksAgree)
+{
+  contacts_one_vs_two({"polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+                       "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 quat "
+                       "0.92 0.38 0 0 part ball 0 1.3 0",
+                       "variable third atom id%3==0", "group third variable third",
+                       "polyhedron_set group third shape dumb scale 0.6"});
 }
 

@@ -259,6 +259,27 @@ TEST(PairKokkos, SpheresAmongPolyhedraMatchPlain)
   EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
 }
 
+// a third of the grains composites (issue 29): two cubes and a sphere, part
+// contacts with keyed histories, the parts' views on the device
+TEST(PairKokkos, CompositesMatchPlain)
+{
+  Lmp plain, kk(KK);
+  for (Lmp *l : {&plain, &kk}) {
+    l->cmds(setup());
+    l->cmds({"polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+             "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 quat 0.92 "
+             "0.38 0 0 part ball 0 1.3 0",
+             "polyhedron_set group g1 shape dumb scale 0.4 density 1.0"});
+  }
+  plain.cmd("run 100");
+  kk.cmd("run 100");
+  compare(plain, kk, "composites, run 100", true);
+  int dim;
+  const double *cnt = (const double *) plain.lmp->force->pair->extract("counters", dim);
+  ASSERT_NE(cnt, nullptr);
+  EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
+}
+
 // the same style run as /kk/host must give the same numbers
 TEST(PairKokkos, HostVariantMatchesPlain)
 {

@@ -47,6 +47,7 @@ struct Approach {
   std::string shape2 = "";    // the second particle's, as polyhedron_shape's arguments
   bool check_tc = true;       // contact time against the given t_c (10 %)
   std::string shape2_to = "atom 2";    // polyhedron_set's selection for shape2
+  std::vector<std::string> extra = {};    // commands after shape2
 };
 const Approach DODECA_OBLIQUE{"dodecahedron.shape", 0.001, 0.002, 0.0007, 0.0003, true};
 const Approach DODECA_HEADON{"dodecahedron.shape", 0.001, 0.002, 0.0, 0.0, false};
@@ -64,6 +65,7 @@ Collision collide(double dt, long steps, const Approach &ap = DODECA_OBLIQUE)
           "create_atoms 1 single " + num(ap.x0) + " " + num(ap.dy) + " " + num(ap.dz)});
   if (!ap.shape2.empty())
     l.cmds({"polyhedron_shape t " + ap.shape2, "polyhedron_set " + ap.shape2_to + " shape t"});
+  l.cmds(ap.extra);
   l.cmds({"polyhedron_set group all scale " + num(ap.scale) + " density 2500",
           "polyhedron_set atom 1 quat 1 2 3 30", "polyhedron_set atom 2 quat -1 0.5 2 70"});
   if (ap.spin)
@@ -305,7 +307,7 @@ TEST(PairPolyhedron, IsolatedGasConservesMomenta)
   int dim;
   counters = (double *) l.lmp->force->pair->extract("counters", dim);
   ASSERT_NE(counters, nullptr);
-  const double contacts = counters[4];
+  const double contacts = counters[polydem::PP_CONTACTS];
   double p1[3], L1[3], s1;
   momenta(p1, L1, s1);
   EXPECT_EQ(l.thermo("atoms"), 210);
@@ -554,7 +556,7 @@ TEST(PairPolyhedron, WriteRestartLeavesAPeriodicFrictionalRunUnchanged)
       Lmp l(extra);
       l.cmds(scene);
       int dim;
-      contacts = ((double *) l.lmp->force->pair->extract("counters", dim))[4];
+      contacts = ((double *) l.lmp->force->pair->extract("counters", dim))[polydem::PP_CONTACTS];
       l.cmds({"write_restart " + rfile, "run 30"});
       checkpointed = state(l);
     }
@@ -637,19 +639,13 @@ TEST(PairPolyhedron, CohesionEquilibriumOfFaceToFaceCubes)
   EXPECT_GT(v_off, 0.0);
 }
 
-// A mixed scene (issue 29) continues bit for bit from a restart file: 4 x 4 x 3
-// lattice of cubes and dodecahedra, a third of them turned into spheres,
-// frictional contacts (tangential history), 60 steps straight through
-// against 30 + write_restart + read_restart (new instance) + 30.
-TEST(PairPolyhedron, MixedSceneRestartIsExact)
+namespace {
+// 60 steps straight through against 30 + write_restart + read_restart (new
+// instance) + 30 of the 4 x 4 x 3 cube-dodecahedron lattice with `after`;
+// the largest difference of positions, velocities, angular momenta
+void expect_restart_exact(const std::vector<std::string> &after, const char *what)
 {
   const std::string file = ::testing::TempDir() + "polydem_mixed_restart.bin";
-  const std::vector<std::string> after = {
-      "polyhedron_shape ball ellipsoid 0.45 0.45 0.45", "variable third atom id%3==0",
-      "group third variable third", "polyhedron_set group third shape ball density 2.0",
-      "velocity all create 2.0 5151 loop geom", "pair_style polyhedron",
-      "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.01 bin",
-      "neigh_modify every 1 delay 0 check yes"};
   const std::vector<std::string> run = {"fix 1 all nve/polyhedron", "timestep 1.0e-4"};
   auto state = [](Lmp &l) {
     std::map<long, std::vector<double>> s;
@@ -691,6 +687,72 @@ TEST(PairPolyhedron, MixedSceneRestartIsExact)
   for (auto &kv : ref)
     for (size_t k = 0; k < kv.second.size(); k++)
       diff = std::fmax(diff, std::fabs(kv.second[k] - got[kv.first][k]));
-  std::printf("mixed restart: %.0f contact evaluations; largest difference %.3g\n", contacts, diff);
+  std::printf("%s restart: %.0f contact evaluations; largest difference %.3g\n", what, contacts,
+              diff);
   EXPECT_EQ(diff, 0.0);
+}
+}    // namespace
+
+// A mixed scene (issue 29) continues bit for bit from a restart file: a
+// third of the grains turned into spheres, frictional contacts (tangential
+// history).
+TEST(PairPolyhedron, MixedSceneRestartIsExact)
+{
+  expect_restart_exact({"polyhedron_shape ball ellipsoid 0.45 0.45 0.45",
+                        "variable third atom id%3==0", "group third variable third",
+                        "polyhedron_set group third shape ball density 2.0",
+                        "velocity all create 2.0 5151 loop geom", "pair_style polyhedron",
+                        "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.01 bin",
+                        "neigh_modify every 1 delay 0 check yes"},
+                       "mixed");
+}
+
+// composites (issue 29): a third of the grains a dumbbell of two cubes and a
+// sphere, their part contacts keyed in the history slots, written to and
+// read from the restart file with the composite's record
+TEST(PairPolyhedron, CompositeSceneRestartIsExact)
+{
+  expect_restart_exact({"polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+                        "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 "
+                        "quat 0.92 0.38 0 0 part ball 0 1.3 0",
+                        "variable third atom id%3==0", "group third variable third",
+                        "polyhedron_set group third shape dumb scale 0.4 density 2.0",
+                        "velocity all create 2.0 5151 loop geom", "pair_style polyhedron",
+                        "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.01 bin",
+                        "neigh_modify every 1 delay 0 check yes"},
+                       "composite");
+}
+
+// composites (issue 29): two grains, each two overlapping dodecahedra (the
+// union's mass properties), collide obliquely and spinning; every pair of
+// parts is a contact of its own, the torques about the grains' centres
+// (Feng's gradient moved from the part to the body): energy conserved as
+// for convex pairs, at second order in dt
+const Approach COMPOSITE_OBLIQUE{"dodecahedron.shape", 0.001, 0.0028, 0.0009, 0.0004, true,
+                                 "composite part s -0.7 0 0 part s 0.7 0.3 0 quat 0.9 0.3 0.2 0.1",
+                                 false, "group all"};
+
+TEST(PairPolyhedron, ElasticCompositesConserveEnergy)
+{
+  check_energy_convergence(COMPOSITE_OBLIQUE, 1.6e-4, 0.008);
+}
+
+// a composite of one part is its part: the same collision bit for bit, with
+// part-contact slots on (another composite is defined) and off
+TEST(PairPolyhedron, OnePartCompositeEqualsItsPart)
+{
+  const double dt = 2.75e-4 / 200;
+  const Collision ref = collide(dt, 3000, DODECA_OBLIQUE);
+  ASSERT_GT(ref.max_pe, 0.0);
+  for (bool slots : {false, true}) {
+    Approach one = DODECA_OBLIQUE;
+    one.shape2 = "composite part s 0 0 0";
+    one.shape2_to = "group all";
+    if (slots) one.extra = {"polyhedron_shape two composite part s 0 0 0 part s 2 0 0"};
+    const Collision c = collide(dt, 3000, one);
+    EXPECT_EQ(c.max_rel_energy_error, ref.max_rel_energy_error) << "slots " << slots;
+    EXPECT_EQ(c.final_rel_energy_error, ref.final_rel_energy_error) << "slots " << slots;
+    EXPECT_EQ(c.max_pe, ref.max_pe) << "slots " << slots;
+    EXPECT_EQ(c.contact_time, ref.contact_time) << "slots " << slots;
+  }
 }

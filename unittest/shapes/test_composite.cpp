@@ -1,0 +1,209 @@
+// Composite shape templates (issue 29, part 2): the union's mass properties
+// against closed forms (overlapping parts count once), the body frame of
+// the parts, one-part composites, the restart record, and refused input.
+// Reference values are analytic formulas, never numbers from the code.
+
+#include "polydem_shape_record.h"
+#include "polydem_shape_template.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace polydem;
+using Part = PolyShapeTemplate::InputPart;
+
+namespace {
+
+const std::string POT = POLYDEM_POTENTIALS_DIR;
+
+std::shared_ptr<const PolyShapeTemplate> cube()    // unit cube, volume 1, centred
+{
+  static auto c = std::make_shared<PolyShapeTemplate>(PolyShapeTemplate::from_file(POT + "/cube.shape"));
+  return c;
+}
+
+Part part(std::shared_ptr<const PolyShapeTemplate> s, double x, double y, double z,
+          Quat<double> q = make_quat(1.0, 0.0, 0.0, 0.0), const std::string &id = "p")
+{
+  Part p;
+  p.shape = std::move(s);
+  p.id = id;
+  p.x = {x, y, z};
+  p.q = q;
+  return p;
+}
+
+// sorted principal moments
+std::vector<double> moments(const PolyShapeTemplate &t)
+{
+  std::vector<double> m(t.moments().begin(), t.moments().end());
+  std::sort(m.begin(), m.end());
+  return m;
+}
+
+void expect_rel(double got, double want, double tol, const char *what)
+{
+  EXPECT_LE(std::fabs(got - want), tol * std::fabs(want)) << what << ": got " << got << " want "
+                                                         << want;
+}
+
+// A box a x b x c: V = abc, I = V (b^2 + c^2)/12, ...
+std::vector<double> box_moments(double a, double b, double c)
+{
+  const double V = a * b * c;
+  std::vector<double> m = {V * (b * b + c * c) / 12, V * (a * a + c * c) / 12,
+                           V * (a * a + b * b) / 12};
+  std::sort(m.begin(), m.end());
+  return m;
+}
+
+}    // namespace
+
+// two unit cubes overlapping by half: the union is a 1.5 x 1 x 1 box
+// (volume 1.5, not 2), centroid (0.25, 0, 0) in the input frame
+TEST(Composite, OverlappingCubesGiveTheUnionsMassProperties)
+{
+  const auto t = PolyShapeTemplate::composite({part(cube(), 0, 0, 0), part(cube(), 0.5, 0, 0)}, "bar");
+  expect_rel(t.volume(), 1.5, 1e-14, "volume");
+  expect_rel(t.union_fraction(), 0.75, 1e-14, "union fraction");
+  EXPECT_NEAR(t.input_centroid()[0], 0.25, 1e-15);
+  EXPECT_NEAR(t.input_centroid()[1], 0.0, 1e-15);
+  const auto m = moments(t), want = box_moments(1.5, 1.0, 1.0);
+  for (int k = 0; k < 3; k++) expect_rel(m[k], want[k], 1e-13, "moment");
+  EXPECT_NEAR(t.radius(), 0.25 + std::sqrt(0.75), 1e-14);    // part centre 0.25 + cube half-diagonal
+  // the parts in the body frame: 0.5 apart, symmetric about the centroid
+  const auto &a = t.part(0), &b = t.part(1);
+  EXPECT_NEAR(std::hypot(a.x[0] - b.x[0], std::hypot(a.x[1] - b.x[1], a.x[2] - b.x[2])), 0.5, 1e-15);
+  EXPECT_NEAR(std::hypot(a.x[0] + b.x[0], std::hypot(a.x[1] + b.x[1], a.x[2] + b.x[2])), 0.0, 1e-15);
+  const auto v = t.view();
+  EXPECT_TRUE(view_is_composite(v));
+  EXPECT_EQ(v.nparts, 2);
+  EXPECT_EQ(v.nverts, 0);
+}
+
+// an L of three unit cubes meeting face to face: V = 3, centroid (1/3, 1/3, 0),
+// inertia about it by the parallel-axis theorem
+TEST(Composite, LShapeOfTouchingCubes)
+{
+  const auto t = PolyShapeTemplate::composite(
+      {part(cube(), 0, 0, 0), part(cube(), 1, 0, 0), part(cube(), 0, 1, 0)}, "L");
+  expect_rel(t.volume(), 3.0, 1e-14, "volume");
+  EXPECT_NEAR(t.input_centroid()[0], 1.0 / 3, 1e-15);
+  EXPECT_NEAR(t.input_centroid()[1], 1.0 / 3, 1e-15);
+  // I about the centroid: sum of 1/6 + |d|^2 - d d^T per cube
+  const double c[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+  double I[3][3] = {{0}};
+  for (auto &p : c) {
+    const double d[3] = {p[0] - 1.0 / 3, p[1] - 1.0 / 3, 0.0};
+    const double d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) I[i][j] += (i == j ? 1.0 / 6 + d2 : 0.0) - d[i] * d[j];
+  }
+  // eigenvalues: I_zz, and the xy block's a +- b
+  const double mid = 0.5 * (I[0][0] + I[1][1]), dev = std::hypot(0.5 * (I[0][0] - I[1][1]), I[0][1]);
+  std::vector<double> want = {mid - dev, mid + dev, I[2][2]};
+  std::sort(want.begin(), want.end());
+  const auto m = moments(t);
+  for (int k = 0; k < 3; k++) expect_rel(m[k], want[k], 1e-13, "moment");
+}
+
+// a cube and the same cube turned 45 degrees about z: the union is an
+// eight-pointed star prism of area 2 - 8 (1/2)^2 tan(pi/8) (two unit
+// squares less their regular octagon of apothem 1/2)
+TEST(Composite, RotatedPartsOverlapExactly)
+{
+  const double h = std::sin(M_PI / 8);
+  const auto t = PolyShapeTemplate::composite(
+      {part(cube(), 0, 0, 0), part(cube(), 0, 0, 0, make_quat(std::cos(M_PI / 8), 0.0, 0.0, h))},
+      "star");
+  expect_rel(t.volume(), 2.0 - 2.0 * std::tan(M_PI / 8), 1e-14, "volume");
+}
+
+// a cube and a disjoint sphere: V, centroid and inertia are sums
+// (sphere I = 2/5 V r^2), an overlapping sphere is refused
+TEST(Composite, SpherePartAddsAnalyticMoments)
+{
+  auto ball = std::make_shared<PolyShapeTemplate>(PolyShapeTemplate::ellipsoid(0.5, 0.5, 0.5, "ball"));
+  const auto t = PolyShapeTemplate::composite({part(cube(), 0, 0, 0), part(ball, 1.5, 0, 0)}, "cb");
+  const double Vs = 4.0 / 3 * M_PI * 0.125;
+  expect_rel(t.volume(), 1.0 + Vs, 1e-14, "volume");
+  const double xc = 1.5 * Vs / (1.0 + Vs);
+  EXPECT_NEAR(t.input_centroid()[0], xc, 1e-15);
+  const double Iaxis = 1.0 / 6 + 0.4 * Vs * 0.25;    // about the x axis
+  const double Iperp = Iaxis + 1.0 * xc * xc + Vs * (1.5 - xc) * (1.5 - xc);
+  const auto m = moments(t);
+  expect_rel(m[0], Iaxis, 1e-13, "axial moment");
+  expect_rel(m[1], Iperp, 1e-13, "transverse moment");
+  expect_rel(m[2], Iperp, 1e-13, "transverse moment");
+  try {
+    PolyShapeTemplate::composite({part(cube(), 0, 0, 0, make_quat(1.0, 0.0, 0.0, 0.0), "box"),
+                                  part(ball, 0.9, 0, 0, make_quat(1.0, 0.0, 0.0, 0.0), "ball")},
+                                 "bad");
+    FAIL() << "an overlapping sphere part was accepted";
+  } catch (const ShapeError &e) {
+    EXPECT_NE(std::string(e.what()).find("'ball' and 'box' overlap"), std::string::npos) << e.what();
+  }
+}
+
+// one part: the part itself, in its own frame (volume, moments, radius bit
+// for bit; its placement the identity), the input pose in input_centroid
+TEST(Composite, OnePartIsThePart)
+{
+  auto dode = std::make_shared<PolyShapeTemplate>(PolyShapeTemplate::from_file(POT + "/dodecahedron.shape"));
+  const auto t = PolyShapeTemplate::composite({part(dode, 1, 2, 3, make_quat(0.8, 0.6, 0.0, 0.0))}, "one");
+  EXPECT_EQ(t.volume(), dode->volume());
+  EXPECT_EQ(t.radius(), dode->radius());
+  for (int k = 0; k < 3; k++) EXPECT_EQ(t.moments()[k], dode->moments()[k]);
+  const auto &p = t.part(0);
+  for (int i = 0; i < 3; i++) {
+    EXPECT_EQ(p.x[i], 0.0);
+    for (int j = 0; j < 3; j++) EXPECT_EQ(p.R[i][j], i == j ? 1.0 : 0.0);
+  }
+  EXPECT_EQ(t.input_centroid()[2], 3.0);
+}
+
+// the restart record rebuilds the composite bit for bit; bad parts are refused
+TEST(Composite, RecordRoundTripAndErrors)
+{
+  std::string rec_cube, rec_ball, err;
+  std::vector<std::string> warn;
+  ASSERT_TRUE(shape_from_file(POT + "/cube.shape", false, rec_cube, warn, err)) << err;
+  ASSERT_TRUE(shape_ellipsoid(0.3, 0.2, 0.25, "egg", rec_ball, err)) << err;
+  std::vector<CompositePartRecord> parts(3);
+  parts[0] = {"cube", rec_cube, {0.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}};
+  parts[1] = {"cube", rec_cube, {0.7, 0.1, 0.0}, {0.9, 0.1, 0.3, -0.2}};
+  parts[2] = {"egg", rec_ball, {0.0, 1.4, 0.2}, {1.0, 0.0, 0.0, 0.0}};
+  std::string record;
+  auto a = shape_composite(parts, "thing", record, err);
+  ASSERT_TRUE(a) << err;
+  auto b = shape_from_record(record, err);
+  ASSERT_TRUE(b) << err;
+  ASSERT_TRUE(b->is_composite());
+  EXPECT_EQ(a->volume(), b->volume());
+  EXPECT_EQ(a->radius(), b->radius());
+  for (int k = 0; k < 3; k++) EXPECT_EQ(a->moments()[k], b->moments()[k]);
+  ASSERT_EQ(b->nparts(), 3);
+  for (int k = 0; k < 3; k++)
+    for (int i = 0; i < 3; i++) {
+      EXPECT_EQ(a->part(k).x[i], b->part(k).x[i]);
+      for (int j = 0; j < 3; j++) EXPECT_EQ(a->part(k).R[i][j], b->part(k).R[i][j]);
+    }
+  EXPECT_LT(a->volume(), 2.0 + 4.0 / 3 * M_PI * 0.3 * 0.2 * 0.25);    // the cubes overlap
+
+  // a composite as a part, a zero quaternion, the record cut short
+  std::vector<CompositePartRecord> nested = {{"thing", record, {0, 0, 0}, {1, 0, 0, 0}}};
+  EXPECT_FALSE(shape_composite(nested, "nest", record, err));
+  EXPECT_NE(err.find("is itself a composite"), std::string::npos) << err;
+  parts[1].q[0] = parts[1].q[1] = parts[1].q[2] = parts[1].q[3] = 0.0;
+  EXPECT_FALSE(shape_composite(parts, "zero", record, err));
+  EXPECT_NE(err.find("nonzero orientation"), std::string::npos) << err;
+  std::string rec2;
+  parts[1].q[0] = 1.0;
+  ASSERT_TRUE(shape_composite(parts, "thing", rec2, err)) << err;
+  EXPECT_FALSE(shape_from_record(rec2.substr(0, rec2.size() / 2), err));
+}
