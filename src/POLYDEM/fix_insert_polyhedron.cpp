@@ -103,9 +103,6 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       k.ishape = avec->find_shape(k.id);
       if (k.ishape < 0)
         error->all(FLERR, "{}: shape '{}' is not defined (use polyhedron_shape first)", me, k.id);
-      if (avec->shape(k.ishape).is_composite())
-        error->all(FLERR, "{}: shape '{}' is a composite; composites are not inserted yet "
-                   "(place them with create_atoms or read_data)", me, k.id);
       k.frac = num(iarg + 2);
       if (!(k.frac >= 0.0)) error->all(FLERR, "{}: fraction of shape '{}' must be >= 0", me, k.id);
       k.density = 0.0;

@@ -115,11 +115,16 @@ class FixInsertPolyhedron : public Fix, public ParticleSource {
   double estimate_region_volume();
   void region_bbox(double *lo, double *hi);
   bool sample_in_region(double *x);
-  bool region_contains(const polydem::InsertBody<double> &b);
+  bool region_contains(const polydem::InsertBody<double> &b, const double *xc);
   std::vector<polydem::InsertBody<double>> gather(const double *lo, const double *hi, double rcand,
                                                   double &vol_in_region);
   void grid_add(const polydem::InsertBody<double> &b);
   void refresh_views();
+  // the convex bodies of a posed particle (a composite: its parts) into
+  // out, their orientations into qs (if given)
+  void bodies_of(int ishape, double s, const double *x, const polydem::Quat<double> &q,
+                 std::vector<polydem::InsertBody<double>> &out,
+                 std::vector<polydem::Quat<double>> *qs = nullptr) const;
   polydem::InsertBody<double> body_of(int ishape, double s, const double *x,
                                       const polydem::Quat<double> &q) const;
   polydem::Quat<double> draw_orientation(int ishape);

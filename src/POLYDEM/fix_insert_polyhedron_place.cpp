@@ -154,6 +154,49 @@ polydem::InsertBody<double> FixInsertPolyhedron::body_of(int ishape, double s, c
   return b;
 }
 
+void FixInsertPolyhedron::bodies_of(int ishape, double s, const double *x,
+                                    const polydem::Quat<double> &q,
+                                    std::vector<polydem::InsertBody<double>> &out,
+                                    std::vector<polydem::Quat<double>> *qs) const
+{
+  out.clear();
+  if (qs) qs->clear();
+  const auto &t = avec->shape(ishape);
+  if (!t.is_composite()) {
+    out.push_back(body_of(ishape, s, x, q));
+    if (qs) qs->push_back(q);
+    return;
+  }
+  // each part: its template at x + s R x_k, turned by R R_k (polydem_contact_pipeline.h)
+  const auto &v = views[ishape];
+  polydem::PosedShape<double> whole;
+  whole.view = &v;
+  whole.x = polydem::make_vec3(x[0], x[1], x[2]);
+  whole.R = polydem::quat_to_mat(q);
+  whole.s = s;
+  for (int k = 0; k < t.nparts(); k++) {
+    const auto pp = polydem::posed_part(whole, k);
+    const auto &pt = t.part_shape(k);
+    polydem::InsertBody<double> b;
+    b.x = pp.x;
+    b.R = pp.R;
+    b.s = s;
+    b.radius = pt.radius() * s;
+    b.inradius = pt.inradius() * s;
+    if (pt.is_ellipsoid()) {
+      const auto &a = pt.semi_axes();
+      b.view = nullptr;
+      b.ax = polydem::make_vec3(a[0] * s, a[1] * s, a[2] * s);
+    } else {
+      b.view = v.parts[k].view;
+      b.ax = polydem::make_vec3(0.0, 0.0, 0.0);
+    }
+    out.push_back(b);
+    const double *pq = v.parts[k].q;
+    if (qs) qs->push_back(polydem::qmul(q, polydem::make_quat(pq[0], pq[1], pq[2], pq[3])));
+  }
+}
+
 // kernel views and inscribed radii (unit scale) of every template: for a
 // polyhedron the nearest face plane, for an ellipsoid its smallest semi-axis
 void FixInsertPolyhedron::refresh_views()
@@ -168,14 +211,15 @@ void FixInsertPolyhedron::refresh_views()
 }
 
 /* ----------------------------------------------------------------------
-   region containment of a posed body: every vertex of a polyhedron inside
+   region containment of a posed body of a particle with centroid xc: the
+   centroid in the region; with all yes every vertex of a polyhedron inside
    (exact for a convex region), an ellipsoid's bounding sphere inside
 ------------------------------------------------------------------------- */
 
-bool FixInsertPolyhedron::region_contains(const polydem::InsertBody<double> &b)
+bool FixInsertPolyhedron::region_contains(const polydem::InsertBody<double> &b, const double *xc)
 {
   const polydem::ShapeView<double> *v = b.view;
-  if (!region->match(b.x.x, b.x.y, b.x.z)) return false;
+  if (!region->match(xc[0], xc[1], xc[2])) return false;
   if (!allin) return true;
   if (!v) return region->surface(b.x.x, b.x.y, b.x.z, b.radius) == 0;
   for (int i = 0; i < v->nverts; i++) {
@@ -244,13 +288,14 @@ FixInsertPolyhedron::gather(const double *lo, const double *hi, double rcand, do
     const double *ra = &all[(size_t) W * a], *rb = &all[(size_t) W * b];
     return ra[0] != rb[0] ? ra[0] < rb[0] : ra[1] < rb[1];
   });
-  std::vector<polydem::InsertBody<double>> bodies;
+  std::vector<polydem::InsertBody<double>> bodies, parts;
   vol_in_region = 0.0;
   for (int j = 0; j < n; j++) {
     const double *r = &all[(size_t) W * order[j]];
     const int ishape = (int) r[2];
     const auto q = polydem::make_quat(r[7], r[8], r[9], r[10]);
-    bodies.push_back(body_of(ishape, r[3], r + 4, q));
+    bodies_of(ishape, r[3], r + 4, q, parts);
+    bodies.insert(bodies.end(), parts.begin(), parts.end());
     if (r[1] == 13.0 && region->match(r[4], r[5], r[6]))
       vol_in_region += avec->shape(ishape).volume() * r[3] * r[3] * r[3];
   }
@@ -388,7 +433,8 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
     const auto &t = avec->shape(kd.ishape);
     bool ok = false;
     Placed p;
-    polydem::InsertBody<double> b;
+    std::vector<polydem::InsertBody<double>> bs;    // its convex bodies (a composite's parts)
+    std::vector<polydem::Quat<double>> qs;           // and their orientations
     for (int a = 0; a < attempts && !ok; a++) {
       nattempts++;
       if (voids ? !space.sample(rng, inside, p.x) : !sample_in_region(p.x)) {
@@ -396,17 +442,23 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
         continue;
       }
       const auto q = draw_orientation(kd.ishape);
-      b = body_of(kd.ishape, s, p.x, q);
+      bodies_of(kd.ishape, s, p.x, q, bs, &qs);
       bool inbox = true;
       for (int k = 0; k < 3; k++)
         inbox = inbox && (per[k] || (p.x[k] >= boxlo[k] && p.x[k] < boxhi[k]));
-      if (!inbox || !region_contains(b)) continue;
-      if (!grid.apart(b, gap)) {
+      if (!inbox) continue;
+      bool inside_all = true;
+      for (const auto &b : bs) inside_all = inside_all && region_contains(b, p.x);
+      if (!inside_all) continue;
+      bool apart = true;
+      for (const auto &b : bs) apart = apart && grid.apart(b, gap);
+      if (!apart) {
         if (voids) space.failed(grid);
         continue;
       }
       ok = true;
-      for (auto w : walls) ok = ok && w->insertion_clear(b, q, gap);
+      for (size_t k = 0; k < bs.size(); k++)
+        for (auto w : walls) ok = ok && w->insertion_clear(bs[k], qs[k], gap);
       p.q[0] = q.w;
       p.q[1] = q.x;
       p.q[2] = q.y;
@@ -429,8 +481,10 @@ int FixInsertPolyhedron::insert(bigint nmax, double mstop, double phistop)
     draw_range(vlo, vhi, p.v);
     draw_range(wlo, whi, p.w);
     placed.push_back(p);
-    grid_add(b);
-    if (voids) space.kill(b);
+    for (const auto &b : bs) {
+      grid_add(b);
+      if (voids) space.kill(b);
+    }
     const double v = t.volume() * s * s * s;
     vol += v;
     volinserted += v;

@@ -127,6 +127,8 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     tri_global.assign(3 * (size_t) geom.mesh.ntri(), 0.0);
   }
 
+  // composites: each part keeps its own wall history
+  nh = NH * PolyShapeLibrary::of(lmp, "fix wall/mesh")->max_parts();
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
@@ -166,11 +168,15 @@ void FixWallMesh::init()
   // the group's shapes, and those an insertion fix will add to it (every
   // rank sees the same candidates: counted on rank 0)
   int nkind[4] = {0, 0, 0, -1};    // polyhedra, ellipsoids, of them spheres; a composite
-  auto count = [&](int ishape) {
+  auto count = [&](int ishape) {    // a composite: by its parts
     const auto &sh = avec->shape(ishape);
-    nkind[sh.is_ellipsoid() ? 1 : 0]++;
-    if (sh.is_sphere()) nkind[2]++;
-    if (sh.is_composite()) nkind[3] = ishape;
+    auto one = [&](const polydem::PolyShapeTemplate &p) {
+      nkind[p.is_ellipsoid() ? 1 : 0]++;
+      if (p.is_sphere()) nkind[2]++;
+    };
+    if (!sh.is_composite()) return one(sh);
+    nkind[3] = ishape;
+    for (int k = 0; k < sh.nparts(); k++) one(sh.part_shape(k));
   };
   for (int i = 0; i < atom->nlocal; i++)
     if (atom->mask[i] & groupbit) count(atom->pshape[i]);
@@ -179,10 +185,10 @@ void FixWallMesh::init()
       if (c.mask & groupbit) count(c.ishape);
   MPI_Allreduce(MPI_IN_PLACE, nkind, 3, MPI_INT, MPI_SUM, world);
   MPI_Allreduce(MPI_IN_PLACE, &nkind[3], 1, MPI_INT, MPI_MAX, world);
-  if (nkind[3] >= 0)
-    error->all(FLERR, "fix wall/mesh {}: shape '{}' of its group is a composite; walls do not "
-               "take composite grains yet (contain them by fixed grains or periodic "
-               "boundaries)", id, avec->shape_id(nkind[3]));
+  if (nkind[3] >= 0 && nh < NH * avec->max_parts())
+    error->all(FLERR, "fix wall/mesh {}: shape '{}' of its group is a composite defined after "
+               "the fix, whose history keeps {} parts per atom: define composite shapes "
+               "before fix wall/mesh", id, avec->shape_id(nkind[3]), nh / NH);
   // material: polyhedra E, nu (pair_style polyhedron), ellipsoids k_n and
   // the tangential ratios (pair_style ellipsoid); e and mu from either
   int dim = 0;
@@ -483,11 +489,16 @@ void FixWallMesh::compute_forces(bool update)
       nl.gap = &near_gap[(size_t) near_cap * i];
       pn = &nl;
     }
-    // the contact (polydem_contact_pipeline.h), then scatter and tally
-    const auto r =
-        polydem::wall_body_contact(b, laws, sc, lmp->update->dt, update, hist[i], *ws, P, pn);
-    polydem::wall_tally_add(sum, b, r, sc.mp, P);
-    if (pertri) polydem::wall_body_triangle_forces(b, *ws, P, r, add_tri);
+    // the contact (polydem_contact_pipeline.h; a composite's parts one by
+    // one), tally, then scatter
+    auto tally = [&](const polydem::WallBody<double> &bb,
+                     const polydem::WallContactResult<double> &rr,
+                     const polydem::WallPatches<double> &PP) {
+      polydem::wall_tally_add(sum, bb, rr, sc.mp, PP);
+      if (pertri) polydem::wall_body_triangle_forces(bb, *ws, PP, rr, add_tri);
+    };
+    const auto r = polydem::wall_particle_contact(b, laws, sc, lmp->update->dt, update, hist[i],
+                                                  *ws, P, pn, tally);
     f[i][0] += r.wf.f.x;
     f[i][1] += r.wf.f.y;
     f[i][2] += r.wf.f.z;
@@ -608,36 +619,36 @@ double FixWallMesh::compute_vector(int n)
 
 void FixWallMesh::grow_arrays(int nmax)
 {
-  memory->grow(hist, nmax, NH, "wall/mesh:hist");
+  memory->grow(hist, nmax, nh, "wall/mesh:hist");
 }
 
 void FixWallMesh::copy_arrays(int i, int j, int /*delflag*/)
 {
-  for (int k = 0; k < NH; k++) hist[j][k] = hist[i][k];
+  for (int k = 0; k < nh; k++) hist[j][k] = hist[i][k];
 }
 
 void FixWallMesh::set_arrays(int i)
 {
-  for (int k = 0; k < NH; k++) hist[i][k] = 0.0;
+  for (int k = 0; k < nh; k++) hist[i][k] = 0.0;
 }
 
 int FixWallMesh::pack_exchange(int i, double *buf)
 {
-  for (int k = 0; k < NH; k++) buf[k] = hist[i][k];
-  return NH;
+  for (int k = 0; k < nh; k++) buf[k] = hist[i][k];
+  return nh;
 }
 
 int FixWallMesh::unpack_exchange(int nlocal, double *buf)
 {
-  for (int k = 0; k < NH; k++) hist[nlocal][k] = buf[k];
-  return NH;
+  for (int k = 0; k < nh; k++) hist[nlocal][k] = buf[k];
+  return nh;
 }
 
 int FixWallMesh::pack_restart(int i, double *buf)
 {
-  buf[0] = NH + 1;    // other fixes skip by this count
-  for (int k = 0; k < NH; k++) buf[k + 1] = hist[i][k];
-  return NH + 1;
+  buf[0] = nh + 1;    // other fixes skip by this count
+  for (int k = 0; k < nh; k++) buf[k + 1] = hist[i][k];
+  return nh + 1;
 }
 
 void FixWallMesh::unpack_restart(int nlocal, int nth)
@@ -652,27 +663,31 @@ void FixWallMesh::unpack_restart(int nlocal, int nth)
   constexpr int OLD_PATCH = 4 + polydem::CONTACT_HIST;
   constexpr int OLD_NH = polydem::WALL_MAX_PATCH * OLD_PATCH;
   const int nread = static_cast<int>(extra[nlocal][m]) - 1;
-  if (nread != NH && nread != OLD_NH) {
+  if (nread != nh && nread != OLD_NH) {
     error->one(FLERR,
                "fix wall/mesh {}: the restart file keeps {} wall-history values per atom, "
-               "this version {}: define the fix with another ID to start without history",
-               id, nread, NH);
+               "this run {} (composite shapes keep {} per part): define the fix with another "
+               "ID to start without history",
+               id, nread, nh, NH);
   }
   m++;
-  const int per = nread == NH ? polydem::WALL_HIST : OLD_PATCH;
-  for (int k = 0; k < NH; k++) hist[nlocal][k] = 0.0;
+  if (nread == nh) {
+    for (int k = 0; k < nh; k++) hist[nlocal][k] = extra[nlocal][m++];
+    return;
+  }
+  for (int k = 0; k < nh; k++) hist[nlocal][k] = 0.0;
   for (int p = 0; p < polydem::WALL_MAX_PATCH; p++)
-    for (int k = 0; k < per; k++) hist[nlocal][p * polydem::WALL_HIST + k] = extra[nlocal][m++];
+    for (int k = 0; k < OLD_PATCH; k++) hist[nlocal][p * polydem::WALL_HIST + k] = extra[nlocal][m++];
 }
 
 int FixWallMesh::size_restart(int /*nlocal*/)
 {
-  return NH + 1;
+  return nh + 1;
 }
 
 int FixWallMesh::maxsize_restart()
 {
-  return NH + 1;
+  return nh + 1;
 }
 
 // global state: the time the mesh has moved for (its offset or angle)
@@ -731,7 +746,7 @@ void *FixWallMesh::extract(const char *name, int &dim)
 
 double FixWallMesh::memory_usage()
 {
-  double bytes = (double) atom->nmax * NH * sizeof(double);
+  double bytes = (double) atom->nmax * nh * sizeof(double);
   bytes += geom.mesh.tri.size() * sizeof(double);
   bytes += (geom.grid.start.size() + geom.grid.items.size()) * sizeof(int);
   bytes += near_ref.size() * sizeof(double) + (near_count.size() + near_tri.size()) * sizeof(int) +

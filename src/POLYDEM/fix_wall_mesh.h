@@ -85,7 +85,8 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   double depth_warn, overlap_warn;    // warn beyond these x bounding radius, x particle volume
   double elapsed;    // time since the fix was defined (mesh motion)
 
-  double **hist;     // per atom: WALL_HIST_SIZE values
+  double **hist;     // per atom: nh values
+  int nh;            // WALL_HIST_SIZE per part of the largest template (composites)
   // the law table (polydem_law_table.h), built in init: per particle type
   // (1..ntypes) the particle's E, nu, the wall's E, nu (polyhedra), k_n
   // (ellipsoids), mu and the damping law; core, twist, k_t / k_n and

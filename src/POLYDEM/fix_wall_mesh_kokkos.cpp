@@ -20,7 +20,6 @@
 
 using namespace LAMMPS_NS;
 
-static constexpr int NH = polydem::WALL_HIST_SIZE;
 
 namespace {
 
@@ -82,8 +81,6 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     const int ps = this->pshape(i);
     const auto b = polydem::gather_wall_body(
         *this, i, &shapes(ps), polydem::make_vec3(axes(ps, 0), axes(ps, 1), axes(ps, 2)));
-    double h[NH];
-    for (int k = 0; k < NH; k++) h[k] = hist(i, k);
     auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
     ws.record = pertri;
     polydem::WallNear<double> nl;
@@ -96,10 +93,20 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
       nl.cap = near_cap;
       pn = &nl;
     }
-    // the contact (polydem_contact_pipeline.h), then scatter and tally
+    // the contact (polydem_contact_pipeline.h; a composite's parts one by
+    // one; the history row in place), tally, then scatter
     polydem::WallPatches<double> P;
-    const auto r = polydem::wall_body_contact(b, laws, sc, dt, update != 0, h, ws, P, pn);
-    for (int k = 0; k < NH; k++) hist(i, k) = h[k];
+    auto tally = [&](const polydem::WallBody<double> &bb,
+                     const polydem::WallContactResult<double> &rr,
+                     const polydem::WallPatches<double> &PP) {
+      polydem::wall_tally_add(sum, bb, rr, sc.mp, PP);
+      if (pertri) {
+        TriAdd<DeviceType> add{trif};
+        polydem::wall_body_triangle_forces(bb, ws, PP, rr, add);
+      }
+    };
+    const auto r = polydem::wall_particle_contact(b, laws, sc, dt, update != 0, &hist(i, 0), ws,
+                                                  P, pn, tally);
     const auto &f = this->f, &torque = this->torque;
     f(i, 0) += r.wf.f.x;
     f(i, 1) += r.wf.f.y;
@@ -107,11 +114,6 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     torque(i, 0) += r.wf.tau.x;
     torque(i, 1) += r.wf.tau.y;
     torque(i, 2) += r.wf.tau.z;
-    polydem::wall_tally_add(sum, b, r, sc.mp, P);
-    if (pertri) {
-      TriAdd<DeviceType> add{trif};
-      polydem::wall_body_triangle_forces(b, ws, P, r, add);
-    }
   }
 };
 
@@ -291,7 +293,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::host_rows_curren
 template <class DeviceType> void FixWallMeshKokkos<DeviceType>::grow_arrays(int nmax)
 {
   if (hist) host_rows_current();
-  memoryKK->grow_kokkos(k_hist, hist, nmax, NH, "wall/mesh/kk:hist");
+  memoryKK->grow_kokkos(k_hist, hist, nmax, nh, "wall/mesh/kk:hist");
   k_hist.modify_host();
 }
 

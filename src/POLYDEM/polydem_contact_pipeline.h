@@ -156,24 +156,6 @@ POLYDEM_FN OverlapResult<T> mixed_pair_overlap(const PosedShape<T> &A, const Pos
   return r;
 }
 
-// part k of a posed composite (the body itself if it is not one): the
-// part's template at x + s R x_k, rotated by R R_k
-template <typename T> POLYDEM_FN PosedShape<T> posed_part(const PosedShape<T> &body, int k)
-{
-  const ShapeView<T> &v = *body.view;
-  if (!view_is_composite(v)) return body;
-  const ShapePart<T> &p = v.parts[k];
-  PosedShape<T> r;
-  r.view = p.view;
-  r.s = body.s;
-  r.x = body.x + body.s * matvec(body.R, make_vec3(p.x[0], p.x[1], p.x[2]));
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      r.R.m[i][j] = body.R.m[i][0] * p.R[0][j] + body.R.m[i][1] * p.R[1][j] +
-          body.R.m[i][2] * p.R[2][j];
-  return r;
-}
-
 // The overlap of two convex shapes (polyhedra, spheres, ellipsoids):
 // status counted in count[PP_*]; GJK (a filter for polyhedron pairs) is
 // skipped if touching.
@@ -494,6 +476,58 @@ POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const La
   }
   r.warn = wall_warnings(P, r.wf, V, sv.radius * s, b.m, sc.depth_warn, sc.overlap_warn);
   return r;
+}
+
+// part k of a composite particle as a wall body of its own: the part's
+// template and semi-axes, its pose (x + s R x_k, q q_k), the velocity of
+// its centre v + w x (x_part - x); the grain's spin, mass and type
+template <typename T> POLYDEM_FN WallBody<T> wall_part_body(const WallBody<T> &b, int k)
+{
+  const ShapePart<T> &p = b.shape->parts[k];
+  WallBody<T> r = b;
+  r.shape = p.view;
+  r.axes = make_vec3(p.view->axes[0], p.view->axes[1], p.view->axes[2]);
+  const Quat<T> qk = make_quat(p.q[0], p.q[1], p.q[2], p.q[3]);
+  r.pose.q = qmul(b.pose.q, qk);
+  r.pose.x = b.pose.x + b.pose.s * qrotate(b.pose.q, make_vec3(p.x[0], p.x[1], p.x[2]));
+  r.v = b.v + cross(b.w, r.pose.x - b.pose.x);
+  return r;
+}
+
+// One particle on the mesh, convex or composite: a composite's parts are
+// particles of their own on the wall (each with WALL_HIST_SIZE values of
+// hist, part k at k WALL_HIST_SIZE; no near list), their forces summed and
+// their torques moved to the grain's centre. after(body, result, P) is
+// called for each convex body with its own result (the caller's tally and
+// per-triangle forces); the returned force and torque act on the grain.
+template <typename T, int MF, int ME, typename After>
+POLYDEM_FN WallContactResult<T>
+wall_particle_contact(const WallBody<T> &b, const LawTable<T> &tab, const WallScene<T> &sc, T dt,
+                      bool update, T *hist, WallWorkspace<T, MF, ME> &ws, WallPatches<T> &P,
+                      WallNear<T> *near, After &&after)
+{
+  if (!view_is_composite(*b.shape)) {
+    const WallContactResult<T> r = wall_body_contact(b, tab, sc, dt, update, hist, ws, P, near);
+    after(b, r, P);
+    return r;
+  }
+  WallContactResult<T> sum;
+  sum.wf.f = sum.wf.tau = make_vec3(T(0), T(0), T(0));
+  sum.wf.energy = T(0);
+  sum.wf.ncontact = 0;
+  sum.near_built = sum.near_overflow = 0;
+  for (int k = 0; k < b.shape->nparts; ++k) {
+    const WallBody<T> bp = wall_part_body(b, k);
+    const WallContactResult<T> r =
+        wall_body_contact(bp, tab, sc, dt, update, hist + k * WALL_HIST_SIZE, ws, P,
+                          (WallNear<T> *) nullptr);
+    after(bp, r, P);
+    sum.wf.f += r.wf.f;
+    sum.wf.tau += r.wf.tau + cross(bp.pose.x - b.pose.x, r.wf.f);
+    sum.wf.energy += r.wf.energy;
+    sum.wf.ncontact += r.wf.ncontact;
+  }
+  return sum;
 }
 
 // the particle's part of the call's sums (reaction on the mesh, counts)

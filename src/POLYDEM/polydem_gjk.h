@@ -32,6 +32,24 @@ POLYDEM_FN PosedShape<T> make_posed(const ShapeView<T> &view, const Pose<T> &pos
   return p;
 }
 
+// part k of a posed composite (the body itself if it is not one): the
+// part's template at x + s R x_k, rotated by R R_k
+template <typename T> POLYDEM_FN PosedShape<T> posed_part(const PosedShape<T> &body, int k)
+{
+  const ShapeView<T> &v = *body.view;
+  if (!view_is_composite(v)) return body;
+  const ShapePart<T> &p = v.parts[k];
+  PosedShape<T> r;
+  r.view = p.view;
+  r.s = body.s;
+  r.x = body.x + body.s * matvec(body.R, make_vec3(p.x[0], p.x[1], p.x[2]));
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      r.R.m[i][j] = body.R.m[i][0] * p.R[0][j] + body.R.m[i][1] * p.R[1][j] +
+          body.R.m[i][2] * p.R[2][j];
+  return r;
+}
+
 // Bounding radius of the posed shape [length]
 template <typename T> POLYDEM_FN T posed_radius(const PosedShape<T> &a)
 {

@@ -23,7 +23,12 @@
 #include <CGAL/Nef_polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/convex_decomposition_3.h>
 #include <CGAL/convex_hull_3.h>
+
+#include <map>
+#include <tuple>
 
 #include <algorithm>
 #include <cmath>
@@ -279,6 +284,16 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
     }
   }
   t.union_fraction_ = t.volume_ / sum_volume;
+  for (auto &b : body) {
+    std::array<std::array<double, 3>, 3> m;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) m[i][j] = b.R[i][j];
+    const Quat<double> q = rotation_quat(m);
+    b.q[0] = q.w;
+    b.q[1] = q.x;
+    b.q[2] = q.y;
+    b.q[3] = q.z;
+  }
 
   auto views = std::make_shared<std::vector<ShapeView<double>>>();
   for (const auto &p : parts) views->push_back(p.shape->view());
@@ -287,6 +302,64 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
   t.parts_ = std::make_shared<const std::vector<ShapePart<double>>>(std::move(body));
   t.check_mass_properties(head);
   return t;
+}
+
+std::vector<std::vector<PolyShapeTemplate::Point>>
+PolyShapeTemplate::convex_pieces(const std::vector<double> &tri, const std::string &name)
+{
+  const std::string head = name + ": convex decomposition";
+  // the surface with its corners merged (equal coordinates), outward
+  std::map<std::tuple<double, double, double>, int> index;
+  std::vector<Point> pts;
+  std::vector<std::array<int, 3>> faces;
+  for (size_t t = 0; t + 9 <= tri.size(); t += 9) {
+    std::array<int, 3> f;
+    for (int k = 0; k < 3; ++k) {
+      const auto key = std::make_tuple(tri[t + 3 * k], tri[t + 3 * k + 1], tri[t + 3 * k + 2]);
+      auto it = index.find(key);
+      if (it == index.end()) {
+        it = index.emplace(key, (int) pts.size()).first;
+        pts.push_back({tri[t + 3 * k], tri[t + 3 * k + 1], tri[t + 3 * k + 2]});
+      }
+      f[k] = it->second;
+    }
+    faces.push_back(f);
+  }
+  auto build = [&](bool reverse) {
+    Mesh m;
+    std::vector<Mesh::Vertex_index> v;
+    for (const auto &p : pts) v.push_back(m.add_vertex(K::Point_3(p[0], p[1], p[2])));
+    for (const auto &f : faces) {
+      const auto fi = reverse ? m.add_face(v[f[0]], v[f[2]], v[f[1]])
+                              : m.add_face(v[f[0]], v[f[1]], v[f[2]]);
+      if (fi == Mesh::null_face())
+        throw ShapeError(head + ": the surface is not a consistently oriented 2-manifold (an "
+                         "edge shared by more than two triangles, or two triangles running "
+                         "along it the same way)");
+    }
+    return m;
+  };
+  Mesh surface = build(false);
+  if (!CGAL::is_closed(surface))
+    throw ShapeError(head + ": the surface is not closed (" + std::to_string(faces.size()) +
+                     " triangles with open edges)");
+  if (mesh_moments(surface).V < 0.0) surface = build(true);    // inward: turned outward
+  Nef nef(surface);
+  if (!nef.is_simple())
+    throw ShapeError(head + ": the surface does not bound a simple solid");
+  CGAL::convex_decomposition_3(nef);
+  std::vector<std::vector<Point>> pieces;
+  for (auto c = ++nef.volumes_begin(); c != nef.volumes_end(); ++c) {
+    if (!c->mark()) continue;
+    CGAL::Polyhedron_3<K> piece;
+    nef.convert_inner_shell_to_polyhedron(c->shells_begin(), piece);
+    std::vector<Point> corners;
+    for (auto p = piece.points_begin(); p != piece.points_end(); ++p)
+      corners.push_back({CGAL::to_double(p->x()), CGAL::to_double(p->y()), CGAL::to_double(p->z())});
+    pieces.push_back(std::move(corners));
+  }
+  if (pieces.empty()) throw ShapeError(head + ": no solid inside the surface");
+  return pieces;
 }
 
 }    // namespace polydem

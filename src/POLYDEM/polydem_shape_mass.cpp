@@ -301,10 +301,14 @@ void PolyShapeTemplate::check_mass_properties(const std::string &what) const
                      " are zero or not finite (size outside [1e-50, 1e50]?)");
 }
 
-// rotation matrix -> unit quaternion (Shepperd's method: largest pivot)
 Quat<double> PolyShapeTemplate::input_orientation() const
 {
-  const auto &m = rot_;
+  return rotation_quat(rot_);
+}
+
+// rotation matrix -> unit quaternion (Shepperd's method: largest pivot)
+Quat<double> shape_impl::rotation_quat(const std::array<std::array<double, 3>, 3> &m)
+{
   double tr = m[0][0] + m[1][1] + m[2][2];
   double w, x, y, z;
   if (tr >= m[0][0] && tr >= m[1][1] && tr >= m[2][2]) {

@@ -15,6 +15,7 @@
 #include "polydem_shape_record.h"
 
 #include "polydem_shape_template.h"
+#include "polydem_stl.h"
 
 #include <cstdio>
 #include <sstream>
@@ -113,6 +114,48 @@ std::unique_ptr<PolyShapeTemplate> shape_composite(const std::vector<CompositePa
     auto t = std::make_unique<PolyShapeTemplate>(PolyShapeTemplate::composite(in, record_name(name)));
     record = rec;
     return t;
+  } catch (std::exception &e) {
+    err = e.what();
+    return nullptr;
+  }
+}
+
+std::unique_ptr<PolyShapeTemplate> shape_composite_from_surface(const std::string &file,
+                                                                double scale,
+                                                                const std::string &name,
+                                                                std::string &record,
+                                                                std::string &err)
+{
+  try {
+    StlTransform xf;
+    xf.scale = scale;
+    const StlMesh mesh = read_stl(file, xf);
+    const auto pieces = PolyShapeTemplate::convex_pieces(mesh.tri, file);
+    std::vector<CompositePartRecord> parts;
+    ShapeOptions opt;
+    opt.hull = true;    // corners on a piece's edges or faces are not vertices
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      const std::string id = "piece" + std::to_string(k + 1);
+      const auto t = PolyShapeTemplate::from_points(pieces[k], {}, opt, name + "_" + id);
+      CompositePartRecord p;
+      p.id = id;
+      p.record = make_record(t, true);
+      const auto c = t.input_centroid();
+      const auto q = t.input_orientation();
+      for (int i = 0; i < 3; ++i) p.x[i] = c[i];
+      p.q[0] = q.w;
+      p.q[1] = q.x;
+      p.q[2] = q.y;
+      p.q[3] = q.z;
+      parts.push_back(p);
+    }
+    if ((int) parts.size() > MAX_COMPOSITE_PARTS) {
+      err = file + ": its convex decomposition has " + std::to_string(parts.size()) +
+          " pieces, more than a composite's " + std::to_string(MAX_COMPOSITE_PARTS) +
+          " parts (simplify the surface)";
+      return nullptr;
+    }
+    return shape_composite(parts, name, record, err);
   } catch (std::exception &e) {
     err = e.what();
     return nullptr;

@@ -41,6 +41,17 @@ std::unique_ptr<PolyShapeTemplate> shape_composite(const std::vector<CompositePa
                                                    const std::string &name, std::string &record,
                                                    std::string &err);
 
+// A composite of the convex pieces of a closed non-convex surface (an STL
+// file, scaled): CGAL's convex decomposition (PolyShapeTemplate::
+// convex_pieces), each piece a part named "piece1", "piece2", ...; its
+// record is a composite record (restart needs no file). On failure returns
+// nullptr and sets err.
+std::unique_ptr<PolyShapeTemplate> shape_composite_from_surface(const std::string &file,
+                                                                double scale,
+                                                                const std::string &name,
+                                                                std::string &record,
+                                                                std::string &err);
+
 // Rebuild a template from its record, bit-identical to the one recorded.
 std::unique_ptr<PolyShapeTemplate> shape_from_record(const std::string &record,
                                                      std::string &err);

@@ -79,6 +79,12 @@ class PolyShapeTemplate {
     Quat<double> q;                                    // its orientation (unit)
   };
   static PolyShapeTemplate composite(const std::vector<InputPart> &parts, const std::string &name);
+  // The convex pieces of a closed, consistently oriented triangulated surface
+  // (9 coordinates per triangle; either orientation) by CGAL's convex
+  // decomposition of its Nef polyhedron (convex_decomposition_3): the corner
+  // points of each piece. Throws ShapeError (not closed, not a 2-manifold).
+  static std::vector<std::vector<Point>> convex_pieces(const std::vector<double> &tri,
+                                                       const std::string &name);
   bool is_composite() const { return !input_parts_.empty(); }
   int nparts() const { return (int) input_parts_.size(); }
   const std::vector<InputPart> &input_parts() const { return input_parts_; }

@@ -67,6 +67,8 @@ namespace shape_impl {
   // rotation), moments ascending; degenerate moments keep the input axes
   // (polydem_shape_mass.cpp).
   void principal_axes(const double inertia[3][3], double R[3][3]);
+  // a proper rotation matrix as a unit quaternion (w >= 0; Shepperd's method)
+  Quat<double> rotation_quat(const std::array<std::array<double, 3>, 3> &m);
 
 }    // namespace shape_impl
 }    // namespace polydem

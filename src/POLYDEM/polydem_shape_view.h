@@ -62,6 +62,7 @@ template <typename T> struct ShapePart {
   const ShapeView<T> *view;
   T x[3];
   T R[3][3];
+  T q[4];    // R as a unit quaternion (w, x, y, z)
 };
 
 template <typename T> POLYDEM_FN bool view_is_composite(const ShapeView<T> &v)

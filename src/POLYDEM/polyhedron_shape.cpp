@@ -21,6 +21,7 @@ using namespace LAMMPS_NS;
    polyhedron_shape ID file [hull yes|no]
    polyhedron_shape ID ellipsoid a b c
    polyhedron_shape ID composite part SHAPE x y z [quat w i j k] part ...
+   polyhedron_shape ID composite FILE.stl [scale s]
    Every rank parses the file itself (templates are small); errors are
    identical on all ranks, so error->all is safe.
 ------------------------------------------------------------------------- */
@@ -109,6 +110,25 @@ void PolyhedronShape::composite(const std::string &id, int narg, char **arg)
   auto avec = PolyShapeLibrary::of(lmp, "polyhedron_shape");
   const std::string me = "polyhedron_shape " + id + " composite";
   std::vector<polydem::CompositePartRecord> parts;
+  std::string err, record;
+  std::unique_ptr<polydem::PolyShapeTemplate> t;
+  std::string how;
+  if (narg >= 1 && strcmp(arg[0], "part") != 0) {
+    // polyhedron_shape ID composite FILE.stl [scale s]: its convex decomposition
+    double scale = 1.0;
+    if (narg == 3 && strcmp(arg[1], "scale") == 0) {
+      scale = polydem_parse::number(FLERR, arg[2], lmp, me);
+      if (!(scale > 0.0) || !std::isfinite(scale))
+        error->all(FLERR, "{}: scale must be > 0, got '{}'", me, arg[2]);
+    } else if (narg != 1)
+      error->all(FLERR, "{}: expected 'FILE.stl [scale s]' or 'part SHAPE x y z ...', got '{}'",
+                 me, arg[1]);
+    t = polydem::shape_composite_from_surface(arg[0], scale, id, record, err);
+    if (!t) error->all(FLERR, "polyhedron_shape: {}", err);
+    how = fmt::format(" (convex decomposition of {})", arg[0]);
+    add_composite(id, std::move(t), record, how);
+    return;
+  }
   int iarg = 0;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "part") != 0)
@@ -141,18 +161,25 @@ void PolyhedronShape::composite(const std::string &id, int narg, char **arg)
   if ((int) parts.size() > polydem::MAX_COMPOSITE_PARTS)
     error->all(FLERR, "{}: {} parts, at most {}", me, parts.size(), polydem::MAX_COMPOSITE_PARTS);
 
-  std::string err, record;
-  auto t = polydem::shape_composite(parts, id, record, err);
+  t = polydem::shape_composite(parts, id, record, err);
   if (!t) error->all(FLERR, "polyhedron_shape: {}", err);
+  add_composite(id, std::move(t), record, how);
+}
+
+void PolyhedronShape::add_composite(const std::string &id,
+                                    std::unique_ptr<polydem::PolyShapeTemplate> t,
+                                    const std::string &record, const std::string &how)
+{
+  auto avec = PolyShapeLibrary::of(lmp, "polyhedron_shape");
   const auto v = t->view();
   const double frac = t->union_fraction();
   const auto c = t->input_centroid();
   const int index = avec->add_shape(id, std::move(t), record);
   if (comm->me == 0)
     utils::logmesg(lmp,
-                   "polyhedron_shape {} (index {}): composite of {} parts, volume {:.10g} "
+                   "polyhedron_shape {} (index {}): composite of {} parts{}, volume {:.10g} "
                    "({:.10g} of the parts' sum), centroid {:.10g} {:.10g} {:.10g}, bounding "
                    "radius {:.10g}, principal moments/density {:.10g} {:.10g} {:.10g}\n",
-                   id, index + 1, v.nparts, v.volume, frac, c[0], c[1], c[2], v.radius,
+                   id, index + 1, v.nparts, how, v.volume, frac, c[0], c[1], c[2], v.radius,
                    v.inertia[0], v.inertia[1], v.inertia[2]);
 }

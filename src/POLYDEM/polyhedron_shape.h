@@ -15,7 +15,12 @@ CommandStyle(polyhedron_shape,PolyhedronShape);
 
 #include "command.h"
 
+#include <memory>
 #include <string>
+
+namespace polydem {
+class PolyShapeTemplate;
+}
 
 namespace LAMMPS_NS {
 
@@ -26,6 +31,8 @@ class PolyhedronShape : public Command {
 
  private:
   void composite(const std::string &id, int narg, char **arg);
+  void add_composite(const std::string &id, std::unique_ptr<polydem::PolyShapeTemplate> t,
+                     const std::string &record, const std::string &how);
 };
 
 }    // namespace LAMMPS_NS

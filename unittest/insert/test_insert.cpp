@@ -216,6 +216,33 @@ TEST(Insert, PackPolyhedraAndSpheresUnderPairPolyhedron)
   EXPECT_GT(l.thermo("pe"), 0.0);
 }
 
+// composites (issue 29): an L of two bars, a dumbbell of a cube and a
+// sphere and dodecahedra packed under pair_style polyhedron: every part
+// apart from every other grain's parts (and from the box's walls), so the
+// pair style's exact part-by-part overlaps find no contact at the first step;
+// a composite placed into the pack does touch (the check can fail)
+TEST(Insert, PackCompositesUnderPairPolyhedron)
+{
+  Lmp l;
+  l.cmds(mixed_box(0.03));
+  l.cmds({"polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+          "polyhedron_shape L composite part q -0.5 0 0 part q 0.5 0 0 part q -0.5 1 0",
+          "polyhedron_shape db composite part q 0 0 0 part ball 1.2 0 0",
+          "comm_modify vel yes",
+          "fix ins all insert/polyhedron 500 4711 region box mode pack density 2500 all_in no "
+          "shape L 0.4 scale 0.0009 shape db 0.3 scale 0.001 shape d 0.3 scale 0.001",
+          "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.5 0.3",
+          "thermo_style custom step pe", "run 0"});
+  ASSERT_EQ(l.lmp->atom->natoms, 500);
+  EXPECT_EQ(l.thermo("pe"), 0.0);
+  int composites = 0;
+  for (int i = 0; i < l.lmp->atom->nlocal; i++) composites += l.lmp->atom->pshape[i] != 0;
+  EXPECT_GT(composites, 250);
+  l.cmds({"create_atoms 1 random 20 31 NULL",
+          "polyhedron_set atom 501*520 shape L scale 0.0009 density 2500 quat/random 7", "run 0"});
+  EXPECT_GT(l.thermo("pe"), 0.0);
+}
+
 // Acceptance 1 (rate): 5,000 insertions of the same mixture at a high rate
 // into a small falling stream (no contacts: particles pass through each
 // other, so the feed region stays crowded and the test of each new particle

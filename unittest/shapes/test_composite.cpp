@@ -9,7 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -206,4 +209,69 @@ TEST(Composite, RecordRoundTripAndErrors)
   parts[1].q[0] = 1.0;
   ASSERT_TRUE(shape_composite(parts, "thing", rec2, err)) << err;
   EXPECT_FALSE(shape_from_record(rec2.substr(0, rec2.size() / 2), err));
+}
+
+namespace {
+
+// the L prism: outline (0,0) (2,0) (2,1) (1,1) (1,2) (0,2), z in [0, 1],
+// as an ASCII STL (outward), without triangle `drop` (-1: none)
+std::string l_prism_stl(const std::string &path, int drop = -1)
+{
+  const double o[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
+  std::vector<std::array<double, 9>> tri;
+  auto add = [&](std::array<double, 3> a, std::array<double, 3> b, std::array<double, 3> c) {
+    tri.push_back({a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2]});
+  };
+  for (int k = 1; k < 5; k++) {    // a fan from (0, 0): top up, bottom down
+    add({o[0][0], o[0][1], 1}, {o[k][0], o[k][1], 1}, {o[k + 1][0], o[k + 1][1], 1});
+    add({o[0][0], o[0][1], 0}, {o[k + 1][0], o[k + 1][1], 0}, {o[k][0], o[k][1], 0});
+  }
+  for (int k = 0; k < 6; k++) {    // the sides, outward for a counter-clockwise outline
+    const double *a = o[k], *b = o[(k + 1) % 6];
+    add({a[0], a[1], 0}, {b[0], b[1], 0}, {b[0], b[1], 1});
+    add({a[0], a[1], 0}, {b[0], b[1], 1}, {a[0], a[1], 1});
+  }
+  std::ofstream f(path);
+  f << "solid L\n";
+  for (int t = 0; t < (int) tri.size(); t++) {
+    if (t == drop) continue;
+    f << " facet normal 0 0 0\n  outer loop\n";
+    for (int v = 0; v < 3; v++)
+      f << "   vertex " << tri[t][3 * v] << " " << tri[t][3 * v + 1] << " " << tri[t][3 * v + 2] << "\n";
+    f << "  endloop\n endfacet\n";
+  }
+  f << "endsolid L\n";
+  return path;
+}
+
+}    // namespace
+
+// a non-convex surface decomposed into convex parts (CGAL convex_decomposition_3):
+// the L prism's volume 3, centroid and moments those of the L of three unit
+// cubes (closed form, the test above); the record rebuilds it bit for bit; an
+// open surface is refused
+TEST(Composite, ConvexDecompositionOfAnLPrism)
+{
+  const std::string dir = ::testing::TempDir();
+  std::string record, err;
+  auto t = shape_composite_from_surface(l_prism_stl(dir + "L.stl"), 0.5, "L", record, err);
+  ASSERT_TRUE(t) << err;
+  EXPECT_GE(t->nparts(), 2);
+  const double s3 = 0.125, s5 = 0.03125;    // scale 0.5: volume ~ s^3, moments ~ s^5
+  expect_rel(t->volume(), 3.0 * s3, 1e-14, "volume");
+  EXPECT_NEAR(t->input_centroid()[0], 0.5 * (1.0 / 3 + 0.5), 1e-15);
+  EXPECT_NEAR(t->input_centroid()[1], 0.5 * (1.0 / 3 + 0.5), 1e-15);
+  EXPECT_NEAR(t->input_centroid()[2], 0.25, 1e-15);
+  const auto L3 = PolyShapeTemplate::composite(
+      {part(cube(), 0, 0, 0), part(cube(), 1, 0, 0), part(cube(), 0, 1, 0)}, "L3");
+  const auto m = moments(*t), want = moments(L3);
+  for (int k = 0; k < 3; k++) expect_rel(m[k], want[k] * s5, 1e-13, "moment");
+  EXPECT_NEAR(t->union_fraction(), 1.0, 1e-14);    // the pieces do not overlap
+  std::printf("L prism: %d convex pieces\n", t->nparts());
+  auto b = shape_from_record(record, err);
+  ASSERT_TRUE(b) << err;
+  EXPECT_EQ(b->volume(), t->volume());
+  for (int k = 0; k < 3; k++) EXPECT_EQ(b->moments()[k], t->moments()[k]);
+  EXPECT_FALSE(shape_composite_from_surface(l_prism_stl(dir + "L_open.stl", 3), 1.0, "Lo", record, err));
+  EXPECT_NE(err.find("not closed"), std::string::npos) << err;
 }

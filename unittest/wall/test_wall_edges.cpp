@@ -5,7 +5,7 @@
 // top edge of a thin vertical fin, the open border of a half-plate, a box's
 // outer (convex) edge, a concave corner, a ridge of two 30 degree plates, and
 // a grazing slide along an open border, a rod passing beside one, impacts
-// on a faceted rod (a convex curved mesh); several
+// on a faceted rod (a convex curved mesh), a composite grain; several
 // offsets and orientations;
 // fix wall/mesh/kk the same (fin, box edge, ridge, beside and rod at dt 5e-8).
 // Before the prisms' side sections were part of dV/dx (polydem_clip.h) a
@@ -67,6 +67,13 @@ std::vector<Case> cases()
   // jumped (+2.7e-2 and +1.9e-2 of the energy in these two impacts).
   out.push_back({"rod", "cube", rod(0.003, 48), {0.0, 0.0, 0.0085}, {0, 0, -1}, tilt});
   out.push_back({"rod", "cube", rod(0.003, 48), {0.001, 0.0, 0.0085}, {0, 0, -1}, tilt2});
+  // a composite (issue 29: two overlapping cubes and a sphere, 6 mm cubes):
+  // each part on the wall with its own history, the torques moved to the
+  // grain's centre
+  const std::string comp = "composite part cube 0 0 0 part cube 0.8 0 0 quat 0.95 0 0.31 0 "
+                           "part ball 0 1.1 0";
+  out.push_back({"half", comp, half_plate(), {0.0, 0.0, 0.0085}, {0.05, 0, -1}, tilt2});
+  out.push_back({"boxedge", comp, box_edge(), {0.0085, 0.0, 0.0085}, {-0.7, 0, -0.7}, tilt});
   // ellipsoids (semi-axes 4, 2.5, 1.5 mm; pair_style ellipsoid's linear law)
   const std::string ell = "ellipsoid 0.004 0.0025 0.0015";
   for (const std::string &q : {tilt, tilt2}) {

@@ -126,7 +126,11 @@ double energy_drift(const Case &c, const std::vector<std::string> &extra, double
   l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
           "comm_modify vel yes", "newton off", "region box block -0.5 0.5 -0.5 0.5 -0.5 0.5",
           "create_box 1 box",
-          ell ? "polyhedron_shape s " + c.shape
+          // a composite's parts: a unit cube and a sphere of radius 1/2
+          "polyhedron_shape cube " + polydem_test::potentials() + "/cube.shape",
+          "polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+          ell || c.shape.compare(0, 9, "composite") == 0
+              ? "polyhedron_shape s " + c.shape
               : "polyhedron_shape s " +
                   (c.shape[0] == '/' ? c.shape : polydem_test::potentials() + "/" + c.shape + ".shape"),
           "create_atoms 1 single " + num(c.x[0]) + " " + num(c.x[1]) + " " + num(c.x[2]),
