@@ -4,7 +4,10 @@
 // orientations at overlaps of 0.1-1 % of the particle volume; ns per
 // polyhedron-triangle clip (fix wall/mesh) for triangles near a particle's
 // lowest point; ns per polyhedron-sphere and polyhedron-ellipsoid overlap
-// (the same volume as the polyhedron) at the same overlaps.
+// (the same volume as the polyhedron) at the same overlaps; ns per pair of
+// composite grains (chains of 1, 2, 4 overlapping dodecahedra) in contact:
+// every pair of parts by bounding spheres, GJK and overlap, as the pipeline's
+// composite_pair_contact does before the law.
 // Results: bench/RESULTS.md, section "Geometry kernels".
 #include "polydem_clip.h"
 #include "polydem_ellipsoid_overlap.h"
@@ -386,3 +389,103 @@ int main(int argc, char **argv)
   benchmark::Shutdown();
   return 0;
 }
+
+namespace {
+
+// composite grains: a chain of P dodecahedra 1.6 mm apart along x (each
+// overlapping the next), pairs in random orientations and directions at a
+// total overlap of 0.1-1 % of one part's volume
+struct CompositeSet {
+  std::shared_ptr<PolyShapeTemplate> tmpl;
+  ShapeView<double> view;
+  std::vector<PosedShape<double>> a, b;
+  double vp = 0;
+  int parts_in_reach = 0;    // part pairs within reach, over all pairs
+};
+
+template <int MF>
+double composite_overlap(const PosedShape<double> &A, const PosedShape<double> &B,
+                         OverlapWorkspace<double, MF> &ws, int *reach = nullptr)
+{
+  double v = 0;
+  for (int ka = 0; ka < A.view->nparts; ++ka) {
+    const auto a = posed_part(A, ka);
+    for (int kb = 0; kb < B.view->nparts; ++kb) {
+      const auto b = posed_part(B, kb);
+      const double r = a.s * a.view->radius + b.s * b.view->radius;
+      if (norm2(a.x - b.x) >= r * r) continue;
+      if (reach) ++*reach;
+      if (gjk_intersect(a, b).status == STATUS_SEPARATED) continue;
+      const auto o = polyhedron_overlap(a, b, ws);
+      if (o.status == STATUS_OK) v += o.volume;
+    }
+  }
+  return v;
+}
+
+CompositeSet *make_composites(int P, int n)
+{
+  auto *cs = new CompositeSet;
+  auto d = std::make_shared<PolyShapeTemplate>(*dodecahedron(true).tmpl);
+  std::vector<PolyShapeTemplate::InputPart> parts;
+  for (int k = 0; k < P; ++k) {
+    PolyShapeTemplate::InputPart ip;
+    ip.shape = d;
+    ip.id = "d";
+    ip.x = {1.6e-3 * k, 0.0, 0.0};
+    ip.q = make_quat(1.0, 0.0, 0.0, 0.0);
+    parts.push_back(ip);
+  }
+  cs->tmpl = std::make_shared<PolyShapeTemplate>(PolyShapeTemplate::composite(parts, "chain"));
+  cs->view = cs->tmpl->view();
+  cs->vp = d->volume();
+  static OverlapWorkspace<double, 12> ws;
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::normal_distribution<double> g(0, 1);
+  while ((int) cs->a.size() < n) {
+    Pose<double> pa, pb;
+    pa.x = make_vec3(0.0, 0.0, 0.0);
+    pa.q = rquat(rng);
+    pa.s = pb.s = 1.0;
+    pb.q = rquat(rng);
+    Vec3<double> dir = make_vec3(g(rng), g(rng), g(rng));
+    dir = (1.0 / norm(dir)) * dir;
+    const double target = cs->vp * (1e-3 + 9e-3 * u(rng));
+    double lo = 0, hi = 2.2 * cs->view.radius;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      pb.x = mid * dir;
+      const double v = composite_overlap(make_posed(cs->view, pa), make_posed(cs->view, pb), ws);
+      (v > target ? lo : hi) = mid;
+    }
+    pb.x = lo * dir;
+    cs->a.push_back(make_posed(cs->view, pa));
+    cs->b.push_back(make_posed(cs->view, pb));
+  }
+  for (auto &a : cs->a) a.view = &cs->view;
+  for (auto &b : cs->b) b.view = &cs->view;
+  for (int i = 0; i < n; ++i) composite_overlap(cs->a[i], cs->b[i], ws, &cs->parts_in_reach);
+  return cs;
+}
+
+void composite_pair(benchmark::State &st, CompositeSet *cs)
+{
+  static OverlapWorkspace<double, 12> ws;
+  size_t i = 0, n = cs->a.size();
+  double vsum = 0;
+  for (auto _ : st) {
+    const double v = composite_overlap(cs->a[i], cs->b[i], ws);
+    benchmark::DoNotOptimize(v);
+    vsum += v;
+    if (++i == n) i = 0;
+  }
+  st.counters["V/Vpart"] = vsum / st.iterations() / cs->vp;
+  st.counters["part_pairs_in_reach"] = (double) cs->parts_in_reach / n;
+}
+
+}    // namespace
+
+BENCHMARK_CAPTURE(composite_pair, chain1, make_composites(1, 512));
+BENCHMARK_CAPTURE(composite_pair, chain2, make_composites(2, 512));
+BENCHMARK_CAPTURE(composite_pair, chain4, make_composites(4, 512));
