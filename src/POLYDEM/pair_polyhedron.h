@@ -76,7 +76,7 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
   const char *restart_version_text() const override;
   void report_counters();
   void check_timestep();
-  // composites: every pair of parts of a pair keeps its history (up to 8)
+  // composites: every pair of parts of a pair keeps its history (up to 16)
   int history_slots() override;
 };
 

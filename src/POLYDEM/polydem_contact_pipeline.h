@@ -231,9 +231,12 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   const bool a_low = A.tag < B.tag;
   const int stride = 1 + tab.nhist;
   T deepest = T(-1), volume = T(0), area = T(0);
-  for (int ka = 0; ka < na; ++ka) {
+  // the part pairs in the lower tag's order, whichever body is A: slots are
+  // taken in the same order on every rank (and given up alike when they run out)
+  for (int idx = 0; idx < na * nb; ++idx) {
+    const int ka = a_low ? idx / nb : idx % na, kb = a_low ? idx % nb : idx / na;
     const PosedShape<T> a = posed_part(A.shape, ka);
-    for (int kb = 0; kb < nb; ++kb) {
+    {
       const PosedShape<T> b = posed_part(B.shape, kb);
       const T key = T(1 + (a_low ? ka * MAX_COMPOSITE_PARTS + kb : kb * MAX_COMPOSITE_PARTS + ka));
       T *slot = nullptr;

@@ -63,10 +63,10 @@ template <typename T> POLYDEM_FN int pair_history_stride(const LawTable<T> &t)
 }
 
 // keyed part contacts a pair keeps when the largest template has maxparts
-// parts: every pair of parts, at most 8 (more are counted, without history)
+// parts: every pair of parts, at most 16 (more are counted, without history)
 inline int part_contact_slots(int maxparts)
 {
-  return maxparts > 1 ? (maxparts * maxparts < 8 ? maxparts * maxparts : 8) : 0;
+  return maxparts > 1 ? (maxparts * maxparts < 16 ? maxparts * maxparts : 16) : 0;
 }
 
 // the table over nentry entries (zero: the caller fills them), its settings

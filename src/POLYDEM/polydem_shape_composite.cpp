@@ -12,6 +12,11 @@
    polydem_ellipsoid_overlap.h) and add their analytic moments. The body
    frame is the union's principal frame; a composite of one part is that
    part, in its own frame.
+
+   Contacts sum over pairs of parts, so the contact parts must not overlap
+   (a common volume would count twice): where polyhedral parts overlap, the
+   contact parts are the convex pieces of their union (CGAL
+   convex_decomposition_3), the ellipsoid parts as given.
 ------------------------------------------------------------------------- */
 
 #include "polydem_shape_template.h"
@@ -20,6 +25,7 @@
 #include "polydem_shape_template_impl.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Nef_polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/convert_nef_polyhedron_to_polygon_mesh.h>
@@ -161,6 +167,140 @@ namespace {
                        "must be disjoint from the other parts)");
   }
 
+  // the convex pieces of a Nef polyhedron (decomposed in place): corner
+  // points (rounded to doubles) and exact volumes
+  struct Piece {
+    std::vector<PolyShapeTemplate::Point> corners;
+    double volume;
+  };
+  std::vector<Piece> nef_pieces(Nef &nef)
+  {
+    CGAL::convex_decomposition_3(nef);
+    std::vector<Piece> pieces;
+    for (auto c = ++nef.volumes_begin(); c != nef.volumes_end(); ++c) {
+      if (!c->mark()) continue;
+      CGAL::Polyhedron_3<K> piece;
+      nef.convert_inner_shell_to_polyhedron(c->shells_begin(), piece);
+      Piece pc;
+      for (auto p = piece.points_begin(); p != piece.points_end(); ++p)
+        pc.corners.push_back(
+            {CGAL::to_double(p->x()), CGAL::to_double(p->y()), CGAL::to_double(p->z())});
+      // 6 V = sum over the facets' fans of a . (b x c)
+      ET vol6(0);
+      for (auto f = piece.facets_begin(); f != piece.facets_end(); ++f) {
+        auto h = f->facet_begin();
+        const auto a = h->vertex()->point();
+        ++h;
+        for (auto b = h; std::next(b) != f->facet_begin(); ++b) {
+          const auto p1 = b->vertex()->point(), p2 = std::next(b)->vertex()->point();
+          vol6 += CGAL::exact(CGAL::determinant(a.x(), a.y(), a.z(), p1.x(), p1.y(), p1.z(),
+                                                p2.x(), p2.y(), p2.z()));
+        }
+      }
+      pc.volume = CGAL::to_double(vol6 / 6);
+      pieces.push_back(std::move(pc));
+    }
+    return pieces;
+  }
+
+  // corners that lie within tol of the convex hull of the others removed,
+  // one at a time (a piece of rounded corners may have faces that are not
+  // quite planar: a template needs its vertices clear of the others' faces)
+  std::vector<PolyShapeTemplate::Point> simplify_corners(std::vector<PolyShapeTemplate::Point> pts,
+                                                         double tol)
+  {
+    using KI = CGAL::Epick;
+    bool removed = true;
+    while (removed && pts.size() > 4) {
+      removed = false;
+      for (size_t k = 0; k < pts.size() && !removed; ++k) {
+        std::vector<KI::Point_3> others;
+        for (size_t j = 0; j < pts.size(); ++j)
+          if (j != k) others.emplace_back(pts[j][0], pts[j][1], pts[j][2]);
+        CGAL::Surface_mesh<KI::Point_3> h;
+        CGAL::convex_hull_3(others.begin(), others.end(), h);
+        if (h.number_of_faces() < 4) continue;    // the others are flat: k is needed
+        double out = -1e300;
+        for (auto f : h.faces()) {
+          std::array<KI::Point_3, 3> v;
+          int i = 0;
+          for (auto u : CGAL::vertices_around_face(h.halfedge(f), h))
+            if (i < 3) v[i++] = h.point(u);
+          const auto n = CGAL::cross_product(v[1] - v[0], v[2] - v[0]);
+          const double nn = std::sqrt(n.squared_length());
+          if (!(nn > 0.0)) continue;
+          const KI::Point_3 p(pts[k][0], pts[k][1], pts[k][2]);
+          out = std::max(out, (n * (p - v[0])) / nn);
+        }
+        if (out <= tol) {
+          pts.erase(pts.begin() + (long) k);
+          removed = true;
+        }
+      }
+    }
+    return pts;
+  }
+
+  // volume of the convex hull of points (double)
+  double hull_volume(const std::vector<PolyShapeTemplate::Point> &pts,
+                     std::vector<PolyShapeTemplate::Point> *corners = nullptr)
+  {
+    using KI = CGAL::Epick;
+    std::vector<KI::Point_3> p;
+    for (const auto &a : pts) p.emplace_back(a[0], a[1], a[2]);
+    CGAL::Surface_mesh<KI::Point_3> h;
+    CGAL::convex_hull_3(p.begin(), p.end(), h);
+    double v6 = 0.0;
+    for (auto f : h.faces()) {
+      std::vector<KI::Point_3> v;
+      for (auto u : CGAL::vertices_around_face(h.halfedge(f), h)) v.push_back(h.point(u));
+      for (size_t k = 1; k + 1 < v.size(); ++k)
+        v6 += CGAL::determinant(v[0] - CGAL::ORIGIN, v[k] - CGAL::ORIGIN, v[k + 1] - CGAL::ORIGIN);
+    }
+    if (corners) {
+      corners->clear();
+      for (auto u : h.vertices()) corners->push_back({h.point(u).x(), h.point(u).y(), h.point(u).z()});
+    }
+    return v6 / 6.0;
+  }
+
+  // adjacent pieces whose union is convex (its hull no larger than the two
+  // by 1e-9 of the union's volume vtot) joined, greedily: exact cuts through
+  // the nearly flat edges of rounded faces leave more pieces than the shape has
+  void join_convex_pieces(std::vector<Piece> &pieces, double vtot)
+  {
+    bool joined = true;
+    while (joined) {
+      joined = false;
+      for (size_t i = 0; i < pieces.size() && !joined; ++i)
+        for (size_t j = i + 1; j < pieces.size() && !joined; ++j) {
+          std::vector<PolyShapeTemplate::Point> both = pieces[i].corners, hull;
+          both.insert(both.end(), pieces[j].corners.begin(), pieces[j].corners.end());
+          const double vh = hull_volume(both, &hull);
+          if (vh <= pieces[i].volume + pieces[j].volume + 1e-9 * vtot) {
+            pieces[i].corners = hull;
+            pieces[i].volume += pieces[j].volume;
+            pieces.erase(pieces.begin() + (long) j);
+            joined = true;
+          }
+        }
+    }
+  }
+
+  // corners closer than tol merged (the first kept)
+  std::vector<PolyShapeTemplate::Point> merge_close(const std::vector<PolyShapeTemplate::Point> &in,
+                                                    double tol)
+  {
+    std::vector<PolyShapeTemplate::Point> out;
+    for (const auto &p : in) {
+      bool dup = false;
+      for (const auto &q : out)
+        dup = dup || std::hypot(p[0] - q[0], std::hypot(p[1] - q[1], p[2] - q[2])) <= tol;
+      if (!dup) out.push_back(p);
+    }
+    return out;
+  }
+
 }    // namespace
 
 PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &parts_in,
@@ -193,6 +333,9 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
   double sum_volume = 0.0;
   for (const auto &p : parts) sum_volume += p.shape->volume();
 
+  // the contact parts: as given, or (overlapping polyhedra) the ellipsoids
+  // and the convex pieces of the polyhedral parts' union
+  std::vector<InputPart> contact = parts;
   std::vector<ShapePart<double>> body(parts.size());
   if (parts.size() == 1) {
     // one part: its own frame (the input places the whole grain)
@@ -236,6 +379,82 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
       Mesh boundary;
       CGAL::convert_nef_polyhedron_to_polygon_mesh(joined, boundary, true);
       raw = mesh_moments(boundary);
+      double poly_sum = 0.0;
+      for (const auto &p : parts)
+        if (!p.shape->is_ellipsoid()) poly_sum += p.shape->volume();
+      if (raw.V < poly_sum * (1.0 - 1e-12)) {
+        // overlapping parts would count their common volume twice in a
+        // contact: the contact parts are the union's disjoint convex pieces
+        Nef cut = joined;
+        auto pieces = nef_pieces(cut);
+        join_convex_pieces(pieces, raw.V);
+        contact.clear();
+        for (const auto &p : parts)
+          if (p.shape->is_ellipsoid()) contact.push_back(p);
+        ShapeOptions opt;
+        opt.hull = true;    // corners on a piece's edges or faces are not vertices
+        // slivers (parts turned by irrational angles have rounded, not
+        // exactly planar faces, and their union's pieces may be thinner than
+        // a template can be) are left out of the contact parts: below 1e-9
+        // of the union's volume always, below 1e-6 where no template can be
+        // made of them; the mass properties stay the union's
+        double dropped = 0.0;
+        int ndropped = 0;
+        for (size_t k = 0; k < pieces.size(); ++k) {
+          InputPart ip;
+          ip.id = "piece" + std::to_string(k + 1);
+          if (pieces[k].volume < 1e-9 * raw.V) {
+            dropped += pieces[k].volume;
+            ++ndropped;
+            continue;
+          }
+          double diam = 0.0;
+          for (const auto &a : pieces[k].corners)
+            for (const auto &b : pieces[k].corners)
+              diam = std::max(diam, std::hypot(a[0] - b[0], std::hypot(a[1] - b[1], a[2] - b[2])));
+          std::shared_ptr<PolyShapeTemplate> pt;
+          try {
+            const auto corners = merge_close(pieces[k].corners, 1e-9 * diam);
+            try {
+              pt = std::make_shared<PolyShapeTemplate>(
+                  PolyShapeTemplate::from_points(corners, {}, opt, name + "_" + ip.id));
+            } catch (const ShapeError &) {
+              // near-coplanar faces: without the corners within 1e-7 of the
+              // others' hull, closer corners merged (the piece moves by at
+              // most 1e-7 of its size)
+              std::vector<Point> hull;
+              hull_volume(merge_close(corners, 1e-7 * diam), &hull);
+              pt = std::make_shared<PolyShapeTemplate>(PolyShapeTemplate::from_points(
+                  simplify_corners(hull, 1e-7 * diam), {}, opt, name + "_" + ip.id));
+            }
+          } catch (const ShapeError &e) {
+            if (pieces[k].volume >= 1e-6 * raw.V)
+              throw ShapeError(head + ": overlapping parts are cut into disjoint convex "
+                               "pieces for the contacts, and piece " + std::to_string(k + 1) +
+                               " (" + fmt_num(pieces[k].volume / raw.V) +
+                               " of the volume) is no valid convex template (" + e.what() +
+                               "); give parts that do not overlap (they may touch), or the "
+                               "grain as a closed STL surface");
+            dropped += pieces[k].volume;
+            ++ndropped;
+            continue;
+          }
+          ip.x = pt->input_centroid();
+          ip.q = pt->input_orientation();
+          ip.shape = std::move(pt);
+          contact.push_back(std::move(ip));
+        }
+        if (dropped > 1e-12 * raw.V)    // else round-off: 1e-16 for crosses turned by 90 degrees
+          t.warnings_.push_back(head + ": " + std::to_string(ndropped) +
+                                " sliver pieces of the union (" + fmt_num(dropped / raw.V) +
+                                " of its volume) are not contact parts");
+        if ((int) contact.size() > MAX_COMPOSITE_PARTS)
+          throw ShapeError(head + ": the union of the overlapping parts has " +
+                           std::to_string(contact.size()) + " convex pieces, more than " +
+                           std::to_string(MAX_COMPOSITE_PARTS));
+        t.decomposed_ = true;
+        body.resize(contact.size());
+      }
     }
     for (const auto &p : parts)
       if (p.shape->is_ellipsoid()) add_ellipsoid(p, raw);
@@ -264,13 +483,13 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
       t.centroid_[i] = c[i];
       for (int j = 0; j < 3; ++j) t.rot_[i][j] = R[i][j];
     }
-    // each part in the body frame: x_b = R^T (x - c), R_b = R^T R_part
+    // each contact part in the body frame: x_b = R^T (x - c), R_b = R^T R_part
     t.radius_ = 0.0;
-    for (size_t k = 0; k < parts.size(); ++k) {
-      const Mat3<double> Rp = rotation_of(parts[k].q);
+    for (size_t k = 0; k < contact.size(); ++k) {
+      const Mat3<double> Rp = rotation_of(contact[k].q);
       for (int i = 0; i < 3; ++i) {
         long double x = 0.0L;
-        for (int j = 0; j < 3; ++j) x += (long double) R[j][i] * (parts[k].x[j] - c[j]);
+        for (int j = 0; j < 3; ++j) x += (long double) R[j][i] * (contact[k].x[j] - c[j]);
         body[k].x[i] = (double) x;
         for (int j = 0; j < 3; ++j) {
           long double r = 0.0L;
@@ -280,7 +499,7 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
       }
       const double d = std::sqrt(body[k].x[0] * body[k].x[0] + body[k].x[1] * body[k].x[1] +
                                  body[k].x[2] * body[k].x[2]);
-      t.radius_ = std::max(t.radius_, d + parts[k].shape->radius());
+      t.radius_ = std::max(t.radius_, d + contact[k].shape->radius());
     }
   }
   t.union_fraction_ = t.volume_ / sum_volume;
@@ -296,8 +515,11 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
   }
 
   auto views = std::make_shared<std::vector<ShapeView<double>>>();
-  for (const auto &p : parts) views->push_back(p.shape->view());
-  for (size_t k = 0; k < parts.size(); ++k) body[k].view = &(*views)[k];
+  for (const auto &p : contact) {
+    views->push_back(p.shape->view());
+    t.part_shapes_.push_back(p.shape);
+  }
+  for (size_t k = 0; k < contact.size(); ++k) body[k].view = &(*views)[k];
   t.part_views_ = views;
   t.parts_ = std::make_shared<const std::vector<ShapePart<double>>>(std::move(body));
   t.check_mass_properties(head);
@@ -347,19 +569,11 @@ PolyShapeTemplate::convex_pieces(const std::vector<double> &tri, const std::stri
   Nef nef(surface);
   if (!nef.is_simple())
     throw ShapeError(head + ": the surface does not bound a simple solid");
-  CGAL::convex_decomposition_3(nef);
-  std::vector<std::vector<Point>> pieces;
-  for (auto c = ++nef.volumes_begin(); c != nef.volumes_end(); ++c) {
-    if (!c->mark()) continue;
-    CGAL::Polyhedron_3<K> piece;
-    nef.convert_inner_shell_to_polyhedron(c->shells_begin(), piece);
-    std::vector<Point> corners;
-    for (auto p = piece.points_begin(); p != piece.points_end(); ++p)
-      corners.push_back({CGAL::to_double(p->x()), CGAL::to_double(p->y()), CGAL::to_double(p->z())});
-    pieces.push_back(std::move(corners));
-  }
+  const auto pieces = nef_pieces(nef);
   if (pieces.empty()) throw ShapeError(head + ": no solid inside the surface");
-  return pieces;
+  std::vector<std::vector<Point>> out;
+  for (const auto &p : pieces) out.push_back(p.corners);
+  return out;
 }
 
 }    // namespace polydem

@@ -73,7 +73,7 @@ double PolyShapeTemplate::inradius() const
 {
   if (ellipsoid_) return std::min(axes_[0], std::min(axes_[1], axes_[2]));
   double r = 1e300;
-  for (const auto &p : input_parts_) r = std::min(r, p.shape->inradius());    // the thinnest part
+  for (const auto &p : part_shapes_) r = std::min(r, p->inradius());    // the thinnest part
   for (int f = 0; f < nfaces(); f++) r = std::min(r, planes_[4 * f + 3]);
   return r;
 }
@@ -81,7 +81,7 @@ double PolyShapeTemplate::inradius() const
 double PolyShapeTemplate::max_face_area() const
 {
   double amax = 0.0;
-  for (const auto &p : input_parts_) amax = std::max(amax, p.shape->max_face_area());
+  for (const auto &p : part_shapes_) amax = std::max(amax, p->max_face_area());
   for (int f = 0; f < nfaces(); f++) {
     double a[3] = {0.0, 0.0, 0.0};    // sum of p_k x p_k+1 = 2 area n
     for (int k = face_start_[f]; k < face_start_[f + 1]; k++) {

@@ -71,6 +71,10 @@ class PolyShapeTemplate {
   // composite's input frame. Parts may overlap where both are polyhedra
   // (the union's mass properties are computed exactly, with CGAL's Nef
   // polyhedra); a part that is an ellipsoid must be disjoint from the others.
+  // The contact parts (nparts, part_shape, part) have disjoint interiors, so
+  // that the overlap of two grains is the sum over pairs of parts: the parts
+  // as given where they are disjoint, else the ellipsoids and the convex
+  // decomposition of the polyhedral parts' union (CGAL convex_decomposition_3).
   // A composite of one part has that part's body frame. Throws ShapeError.
   struct InputPart {
     std::shared_ptr<const PolyShapeTemplate> shape;    // convex (not a composite)
@@ -86,11 +90,14 @@ class PolyShapeTemplate {
   static std::vector<std::vector<Point>> convex_pieces(const std::vector<double> &tri,
                                                        const std::string &name);
   bool is_composite() const { return !input_parts_.empty(); }
-  int nparts() const { return (int) input_parts_.size(); }
   const std::vector<InputPart> &input_parts() const { return input_parts_; }
-  // part k in the body frame: its template, position and rotation (unit scale)
-  const PolyShapeTemplate &part_shape(int k) const { return *input_parts_[k].shape; }
+  // the contact parts: count, contact part k's template, and its position
+  // and rotation in the body frame (unit scale)
+  int nparts() const { return (int) part_shapes_.size(); }
+  const PolyShapeTemplate &part_shape(int k) const { return *part_shapes_[k]; }
   const ShapePart<double> &part(int k) const { return (*parts_)[k]; }
+  // the contact parts are the convex decomposition of the parts' union
+  bool decomposed() const { return decomposed_; }
   // volume of the union over the sum of the parts' volumes (1: disjoint)
   double union_fraction() const { return union_fraction_; }
 
@@ -173,6 +180,8 @@ class PolyShapeTemplate {
   // composites: the parts as given, their views (shared by copies, so that
   // the pointers of parts_ stay valid) and their body-frame placements
   std::vector<InputPart> input_parts_;
+  std::vector<std::shared_ptr<const PolyShapeTemplate>> part_shapes_;    // contact parts
+  bool decomposed_ = false;
   std::shared_ptr<const std::vector<ShapeView<double>>> part_views_;
   std::shared_ptr<const std::vector<ShapePart<double>>> parts_;
   double union_fraction_ = 1.0;

@@ -171,15 +171,22 @@ void PolyhedronShape::add_composite(const std::string &id,
                                     const std::string &record, const std::string &how)
 {
   auto avec = PolyShapeLibrary::of(lmp, "polyhedron_shape");
+  for (const auto &w : t->warnings())
+    if (comm->me == 0) error->warning(FLERR, "polyhedron_shape: {}", w);
   const auto v = t->view();
   const double frac = t->union_fraction();
+  const int ninput = (int) t->input_parts().size();
+  const bool decomposed = t->decomposed();
   const auto c = t->input_centroid();
   const int index = avec->add_shape(id, std::move(t), record);
   if (comm->me == 0)
     utils::logmesg(lmp,
                    "polyhedron_shape {} (index {}): composite of {} parts{}, volume {:.10g} "
-                   "({:.10g} of the parts' sum), centroid {:.10g} {:.10g} {:.10g}, bounding "
-                   "radius {:.10g}, principal moments/density {:.10g} {:.10g} {:.10g}\n",
-                   id, index + 1, v.nparts, how, v.volume, frac, c[0], c[1], c[2], v.radius,
+                   "({:.10g} of the parts' sum), {} contact parts{}, centroid {:.10g} {:.10g} "
+                   "{:.10g}, bounding radius {:.10g}, principal moments/density {:.10g} "
+                   "{:.10g} {:.10g}\n",
+                   id, index + 1, ninput, how, v.volume, frac, v.nparts,
+                   decomposed ? " (the convex pieces of the overlapping parts' union)" : "",
+                   c[0], c[1], c[2], v.radius,
                    v.inertia[0], v.inertia[1], v.inertia[2]);
 }

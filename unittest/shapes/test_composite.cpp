@@ -78,15 +78,16 @@ TEST(Composite, OverlappingCubesGiveTheUnionsMassProperties)
   EXPECT_NEAR(t.input_centroid()[1], 0.0, 1e-15);
   const auto m = moments(t), want = box_moments(1.5, 1.0, 1.0);
   for (int k = 0; k < 3; k++) expect_rel(m[k], want[k], 1e-13, "moment");
-  EXPECT_NEAR(t.radius(), 0.25 + std::sqrt(0.75), 1e-14);    // part centre 0.25 + cube half-diagonal
-  // the parts in the body frame: 0.5 apart, symmetric about the centroid
-  const auto &a = t.part(0), &b = t.part(1);
-  EXPECT_NEAR(std::hypot(a.x[0] - b.x[0], std::hypot(a.x[1] - b.x[1], a.x[2] - b.x[2])), 0.5, 1e-15);
-  EXPECT_NEAR(std::hypot(a.x[0] + b.x[0], std::hypot(a.x[1] + b.x[1], a.x[2] + b.x[2])), 0.0, 1e-15);
+  // the contact parts do not overlap: the union (a convex box) is one
+  // piece, at the centroid, of the box's half-diagonal as radius
+  EXPECT_TRUE(t.decomposed());
   const auto v = t.view();
   EXPECT_TRUE(view_is_composite(v));
-  EXPECT_EQ(v.nparts, 2);
+  ASSERT_EQ(v.nparts, 1);
   EXPECT_EQ(v.nverts, 0);
+  expect_rel(t.part_shape(0).volume(), 1.5, 1e-14, "piece volume");
+  for (int i = 0; i < 3; i++) EXPECT_NEAR(t.part(0).x[i], 0.0, 1e-15);
+  EXPECT_NEAR(t.radius(), std::sqrt(0.75 * 0.75 + 0.5), 1e-14);
 }
 
 // an L of three unit cubes meeting face to face: V = 3, centroid (1/3, 1/3, 0),
@@ -96,6 +97,8 @@ TEST(Composite, LShapeOfTouchingCubes)
   const auto t = PolyShapeTemplate::composite(
       {part(cube(), 0, 0, 0), part(cube(), 1, 0, 0), part(cube(), 0, 1, 0)}, "L");
   expect_rel(t.volume(), 3.0, 1e-14, "volume");
+  EXPECT_FALSE(t.decomposed());    // disjoint interiors: the parts as given
+  EXPECT_EQ(t.nparts(), 3);
   EXPECT_NEAR(t.input_centroid()[0], 1.0 / 3, 1e-15);
   EXPECT_NEAR(t.input_centroid()[1], 1.0 / 3, 1e-15);
   // I about the centroid: sum of 1/6 + |d|^2 - d d^T per cube
@@ -125,6 +128,13 @@ TEST(Composite, RotatedPartsOverlapExactly)
       {part(cube(), 0, 0, 0), part(cube(), 0, 0, 0, make_quat(std::cos(M_PI / 8), 0.0, 0.0, h))},
       "star");
   expect_rel(t.volume(), 2.0 - 2.0 * std::tan(M_PI / 8), 1e-14, "volume");
+  // the contact parts are disjoint convex pieces filling the union
+  EXPECT_TRUE(t.decomposed());
+  EXPECT_GE(t.nparts(), 2);
+  double sum = 0.0;
+  for (int k = 0; k < t.nparts(); k++) sum += t.part_shape(k).volume();
+  expect_rel(sum, t.volume(), 1e-13, "pieces' volume");
+  std::printf("star prism: %d convex pieces\n", t.nparts());
 }
 
 // a cube and a disjoint sphere: V, centroid and inertia are sums
@@ -190,8 +200,10 @@ TEST(Composite, RecordRoundTripAndErrors)
   EXPECT_EQ(a->volume(), b->volume());
   EXPECT_EQ(a->radius(), b->radius());
   for (int k = 0; k < 3; k++) EXPECT_EQ(a->moments()[k], b->moments()[k]);
-  ASSERT_EQ(b->nparts(), 3);
-  for (int k = 0; k < 3; k++)
+  ASSERT_EQ(b->nparts(), a->nparts());    // the egg and the pieces of the cubes' union
+  EXPECT_TRUE(a->decomposed());
+  std::printf("two cubes at a general angle and an ellipsoid: %d contact parts\n", a->nparts());
+  for (int k = 0; k < a->nparts(); k++)
     for (int i = 0; i < 3; i++) {
       EXPECT_EQ(a->part(k).x[i], b->part(k).x[i]);
       for (int j = 0; j < 3; j++) EXPECT_EQ(a->part(k).R[i][j], b->part(k).R[i][j]);
