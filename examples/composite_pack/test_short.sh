@@ -1,0 +1,22 @@
+#!/bin/bash
+# ctest example.composite_pack_short: in.composite_pack for 400 steps (a few
+# seconds) in a scratch folder; checks
+#   - the cross's template: volume 7 of the bars' 9, three equal principal
+#     moments 5.166666667 (closed form: 5.5 - 2/6), 5 contact parts;
+#   - 200 crosses placed, no warning, none lost (thermo_modify lost error).
+# Usage: test_short.sh LMP
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+cd "$scratch"
+cp "$here/bar.shape" "$here/floor.stl" .
+sed 's/^dump /# dump /' "$here/in.composite_pack" > in.short
+"$1" -in in.short -screen none -log log.short -var steps 400
+ok=0
+grep -q "composite of 3 parts, volume 7 (0.7777777778 of the parts' sum), 5 contact parts" log.short || { echo "FAIL: the cross's volume or contact parts"; ok=1; }
+grep -q "principal moments/density 5.166666667 5.166666667 5.166666667" log.short || { echo "FAIL: the cross's moments"; ok=1; }
+grep -q "ins: 200 particle(s) inserted" log.short || { echo "FAIL: not 200 crosses placed"; ok=1; }
+if grep -q "WARNING" log.short; then echo "FAIL: a warning in the log"; ok=1; fi
+grep "composite of 3 parts" log.short
+exit $ok
