@@ -768,3 +768,73 @@ TEST(WallMesh, OverflowingStiffnessRefused)
   l.cmds(one_particle());
   l.cmds({"fix w all wall/mesh " + good + " youngs 1e12", "run 0"});    // stiff, finite: fine
 }
+
+// Composites on a wall (issue 29): three grains of two overlapping cubes
+// and a sphere land on a floor and slide with friction (each contact part
+// keeps its own wall history, WALL_HIST_SIZE per part and atom); the run
+// continues bit for bit from write_restart/read_restart, and a composite
+// defined after the fix is refused (its history would not fit).
+TEST(WallMesh, CompositesRestartExactly)
+{
+  const std::string stl = tmpdir() + "/composite_floor.stl";
+  const std::string rst = tmpdir() + "/composite_wall.restart";
+  write_ascii(stl, flat(-0.05, 0.05, -0.05, 0.05, 0.0, 4, 4));
+  const std::vector<std::string> run = {"comm_modify vel yes", "neighbor 0.002 bin",
+                                        "fix nve all nve/polyhedron",
+                                        "fix g all gravity 9.81 vector 0 0 -1",
+                                        "fix w all wall/mesh " + stl + " friction 0.6",
+                                        "timestep 2e-6"};
+  auto state = [](Lmp &l) {
+    std::vector<double> s;
+    auto *a = l.lmp->atom;
+    for (int tag = 1; tag <= 3; tag++) {
+      const int i = a->map(tag);
+      for (int k = 0; k < 3; k++) s.insert(s.end(), {a->x[i][k], a->v[i][k], a->angmom[i][k]});
+    }
+    return s;
+  };
+  std::vector<double> ref;
+  double contacts = 0.0;
+  {
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box",
+            "polyhedron_shape cube " + potentials() + "/cube.shape",
+            "polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+            "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 quat 0.92 "
+            "0.38 0 0 part ball 0 1.3 0",
+            "create_atoms 1 single 0 0 0.0062", "create_atoms 1 single 0.02 0.004 0.0065",
+            "create_atoms 1 single -0.018 0.01 0.007",
+            "polyhedron_set group all shape dumb scale 0.004 density 2500 quat/random 5",
+            "velocity all set 0.3 0.1 -0.4", "pair_style polyhedron",
+            "pair_coeff * * 1e7 0.3 0.5 0.5"});
+    l.cmds(run);
+    l.cmd("run 4000");
+    contacts = l.lmp->modify->fix[l.lmp->modify->find_fix("w")]->compute_vector(6);
+    l.cmd("write_restart " + rst);
+    l.cmd("run 2000");
+    ref = state(l);
+    // 16 parts (the fix was sized for dumb's contact parts): defining it is
+    // fine, using it on this wall is not
+    std::string late = "polyhedron_shape late composite";
+    for (int k = 0; k < 16; k++) late += " part cube " + std::to_string(2 * k) + " 0 0";
+    EXPECT_EQ(l.error_of(late), "");
+    l.cmds({"polyhedron_set atom 1 shape late"});
+    EXPECT_NE(l.error_of("run 1").find("defined after the fix"), std::string::npos);
+  }
+  {
+    Lmp l;
+    l.cmd("read_restart " + rst);
+    l.cmds(run);
+    l.cmd("run 2000");
+    const auto got = state(l);
+    ASSERT_EQ(got.size(), ref.size());
+    double diff = 0.0;
+    for (size_t k = 0; k < got.size(); k++) diff = std::fmax(diff, std::fabs(got[k] - ref[k]));
+    std::printf("[ wall     ] composites: %.0f wall contacts at the restart; largest difference "
+                "after it %.3g\n", contacts, diff);
+    EXPECT_EQ(diff, 0.0);
+  }
+  EXPECT_GE(contacts, 2.0);    // wall contacts (with friction history) at the restart
+  std::remove(rst.c_str());
+}
