@@ -195,10 +195,10 @@ void PairEllipsoid::init_style()
   if (all) {
     int f = first, gf;
     MPI_Allreduce(&f, &gf, 1, MPI_INT, MPI_MAX, world);
-    error->all(FLERR, "pair_style ellipsoid: {} atoms have a polyhedron shape (e.g. '{}'); "
-               "define their shape with 'polyhedron_shape ID ellipsoid a b c' or use "
-               "pair_style polyhedron, which takes polyhedra together with spheres", all,
-               avec->shape_id(gf));
+    error->all(FLERR, "pair_style ellipsoid: {} atoms have a polyhedron or composite shape "
+               "(e.g. '{}'); define their shape with 'polyhedron_shape ID ellipsoid a b c' or "
+               "use pair_style polyhedron, which takes polyhedra together with spheres and "
+               "composites", all, avec->shape_id(gf));
   }
 
   if (use_history) setup_history_fix();

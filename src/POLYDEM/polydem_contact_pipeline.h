@@ -9,20 +9,23 @@
                               (polydem_overlap.h), or the exact overlap of
                               a polyhedron and a sphere or ellipsoid, or of
                               two spheres (polydem_ellipsoid_overlap.h)
-                              -> Feng law
+                              -> Feng law; composites part pair by part
+                              pair (composite_pair_contact), each with its
+                              keyed history slot
      ellipsoid_pair_contact   pair ellipsoid:   characteristic quartic and
                               contact point (polydem_ellipsoid_force.h) ->
                               linear law
      wall_body_contact        fix wall/mesh:    a polyhedron's clipped patches
                               (polydem_wall_contact.h) or an ellipsoid's
-                              (polydem_wall_ellipsoid.h) -> the type's wall law
+                              (polydem_wall_ellipsoid.h) -> the type's wall law;
+                              wall_particle_contact: a composite part by part
 
    Each runs pose -> geometry -> counters -> law (from the LawTable) ->
    kinematics -> contact_step (polydem_contact_law.h) on the contact's
    history slot, and returns the force, torques and energy; its kernel
    counters are added to the caller's array (indices PP_*, EP_*; the wall's
-   are in WallPatches and WallWarnings). A new contact kind (mixed
-   composites) is one more entry point here.
+   are in WallPatches and WallWarnings). A new contact kind is one more
+   entry point here.
 
    The law of each contact comes from the style's LawTable (polydem_law_table.h).
 ------------------------------------------------------------------------- */
