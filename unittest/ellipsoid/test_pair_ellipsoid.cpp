@@ -331,7 +331,7 @@ TEST(PairEllipsoid, BadInput)
   // an ellipsoid pair style with a polyhedron atom, and vice versa
   l.cmd("create_atoms 1 single 0.2 0.2 0.2");
   l.cmd("polyhedron_set atom 2 shape c");
-  EXPECT_NE(l.error_of("run 0").find("1 atoms have a polyhedron shape (e.g. 'c')"),
+  EXPECT_NE(l.error_of("run 0").find("1 atoms have a polyhedron or composite shape (e.g. 'c')"),
             std::string::npos);
   l.cmds({"polyhedron_set atom 2 shape e", "run 0", "pair_style polyhedron",
           "pair_coeff * * 1e7 0.3 0.9 0.0"});
