@@ -198,8 +198,15 @@ namespace {
         }
       }
       pc.volume = CGAL::to_double(vol6 / 6);
+      std::sort(pc.corners.begin(), pc.corners.end());
+      pc.corners.erase(std::unique(pc.corners.begin(), pc.corners.end()), pc.corners.end());
       pieces.push_back(std::move(pc));
     }
+    // in a canonical order: the Nef structure's order of volumes and points
+    // may change from one build to the next (it follows memory addresses),
+    // and a restart rebuilds the template bit for bit
+    std::sort(pieces.begin(), pieces.end(),
+              [](const Piece &a, const Piece &b) { return a.corners < b.corners; });
     return pieces;
   }
 
@@ -278,6 +285,7 @@ namespace {
           both.insert(both.end(), pieces[j].corners.begin(), pieces[j].corners.end());
           const double vh = hull_volume(both, &hull);
           if (vh <= pieces[i].volume + pieces[j].volume + 1e-9 * vtot) {
+            std::sort(hull.begin(), hull.end());
             pieces[i].corners = hull;
             pieces[i].volume += pieces[j].volume;
             pieces.erase(pieces.begin() + (long) j);
@@ -424,6 +432,7 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
               // most 1e-7 of its size)
               std::vector<Point> hull;
               hull_volume(merge_close(corners, 1e-7 * diam), &hull);
+              std::sort(hull.begin(), hull.end());
               pt = std::make_shared<PolyShapeTemplate>(PolyShapeTemplate::from_points(
                   simplify_corners(hull, 1e-7 * diam), {}, opt, name + "_" + ip.id));
             }
