@@ -5,7 +5,7 @@
 // polyhedron-triangle clip (fix wall/mesh) for triangles near a particle's
 // lowest point; ns per polyhedron-sphere and polyhedron-ellipsoid overlap
 // (the same volume as the polyhedron) at the same overlaps; ns per pair of
-// composite grains (chains of 1, 2, 4 overlapping dodecahedra) in contact:
+// composite grains (chains of 1, 2, 4 separate dodecahedra) in contact:
 // every pair of parts by bounding spheres, GJK and overlap, as the pipeline's
 // composite_pair_contact does before the law.
 // Results: bench/RESULTS.md, section "Geometry kernels".
@@ -392,9 +392,10 @@ int main(int argc, char **argv)
 
 namespace {
 
-// composite grains: a chain of P dodecahedra 1.6 mm apart along x (each
-// overlapping the next), pairs in random orientations and directions at a
-// total overlap of 0.1-1 % of one part's volume
+// composite grains: a chain of P dodecahedra 3.3 mm apart along x (their
+// half-width along x is 1.62 mm: disjoint parts, so that the contact parts
+// are the dodecahedra themselves), pairs in random orientations and
+// directions at a total overlap of 0.1-1 % of one part's volume
 struct CompositeSet {
   std::shared_ptr<PolyShapeTemplate> tmpl;
   ShapeView<double> view;
@@ -432,7 +433,7 @@ CompositeSet *make_composites(int P, int n)
     PolyShapeTemplate::InputPart ip;
     ip.shape = d;
     ip.id = "d";
-    ip.x = {1.6e-3 * k, 0.0, 0.0};
+    ip.x = {3.3e-3 * k, 0.0, 0.0};
     ip.q = make_quat(1.0, 0.0, 0.0, 0.0);
     parts.push_back(ip);
   }
