@@ -10,6 +10,7 @@
 #include "fix_dummy.h"
 #include "fix_neigh_history.h"
 #include "force.h"
+#include "math_const.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -26,17 +27,21 @@
 #include <cstring>
 
 using namespace LAMMPS_NS;
+using MathConst::MY_PI;
 
 // first value of the restart settings: the layout since the history
 // convention of polydem_contact_law.h (older files begin with overlap/warn > 0);
-// -3 adds rolling resistance (files of -2 are read with none)
-static constexpr double RESTART_VERSION = -3.0;
+// -3 adds rolling resistance (files of -2 are read with none), -4 liquid
+// bridges (files of -3 are read with none)
+static constexpr double RESTART_VERSION = -4.0;
+static constexpr double RESTART_VERSION_NO_BRIDGE = -3.0;
 static constexpr double RESTART_VERSION_NO_ROLLING = -2.0;
 
 PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nhist, int ncnt) :
     Pair(lmp), style_name(style), history_tag(tag), nhistory_base(nhist), nhistory(nhist), nhistory_contact(nhist),
     nhistory_restart(0), restart_format(3), nhistory_fix(0), ncount(ncnt), rolling(nullptr),
-    cohesion(nullptr), roll_kr(polydem::RollingLaw<double>().kr),
+    cohesion(nullptr), bridge_vol(nullptr), bridge_gamma(nullptr), bridge_theta(nullptr),
+    roll_kr(polydem::RollingLaw<double>().kr),
     roll_eta(polydem::RollingLaw<double>().eta), avec(nullptr), fix_dummy(nullptr),
     fix_history(nullptr), history_id(0)
 {
@@ -62,6 +67,9 @@ PairPolydem::~PairPolydem()
   if (copymode) return;
   memory->destroy(rolling);
   memory->destroy(cohesion);
+  memory->destroy(bridge_vol);
+  memory->destroy(bridge_gamma);
+  memory->destroy(bridge_theta);
   modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
 }
 
@@ -74,22 +82,56 @@ void PairPolydem::allocate_rolling()
   const int n = atom->ntypes;
   memory->destroy(rolling);
   memory->destroy(cohesion);
+  memory->destroy(bridge_vol);
+  memory->destroy(bridge_gamma);
+  memory->destroy(bridge_theta);
   memory->create(rolling, n + 1, n + 1, "pair:rolling");
   memory->create(cohesion, n + 1, n + 1, "pair:cohesion");
+  memory->create(bridge_vol, n + 1, n + 1, "pair:bridge_vol");
+  memory->create(bridge_gamma, n + 1, n + 1, "pair:bridge_gamma");
+  memory->create(bridge_theta, n + 1, n + 1, "pair:bridge_theta");
   for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) rolling[i][j] = cohesion[i][j] = 0.0;
+    for (int j = 0; j <= n; j++)
+      rolling[i][j] = cohesion[i][j] = bridge_vol[i][j] = bridge_gamma[i][j] =
+          bridge_theta[i][j] = 0.0;
 }
 
-int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh)
+int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge)
 {
   mu_r = coh = 0.0;
+  if (bridge) bridge[0] = bridge[1] = bridge[2] = 0.0;
+  auto keyword = [&](const char *a) {
+    return strcmp(a, "rolling") == 0 || strcmp(a, "cohesion") == 0 || strcmp(a, "bridge") == 0;
+  };
   int first = 2;
-  while (first < narg && strcmp(arg[first], "rolling") && strcmp(arg[first], "cohesion")) first++;
-  for (int k = first; k < narg; k += 2) {
+  while (first < narg && !keyword(arg[first])) first++;
+  for (int k = first; k < narg;) {
+    if (strcmp(arg[k], "bridge") == 0) {
+      // bridge V_b gamma theta: liquid volume, surface tension, contact angle [degrees]
+      if (!bridge)
+        error->all(FLERR, "pair_coeff {}: liquid bridges ('bridge') are a part of pair_style "
+                   "polyhedron (between spheres)", style_name);
+      if (k + 3 >= narg)
+        error->all(FLERR, "pair_coeff {}: 'bridge' needs three values: the liquid volume "
+                   "V_b, the surface tension gamma and the contact angle theta in degrees",
+                   style_name);
+      const char *what[3] = {"liquid volume V_b", "surface tension gamma", "contact angle theta"};
+      for (int m = 0; m < 3; m++) {
+        const double v = polydem_parse::numeric(FLERR, arg[k + 1 + m], lmp);
+        const bool ok = m == 2 ? v >= 0.0 && v < 90.0 : v > 0.0 && std::isfinite(v);
+        if (!ok)
+          error->all(FLERR, "pair_coeff {}: bridge {} must be {}, got '{}'", style_name, what[m],
+                     m == 2 ? "in [0, 90) degrees (a wetting liquid)" : "> 0", arg[k + 1 + m]);
+        bridge[m] = v;
+      }
+      k += 4;
+      continue;
+    }
     const bool roll = strcmp(arg[k], "rolling") == 0;
     if (!roll && strcmp(arg[k], "cohesion") != 0)
       error->all(FLERR, "pair_coeff {}: unknown keyword '{}' (after the coefficients: "
-                 "'rolling mu_r', 'cohesion c')", style_name, arg[k]);
+                 "'rolling mu_r', 'cohesion c'{})", style_name, arg[k],
+                 bridge ? ", 'bridge V_b gamma theta'" : "");
     if (k + 1 >= narg)
       error->all(FLERR, "pair_coeff {}: '{}' needs a value", style_name, arg[k]);
     const double v = polydem_parse::numeric(FLERR, arg[k + 1], lmp);
@@ -97,6 +139,7 @@ int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh)
       error->all(FLERR, "pair_coeff {}: {} must be >= 0, got '{}'", style_name,
                  roll ? "rolling friction mu_r" : "cohesion", arg[k + 1]);
     (roll ? mu_r : coh) = v;
+    k += 2;
   }
   return first;
 }
@@ -106,9 +149,27 @@ void PairPolydem::mix_keywords(int i, int j, bool own)
   if (!own) {
     rolling[i][j] = sqrt(rolling[i][i] * rolling[j][j]);
     cohesion[i][j] = sqrt(cohesion[i][i] * cohesion[j][j]);
+    bridge_vol[i][j] = sqrt(bridge_vol[i][i] * bridge_vol[j][j]);
+    bridge_gamma[i][j] = sqrt(bridge_gamma[i][i] * bridge_gamma[j][j]);
+    bridge_theta[i][j] = 0.5 * (bridge_theta[i][i] + bridge_theta[j][j]);
   }
   rolling[j][i] = rolling[i][j];
   cohesion[j][i] = cohesion[i][j];
+  bridge_vol[j][i] = bridge_vol[i][j];
+  bridge_gamma[j][i] = bridge_gamma[i][j];
+  bridge_theta[j][i] = bridge_theta[i][j];
+}
+
+polydem::BridgeLaw<double> PairPolydem::bridge_law(int i, int j) const
+{
+  polydem::BridgeLaw<double> b;
+  if (!(bridge_vol[i][j] > 0.0 && bridge_gamma[i][j] > 0.0)) return b;
+  const double theta = bridge_theta[i][j] * MY_PI / 180.0;
+  b.volume = bridge_vol[i][j];
+  b.gamma = bridge_gamma[i][j];
+  b.cos_theta = cos(theta);
+  b.rupture = (1.0 + 0.5 * theta) * cbrt(b.volume);
+  return b;
 }
 
 int PairPolydem::settings_rolling(int narg, char **arg, int iarg)
@@ -169,6 +230,10 @@ void PairPolydem::rolling_coeff_fields(RestartFields &io, int i, int j)
   if (!io.has_rolling()) return;
   io(rolling[i][j]);
   io(cohesion[i][j]);
+  if (!io.has_bridge()) return;
+  io(bridge_vol[i][j]);
+  io(bridge_gamma[i][j]);
+  io(bridge_theta[i][j]);
 }
 
 std::string PairPolydem::history_fix_id() const
@@ -275,7 +340,7 @@ void PairPolydem::RestartFields::flag_as_double(int &v)
 void PairPolydem::write_restart_settings(FILE *fp)
 {
   double version = RESTART_VERSION;
-  RestartFields io(this, fp, false, 3);
+  RestartFields io(this, fp, false, 4);
   io(version);
   settings_fields(io);
   rolling_settings_fields(io);
@@ -286,11 +351,12 @@ void PairPolydem::read_restart_settings(FILE *fp)
   double version = 0.0;
   RestartFields head(this, fp, true, 0);
   head(version);
-  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_ROLLING)
+  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_BRIDGE &&
+      version != RESTART_VERSION_NO_ROLLING)
     error->all(FLERR, "pair_style {}: this restart file was written by an older POLYDEM ({}); "
                "restart it with that version, or write a data file there and start from it",
                style_name, restart_version_text());
-  restart_format = version == RESTART_VERSION ? 3 : 2;
+  restart_format = version == RESTART_VERSION ? 4 : (version == RESTART_VERSION_NO_BRIDGE ? 3 : 2);
   RestartFields io(this, fp, true, restart_format);
   settings_fields(io);
   rolling_settings_fields(io);
@@ -299,7 +365,7 @@ void PairPolydem::read_restart_settings(FILE *fp)
 void PairPolydem::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
-  RestartFields io(this, fp, false, 3);
+  RestartFields io(this, fp, false, 4);
   coeff_fields(io);
 }
 

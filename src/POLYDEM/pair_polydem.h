@@ -11,6 +11,7 @@
 #define LMP_PAIR_POLYDEM_H
 
 #include "pair.h"
+#include "polydem_contact_law.h"
 #include "polydem_lammps_compat.h"
 
 #include <cstdio>
@@ -46,6 +47,8 @@ class PairPolydem : public Pair {
     void flag_as_double(int &v);    // a 0/1 flag stored as a double
     // the file has the rolling-resistance fields (written since format 3)
     bool has_rolling() const { return version >= 3; }
+    // ... and the liquid bridges' (since format 4)
+    bool has_bridge() const { return version >= 4; }
 
    private:
     PairPolydem *pair;
@@ -63,13 +66,16 @@ class PairPolydem : public Pair {
   int nhistory;               // values per pair (set in init_style: choose_history_size)
   int nhistory_contact;       // of them per contact (nhistory without part slots)
   int nhistory_restart;       // the restart file's (0: none read)
-  int restart_format;         // the restart file's format (2, 3) while it is read
+  int restart_format;         // the restart file's format (2, 3, 4) while it is read
   int nhistory_fix;           // values per pair of the history fix made (0: none yet)
   const int ncount;
   // rolling resistance (polydem_contact_law.h RollingLaw): mu_r per type
   // pair (pair_coeff ... rolling mu_r; 0: none), k_r factor, dashpot ratio;
   // dry cohesion per type pair (pair_coeff ... cohesion c; 0: none)
   double **rolling, **cohesion;
+  // liquid bridges per type pair (pair_coeff ... bridge V_b gamma theta;
+  // pair_style polyhedron): volume (0: none), surface tension, contact angle [deg]
+  double **bridge_vol, **bridge_gamma, **bridge_theta;
   double roll_kr, roll_eta;
   class PolyShapeLibrary *avec;
   class FixDummy *fix_dummy;
@@ -84,8 +90,11 @@ class PairPolydem : public Pair {
   virtual void allocate() = 0;
   void allocate_rolling();
   // pair_coeff's trailing keywords 'rolling mu_r' and 'cohesion c' (each
-  // default 0): the count of the values before them
-  int coeff_keywords(int narg, char **arg, double &mu_r, double &coh);
+  // default 0), and 'bridge V_b gamma theta' where bridge is given (else an
+  // error): the count of the values before them
+  int coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge = nullptr);
+  // the liquid bridge law of type pair (i, j) (volume 0: none; R set per contact)
+  polydem::BridgeLaw<double> bridge_law(int i, int j) const;
   // mixing of the keywords' values for an unlike pair without its own
   // (geometric means), and the symmetric copy
   void mix_keywords(int i, int j, bool own);

@@ -42,7 +42,7 @@ static constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // s, k_t, twist (
 
 PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
     PairPolydem(lmp, "polyhedron", "NEIGH_HISTORY_POLY", SIZE_HISTORY, NCOUNT), youngs(nullptr),
-    poisson(nullptr), matset(nullptr), restitution(nullptr), friction(nullptr), twist(0),
+    poisson(nullptr), matset(nullptr), restitution(nullptr), friction(nullptr), twist(1),
     pairset(nullptr), overlap_warn(0.05), core(1.0e-4), dt(0.0), contact_step(-1)
 {
   ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
@@ -97,7 +97,7 @@ void PairPolyhedron::settings(int narg, char **arg)
 {
   overlap_warn = 0.05;
   core = 1.0e-4;
-  twist = 0;
+  twist = 1;
   roll_kr = polydem::RollingLaw<double>().kr;
   roll_eta = polydem::RollingLaw<double>().eta;
   for (int iarg = 0; iarg < narg; iarg += 2) {
@@ -138,8 +138,8 @@ void PairPolyhedron::settings(int narg, char **arg)
 void PairPolyhedron::coeff(int nargs, char **arg)
 {
   if (!allocated) allocate();
-  double mu_r = 0.0, coh = 0.0;
-  const int narg = coeff_keywords(nargs, arg, mu_r, coh);
+  double mu_r = 0.0, coh = 0.0, bridge[3];
+  const int narg = coeff_keywords(nargs, arg, mu_r, coh, bridge);
   if (narg != 4 && narg != 6)
     error->all(FLERR, "pair_coeff polyhedron: expected 'I J E nu e mu' or 'I J e mu', got {} "
                "values", narg);
@@ -181,6 +181,9 @@ void PairPolyhedron::coeff(int nargs, char **arg)
       friction[i][j] = mu;
       rolling[i][j] = mu_r;
       cohesion[i][j] = coh;
+      bridge_vol[i][j] = bridge[0];
+      bridge_gamma[i][j] = bridge[1];
+      bridge_theta[i][j] = bridge[2];
       pairset[i][j] = 1;
       setflag[i][j] = 1;
       count++;
@@ -255,6 +258,7 @@ void PairPolyhedron::init_style()
   laws.overlap_warn = overlap_warn;
   laws.roll_kr = roll_kr;
   laws.roll_eta = roll_eta;
+  beyond_contact = 0;    // init_one: 1 with liquid bridges
   choose_history_size();
   laws.nhist = nhistory_contact;
   laws.nslot = history_slots();
@@ -299,9 +303,21 @@ double PairPolyhedron::init_one(int i, int j)
     e.damping = damp;
     e.mu_r = rolling[i][j];
     e.cohesion = cohesion[i][j];
+    e.bridge = bridge_law(i, j);
   };
   fill(i, j);
   fill(j, i);
+  // a bridged pair must stay in the neighbor list until it ruptures: it was
+  // within the skin at the last build if its gap is below s_c <= skin now
+  const double sc = law_entries[i * nt + j].bridge.rupture;
+  if (sc > neighbor->skin)
+    error->all(FLERR, "pair_coeff polyhedron {} {}: the liquid bridge ruptures at a gap of "
+               "s_c = (1 + theta/2) V_b^(1/3) = {:.6g}, beyond the neighbor skin {:.6g}: set "
+               "the skin to at least s_c (neighbor {:.6g} bin)", i, j, sc, neighbor->skin, sc);
+  laws.bridge_reach = std::max(laws.bridge_reach, sc);
+  // the history fix keeps the flags of listed pairs beyond contact (a
+  // bridge of separated spheres); LAMMPS's size list marks only overlapping ones
+  if (sc > 0.0) beyond_contact = 1;
 
   return size_cutoff();
 }
@@ -375,7 +391,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
       double *shear = &allshear[nhistory * jj];
       const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1],
                    delz = x[i][2] - x[j][2];
-      const double radsum = radius[i] + radius[j];
+      const double radsum = radius[i] + radius[j] + laws.bridge_reach;
       if (delx * delx + dely * dely + delz * delz >= radsum * radsum) {
         touch[jj] = 0;
         polydem::history_release(shear, nhistory);
@@ -392,7 +408,8 @@ void PairPolyhedron::compute(int eflag, int vflag)
       if (evflag)
         ev_tally_xyz(i, j, nlocal, newton_pair, c.cf.energy, 0.0, c.cf.F_A.x, c.cf.F_A.y,
                      c.cf.F_A.z, delx, dely, delz);
-      if (store && polydem::contact_owned(newton_pair, j < nlocal, tag[i], tag[j], x[i], x[j])) {
+      if (store && c.contact == 1 &&
+          polydem::contact_owned(newton_pair, j < nlocal, tag[i], tag[j], x[i], x[j])) {
         contact_data.resize(contact_data.size() + polydem::CR_NFIELD);
         polydem::fill_contact_record(&contact_data[contact_data.size() - polydem::CR_NFIELD],
                                      tag[i], tag[j], mask[i], mask[j], c.vmin, c.geo, c.cf);
@@ -444,7 +461,9 @@ void PairPolyhedron::report_counters()
                         "GJK non-convergences (overlap computed anyway)",
                         "overlaps beyond overlap/warn of the smaller particle volume",
                         "part contacts of composites beyond the pair's history slots (friction "
-                        "without history)"};
+                        "without history)",
+                        "contact-steps of grains that are not both spheres under a liquid bridge "
+                        "law (bridges act between spheres only; none there)"};
   PairPolydem::report_counters(what, polydem::PP_CONTACTS);
 }
 

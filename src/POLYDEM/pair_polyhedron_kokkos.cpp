@@ -65,6 +65,7 @@ template <class DeviceType> struct PolyCandidateFunctor {
   int nlocal, count_partners;
   int fill;     // 0: count the candidates (and release the others' history), 1: list them
   int nhist;    // history values per pair
+  double reach;    // liquid bridges' largest rupture distance (LawTable::bridge_reach)
 
   KOKKOS_INLINE_FUNCTION void operator()(const int ii) const
   {
@@ -76,7 +77,7 @@ template <class DeviceType> struct PolyCandidateFunctor {
     for (int jj = 0; jj < jnum; jj++) {
       const int j = neighbors(i, jj) & NEIGHMASK;
       const double delx = xi - x(j, 0), dely = yi - x(j, 1), delz = zi - x(j, 2);
-      const double radsum = ri + radius(j);
+      const double radsum = ri + radius(j) + reach;
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (!fill && count_partners) {
         Kokkos::atomic_increment(&npartner(i));
@@ -163,7 +164,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
     if (!c.contact) return;
     polydem_kk::scatter_contact(this->f, this->torque, i, j, newton_pair || j < nlocal, c.cf);
     const polydem::Vec3<double> &xi = A.shape.x, &xj = B.shape.x;
-    if (store_contacts) {
+    if (store_contacts && c.contact == 1) {
       const double pi[3] = {xi.x, xi.y, xi.z}, pj[3] = {xj.x, xj.y, xj.z};
       if (polydem::contact_owned(newton_pair, j < nlocal, this->tag(i), this->tag(j), pi, pj))
         polydem::fill_contact_record(&records(p, 0), this->tag(i), this->tag(j), this->mask(i), this->mask(j), c.vmin,
@@ -280,6 +281,9 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
   cnt.count = d_count;
   cnt.offset = d_offset;
   cnt.nhist = nhistory;
+  cnt.reach = laws.bridge_reach;
+  static_cast<polydem_kk::FixNeighHistoryPolyhedronKokkos<DeviceType> *>(fix_historyKK)->reach =
+      laws.bridge_reach;
   const int nlocal = atom->nlocal;
   cnt.count_partners = neighbor->ago == 0;
   if (cnt.count_partners)

@@ -65,6 +65,8 @@
    gives M = -k_r phi - g_r w_n (w_n = (w_A - w_B).n), capped by the Coulomb
    torque of a uniform pressure on the disk, mu F_n r_eff, r_eff = 2/3 a
    (a square face: the exact lever is 0.3826 L, the disk's 0.3761 L).
+   Pairs apply damping and friction at the centre of pressure
+   (pressure_centre), on the elastic force's line of action.
 
    Dry cohesion (pair_coeff ... cohesion c; fix wall/mesh cohesion): a pull
    that is the exact gradient of U = -c m, a constant subtracted from W'(m),
@@ -113,6 +115,7 @@ namespace polydem {
 
 using std::cbrt;
 using std::log;
+using std::atan;
 
 // ---------------------------------------------------------------------------
 // geometry -> law
@@ -124,6 +127,10 @@ template <typename T> struct ContactGeometry {
   Vec3<T> centroid;     // contact point
   Vec3<T> S_A, M_A, M_B;    // dm/dx_A, dm/dtheta_A, dm/dtheta_B (dm/dx_B = -S_A)
   int gradient_damping = 0;    // 1: Rayleigh dashpot along grad m; 0: at the point along n
+  // liquid bridge: 1 if gap is the surfaces' separation along n (two
+  // spheres: |x_B - x_A| - r_A - r_B, negative in overlap); 0: unknown
+  int has_gap = 0;
+  T gap = T(0);
 };
 
 // The fields of an overlap result (polydem_overlap.h OverlapResult).
@@ -140,6 +147,30 @@ POLYDEM_FN ContactGeometry<T> contact_geometry(const Overlap &ov)
   g.M_B = ov.M_B;
   g.gradient_damping = 0;
   return g;
+}
+
+// The centre of pressure of an overlap-volume contact: the point of the line
+// of action of the elastic force (-W' S_A on A, moment -W' M_A about x_A, so
+// the line is x_A + S_A x M_A / |S_A|^2 + t S_A) nearest the overlap's
+// centroid. Damping and friction act there, in line with the elastic force.
+// For a face lying flat on another it is the centroid of the contact face,
+// which stays put when the faces tilt by a hair; the centroid of the thin
+// overlap wedge moves by a good part of the face for a tilt of 1e-8 rad (the
+// wedge's thickness changes sign across the face), and friction applied
+// there tipped spinning cubes onto an edge. Two spheres (M_A = 0): the line
+// of centres. The volume centroid if S_A = 0, or if the point is farther from
+// it than sqrt(A_n): where S_A nearly cancels (an overlap around both sides
+// of a thin piece) the line is ill-conditioned, and a point far outside the
+// overlap would put friction on a long lever.
+template <typename T>
+POLYDEM_FN Vec3<T> pressure_centre(const Vec3<T> &S_A, const Vec3<T> &M_A, const Vec3<T> &xA,
+                                   const Vec3<T> &centroid)
+{
+  const T s2 = norm2(S_A);
+  if (!(s2 > T(0))) return centroid;
+  const Vec3<T> p = xA + (T(1) / s2) * cross(S_A, M_A);
+  const Vec3<T> c = p + (dot(centroid - p, S_A) / s2) * S_A;
+  return norm2(c - centroid) <= sqrt(s2) ? c : centroid;
 }
 
 // ---------------------------------------------------------------------------
@@ -234,6 +265,15 @@ template <typename T> struct RollingLaw {
   T eta = T(0.3);   // dashpot C_r = 2 eta sqrt(I_r k_r) (Eq. 17)
 };
 
+// liquid bridge (Willett et al. 2000), between spheres; volume = 0: none
+template <typename T> struct BridgeLaw {
+  T volume = T(0);       // liquid volume of the bridge V_b [L^3]
+  T gamma = T(0);        // surface tension [force/length]
+  T cos_theta = T(1);    // cosine of the contact angle
+  T rupture = T(0);      // rupture separation s_c = (1 + theta/2) V_b^(1/3)
+  T R = T(0);            // the pair's radius 2 r_A r_B / (r_A + r_B) (set per contact)
+};
+
 template <typename T> struct ContactLaw {
   NormalLaw<T> normal;
   DampingLaw<T> damping;
@@ -243,6 +283,7 @@ template <typename T> struct ContactLaw {
   // U = -k_c V; linear, the surface energy Gamma [energy/area] of DMT,
   // U = -2 pi Gamma R_r delta
   T cohesion = T(0);
+  BridgeLaw<T> bridge;
 };
 
 // ---------------------------------------------------------------------------
@@ -367,6 +408,48 @@ POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<
   return Mt;
 }
 
+// Liquid bridge between two spheres (Willett, Adams, Johnson and Seville,
+// Langmuir 16 (2000) 9396, the closed form of their Eq. 13 with the full
+// separation s): F(s) = 2 pi R gamma cos(theta) / (1 + 1.05 s^ + 2.5 s^2),
+// s^ = s sqrt(R / V_b), R = 2 r_A r_B / (r_A + r_B) (Derjaguin's mean radius
+// for unequal spheres); F(s <= 0) = F(0). The bridge forms when the spheres
+// touch and ruptures at s_c = (1 + theta/2) V_b^(1/3) (Lian, Thornton and
+// Adams, J. Colloid Interface Sci. 161 (1993) 138). Its energy is
+// U(s) = -int_s^s_c F ds' (arctan closed form; U(s < 0) = U(0) + F(0) s),
+// so that the pull F n on A is -dU/dx_A; the U(0) it has on forming is
+// what a rupture dissipates.
+template <typename T> POLYDEM_FN T bridge_force(const BridgeLaw<T> &b, T s)
+{
+  const T k = sqrt(b.R / b.volume);
+  const T u = s > T(0) ? s * k : T(0);
+  return T(2) * T(3.14159265358979323846) * b.R * b.gamma * b.cos_theta /
+      (T(1) + T(1.05) * u + T(2.5) * u * u);
+}
+template <typename T> POLYDEM_FN T bridge_energy(const BridgeLaw<T> &b, T s)
+{
+  // int du / (1 + a u + c u^2) = 2 / w atan((2 c u + a) / w), w = sqrt(4c - a^2)
+  const T a = T(1.05), c = T(2.5), w = sqrt(T(4) * c - a * a);
+  const T k = sqrt(b.R / b.volume);
+  const T F0 = T(2) * T(3.14159265358979323846) * b.R * b.gamma * b.cos_theta;
+  const T u = s > T(0) ? s * k : T(0), uc = b.rupture * k;
+  const T U = -F0 / k * (T(2) / w) *
+      (atan((T(2) * c * uc + a) / w) - atan((T(2) * c * u + a) / w));
+  return s < T(0) ? U + F0 * s : U;
+}
+
+// the bridge's pull on A along n at the contact point (g.has_gap), added to
+// a contact's forces and energy
+template <typename T, typename Out>
+POLYDEM_FN void add_bridge(const ContactGeometry<T> &g, const BridgeLaw<T> &b,
+                           const ContactKinematics<T> &kin, Out &out)
+{
+  const Vec3<T> F = bridge_force(b, g.gap) * g.normal;
+  out.F_A += F;
+  out.tau_A += cross(g.centroid - kin.xA, F);
+  out.tau_B -= cross(g.centroid - kin.xB, F);
+  out.energy += bridge_energy(b, g.gap);
+}
+
 // Forces of one contact. hist: the contact's history, nhist values in use
 // (3: s only; 4: + k_old; 5: + phi; 8: + M_k of rolling), updated in place
 // (the caller keeps it or not, e.g. at setup).
@@ -416,6 +499,7 @@ POLYDEM_FORCE_FN ContactForce<T> contact_step(const ContactGeometry<T> &g,
     out.fn = law.normal.kind == NORMAL_FENG ? nv.Wp * g.area + gn * vn : -dot(out.F_A, n);
   }
   out.ft = T(0);
+  if (law.bridge.volume > T(0) && g.has_gap) add_bridge(g, law.bridge, kin, out);
 
   // rolling resistance (EPSD)
   if (nhist >= HIST_ROLL + 3) {

@@ -132,6 +132,13 @@ template <typename T> struct PolyhedronBody : BodyMotion<T> {
 };
 
 
+// the radius of a posed sphere (an ellipsoid template of equal semi-axes), 0 otherwise
+template <typename T> POLYDEM_FN T posed_sphere_radius(const PosedShape<T> &A)
+{
+  const T *a = A.view->axes;
+  return view_is_ellipsoid(*A.view) && a[0] == a[1] && a[0] == a[2] ? A.s * a[0] : T(0);
+}
+
 // The overlap of a pair of which at least one is an ellipsoid template
 // (view_is_ellipsoid): a polyhedron and an ellipsoid (either order), two
 // spheres; two ellipsoids of which one has unequal semi-axes are
@@ -142,8 +149,8 @@ POLYDEM_FN OverlapResult<T> mixed_pair_overlap(const PosedShape<T> &A, const Pos
   const T *aa = A.view->axes, *ab = B.view->axes;
   const bool ea = view_is_ellipsoid(*A.view), eb = view_is_ellipsoid(*B.view);
   if (ea && eb) {
-    if (aa[0] == aa[1] && aa[0] == aa[2] && ab[0] == ab[1] && ab[0] == ab[2])
-      return sphere_pair_overlap(A.x, A.s * aa[0], B.x, B.s * ab[0]);
+    const T ra = posed_sphere_radius(A), rb = posed_sphere_radius(B);
+    if (ra > T(0) && rb > T(0)) return sphere_pair_overlap(A.x, ra, B.x, rb);
     OverlapResult<T> r = ellipsoid_overlap_detail::no_overlap<T>();
     r.status = STATUS_UNSUPPORTED;
     return r;
@@ -201,17 +208,65 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   r.vmin = Vi < Vj ? Vi : Vj;
   if (ov.volume > tab.overlap_warn * r.vmin) count[PP_BIGOVERLAP] += C(1);
 
-  const ContactLaw<T> law = polyhedron_pair_law(tab, A.type, B.type, Vi, Vj);
+  ContactLaw<T> law = polyhedron_pair_law(tab, A.type, B.type, Vi, Vj);
   const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
                                                    A.m * B.m / (A.m + B.m), update ? dt : T(0),
                                                    A.m, B.m);
   r.geo = contact_geometry<T>(ov);
+  r.geo.centroid = pressure_centre(ov.S_A, ov.M_A, a.x, ov.centroid);
+  if (law.bridge.volume > T(0)) {
+    // liquid bridge: between spheres, the gap along the line of centres
+    const T ra = posed_sphere_radius(a), rb = posed_sphere_radius(b);
+    if (ra > T(0) && rb > T(0)) {
+      law.bridge.R = T(2) * ra * rb / (ra + rb);
+      r.geo.has_gap = 1;
+      r.geo.gap = norm(b.x - a.x) - ra - rb;
+    } else
+      count[PP_NOBRIDGE] += C(1);
+  }
   // dV/dtheta about the bodies' centres (Feng's Eq. 9 torques): rotating a
   // part about its body's centre also moves it by theta x (x_part - x_body)
   r.geo.M_A += cross(a.x - A.shape.x, ov.S_A);
   r.geo.M_B -= cross(b.x - B.shape.x, ov.S_A);
   r.cf = pair_contact_step(r.geo, law, kin, h, tab.nhist,
                            T(contact_history_sign(A.tag, B.tag)), update);
+  return r;
+}
+
+// Two separated spheres a, b whose liquid bridge formed when they touched
+// (the pair's touch flag): the bridge's pull while the gap is below its
+// rupture distance (contact = 2: no overlap, the pair stays flagged), else
+// none (contact = 0: ruptured). The history (friction, rolling) is cleared.
+template <typename T>
+POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                                               const PosedShape<T> &a, const PosedShape<T> &b,
+                                               const LawTable<T> &tab)
+{
+  PairContactResult<T> r;
+  r.contact = 0;
+  const LawEntry<T> &e = tab.pair(A.type, B.type);
+  const T ra = posed_sphere_radius(a), rb = posed_sphere_radius(b);
+  if (!(e.bridge.volume > T(0)) || !(ra > T(0) && rb > T(0))) return r;
+  const Vec3<T> d = b.x - a.x;
+  const T dist = norm(d);
+  const T gap = dist - ra - rb;
+  if (!(gap < e.bridge.rupture) || !(dist > T(0))) return r;
+  r.contact = 2;
+  BridgeLaw<T> law = e.bridge;
+  law.R = T(2) * ra * rb / (ra + rb);
+  ContactGeometry<T> g{};
+  g.normal = (T(1) / dist) * d;
+  g.centroid = a.x + (ra + T(0.5) * gap) * g.normal;    // mid-gap on the line of centres
+  g.has_gap = 1;
+  g.gap = gap;
+  r.geo = g;
+  const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
+                                                   A.m * B.m / (A.m + B.m), T(0), A.m, B.m);
+  r.cf = ContactForce<T>{};
+  add_bridge(g, law, kin, r.cf);
+  const T si = a.s, sj = b.s;
+  const T Vi = a.view->volume * si * si * si, Vj = b.view->volume * sj * sj * sj;
+  r.vmin = Vi < Vj ? Vi : Vj;
   return r;
 }
 
@@ -317,6 +372,8 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     history_release(hist, tab.nhist);
     PairContactResult<T> r;
     r.contact = 0;
+    if (touching && tab.bridge_reach > T(0) && ov.status == STATUS_SEPARATED)
+      r = bridge_contact(A, B, a, b, tab);
     return r;
   }
   return convex_contact_step(A, B, a, b, ov, tab, dt, update, hist, count);

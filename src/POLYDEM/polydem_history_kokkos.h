@@ -9,8 +9,11 @@
 #define POLYDEM_HISTORY_KOKKOS_H
 
 #include "atom.h"
+#include "atom_kokkos.h"
+#include "atom_masks.h"
 #include "fix_neigh_history_kokkos.h"
 #include "modify.h"
+#include "neigh_list_kokkos.h"
 #include "polydem_history.h"
 
 #include <mpi.h>
@@ -43,6 +46,31 @@ template <class DeviceType> struct HistoryMaxFunctor {
   }
 #endif
   KOKKOS_INLINE_FUNCTION void init(int &m) const { m = 0; }
+};
+
+// Marks the pairs of a size neighbor list within their bounding radii plus
+// reach as history pairs (the bits LAMMPS's size lists set within the radii
+// alone), so that FixNeighHistoryKokkos keeps their flags and values: the
+// liquid bridges of separated spheres (its beyond_contact switch is newer
+// than some LAMMPS versions supported).
+template <class DeviceType> struct BridgeReachMarkFunctor {
+  typedef DeviceType device_type;
+  typename ArrayTypes<DeviceType>::t_neighbors_2d neighbors;
+  typename ArrayTypes<DeviceType>::t_int_1d ilist, numneigh;
+  typename ArrayTypes<DeviceType>::t_x_array x;
+  typename ArrayTypes<DeviceType>::t_float_1d radius;
+  double reach;
+  KOKKOS_INLINE_FUNCTION void operator()(const int ii) const
+  {
+    const int i = ilist(ii);
+    const int n = numneigh(i);
+    for (int jj = 0; jj < n; jj++) {
+      const int j = neighbors(i, jj) & NEIGHMASK;
+      const double dx = x(i, 0) - x(j, 0), dy = x(i, 1) - x(j, 1), dz = x(i, 2) - x(j, 2);
+      const double rs = radius(i) + radius(j) + reach;
+      if (dx * dx + dy * dy + dz * dz < rs * rs) neighbors(i, jj) = j | (3 << SBBITS);
+    }
+  }
 };
 
 // The partner DualViews of a FixNeighHistoryKokkos (private there): defined
@@ -104,8 +132,23 @@ class FixNeighHistoryPolyhedronKokkos :
     v.npartner->template sync<DeviceType>();
     v.partner->template sync<DeviceType>();
     v.valuepartner->template sync<DeviceType>();
+    if (reach > 0.0) {
+      auto *list = static_cast<NeighListKokkos<DeviceType> *>(this->pair->list);
+      AtomKokkos *akk = (AtomKokkos *) this->atom;
+      akk->sync(ExecutionSpaceFromDevice<DeviceType>::space, X_MASK | RADIUS_MASK);
+      BridgeReachMarkFunctor<DeviceType> m;
+      m.neighbors = list->d_neighbors;
+      m.ilist = list->d_ilist;
+      m.numneigh = list->d_numneigh;
+      m.x = akk->k_x.template view<DeviceType>();
+      m.radius = akk->k_radius.template view<DeviceType>();
+      m.reach = reach;
+      Kokkos::parallel_for(list->inum, m);
+    }
     FixNeighHistoryKokkos<DeviceType>::post_neighbor();
   }
+  // the pair style's largest liquid-bridge rupture distance (0: none)
+  double reach = 0.0;
   // DualView::resize keeps the side marked newer. After the base's sync both
   // are equal, so it keeps the device rows with a fresh host copy, which the
   // base then marks modified. Mark the synced host newer first, so that the

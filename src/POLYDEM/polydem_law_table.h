@@ -27,6 +27,7 @@ template <typename T> struct LawEntry {
   DampingLaw<T> damping;    // restitution as a damping law (damping_law of e, host)
   T mu_r;                   // rolling friction (0: no rolling resistance)
   T cohesion;               // dry cohesion (ContactLaw::cohesion; 0: none)
+  BridgeLaw<T> bridge;      // liquid bridge between spheres (volume 0: none; R unset)
 };
 
 template <typename T> struct LawTable {
@@ -48,6 +49,9 @@ template <typename T> struct LawTable {
   // (OVERLAP_CENTRE/CHORD); mass of the dashpot (DAMPING_REDUCED/CONTACT)
   T kt_ratio, gt_ratio;
   int overlap, damping_mass;
+  // the largest rupture distance of a liquid bridge (0: no bridges); pairs
+  // are candidates within their bounding radii plus this
+  T bridge_reach;
   // counted as large overlaps: pairs beyond overlap_warn x the smaller
   // polyhedron volume / the smallest ellipsoid semi-axis
   T overlap_warn;
@@ -86,6 +90,7 @@ template <typename T> inline LawTable<T> law_table(const LawEntry<T> *entry, int
   t.overlap_warn = T(1);
   t.nhist = CONTACT_HIST;
   t.nslot = 0;
+  t.bridge_reach = T(0);
   const RollingLaw<T> r;
   t.roll_kr = r.kr;
   t.roll_eta = r.eta;
@@ -100,6 +105,7 @@ POLYDEM_FN ContactLaw<T> with_rolling(ContactLaw<T> L, const LawTable<T> &tab, c
   L.rolling.kr = tab.roll_kr;
   L.rolling.eta = tab.roll_eta;
   L.cohesion = e.cohesion;
+  L.bridge = e.bridge;
   return L;
 }
 

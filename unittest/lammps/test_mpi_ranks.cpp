@@ -202,3 +202,12 @@ TEST(MpiRanks, CompositesOneVsTwoRanksAgree)
                        "polyhedron_set group third shape dumb scale 0.6"});
 }
 
+
+// all particles spheres joined by liquid bridges (pair_coeff ... bridge): the
+// bridges' touch flags migrate with the atoms and cross the subdomain boundary
+TEST(MpiRanks, LiquidBridgesOneVsTwoRanksAgree)
+{
+  contacts_one_vs_two({"polyhedron_shape ball ellipsoid 0.8 0.8 0.8",
+                       "polyhedron_set group all shape ball",
+                       "pair_coeff * * 1.0e4 0.3 0.8 0.5 bridge 0.008 20 10"});
+}

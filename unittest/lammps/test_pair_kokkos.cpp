@@ -266,7 +266,7 @@ TEST(PairKokkos, CompositesMatchPlain)
   Lmp plain, kk(KK);
   for (Lmp *l : {&plain, &kk}) {
     l->cmds(setup());
-    l->cmds({"polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+    l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
              "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 quat 0.92 "
              "0.38 0 0 part ball 0 1.3 0",
              "polyhedron_set group g1 shape dumb scale 0.4 density 1.0"});
@@ -278,6 +278,60 @@ TEST(PairKokkos, CompositesMatchPlain)
   const double *cnt = (const double *) plain.lmp->force->pair->extract("counters", dim);
   ASSERT_NE(cnt, nullptr);
   EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
+}
+
+// all grains spheres joined by liquid bridges: the bridged pairs that no
+// longer overlap are kept by their touch flags alike in both styles
+TEST(PairKokkos, LiquidBridgesMatchPlain)
+{
+  Lmp plain, kk(KK), dry;
+  for (Lmp *l : {&plain, &kk, &dry}) {
+    l->cmds(setup());
+    l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
+             "polyhedron_set group all shape ball density 1.0", "neighbor 0.15 bin"});
+  }
+  for (Lmp *l : {&plain, &kk}) l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10");
+  plain.cmd("run 100");
+  kk.cmd("run 100");
+  dry.cmd("run 100");
+  compare(plain, kk, "liquid bridges, run 100", true);
+  // the bridges act: the run differs from the one without
+  EXPECT_NE(plain.thermo("pe"), dry.thermo("pe"));
+}
+
+// two spheres collide, form a liquid bridge, separate with it stretched
+// (no overlap: the pair is kept by its touch flag, which the history fix
+// keeps over a reneighboring beyond the size list's reach) and rupture it:
+// /kk equals plain bit for bit at every stage
+TEST(PairKokkos, LiquidBridgeFormsStretchesAndRupturesAlike)
+{
+  Lmp plain, kk(KK);
+  for (Lmp *l : {&plain, &kk})
+    l->cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+             "newton off", "comm_modify vel yes",
+             "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01", "create_box 1 box",
+             "polyhedron_shape s1 ellipsoid 0.001 0.001 0.001",
+             "polyhedron_shape s2 ellipsoid 0.0015 0.0015 0.0015", "create_atoms 1 single 0 0 0",
+             "create_atoms 1 single 0.00255 0 0", "polyhedron_set atom 1 shape s1",
+             "polyhedron_set atom 2 shape s2", "polyhedron_set group all density 2500",
+             "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.7 0.3 bridge 1e-11 0.072 20",
+             "neighbor 3e-4 bin", "neigh_modify every 1 delay 0 check no",
+             "velocity all set 0 0 0", "set atom 1 vx 0.1 vy 0.01", "set atom 2 vx -0.05",
+             "fix 1 all nve/polyhedron", "timestep 1e-7", "run 0"});
+  int stretched = 0;
+  for (int k = 0; k < 40; k++) {
+    plain.cmd("run 500 pre no post no");
+    kk.cmd("run 500 pre no post no");
+    auto *a = plain.lmp->atom;
+    const double gap = a->x[a->map(2)][0] - a->x[a->map(1)][0] - 0.0025;
+    if (gap > 0.0 && a->f[a->map(1)][0] > 0.0) stretched++;
+    for (int id : {1, 2})
+      for (int d = 0; d < 3; d++) {
+        ASSERT_EQ(kk.lmp->atom->x[kk.lmp->atom->map(id)][d], a->x[a->map(id)][d]) << k;
+        ASSERT_EQ(kk.lmp->atom->v[kk.lmp->atom->map(id)][d], a->v[a->map(id)][d]) << k;
+      }
+  }
+  EXPECT_GT(stretched, 0) << "the bridge must act across a gap";
 }
 
 // the same style run as /kk/host must give the same numbers

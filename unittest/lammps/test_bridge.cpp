@@ -1,0 +1,220 @@
+// Liquid bridges between spheres (pair_coeff ... bridge V_b gamma theta;
+// polydem_contact_law.h bridge_force): two spheres of radii 1 and 1.5 mm
+// joined by V_b = 1e-11 m^3 of water (gamma = 0.072 N/m, theta = 20 deg).
+//  - the force on each sphere at gaps 0 .. s_c is Willett et al.'s closed
+//    form, F = 2 pi R gamma cos(theta) / (1 + 1.05 s^ + 2.5 s^^2),
+//    s^ = s sqrt(R / V_b), R = 2 r1 r2 / (r1 + r2), to 1e-12 (relative);
+//  - the pair energy is -int_s^s_c F ds' (numerical quadrature here, against
+//    the law's arctan form) to 1e-9;
+//  - beyond s_c = (1 + theta/2) V_b^(1/3) the bridge is gone and does not
+//    form again until the spheres touch (Lian et al. 1993);
+//  - an elastic collision that forms and ruptures a bridge conserves
+//    kinetic + pair energy from the bridge's formation on (2e-6) and loses
+//    the bridge's energy at contact, |U(0)|, up to F(0) v dt;
+//  - a stretched bridge continues bit for bit after write_restart /
+//    read_restart;
+//  - errors: pair_style ellipsoid, a skin below s_c, a bad angle.
+#include "polydem_lmp.h"
+
+#include "atom.h"
+#include "force.h"
+#include "pair.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using polydem_test::Lmp;
+using polydem_test::num;
+
+namespace {
+
+constexpr double R1 = 1e-3, R2 = 1.5e-3, VB = 1e-11, GAMMA = 0.072, THETA_DEG = 20.0;
+const double THETA = THETA_DEG * M_PI / 180.0;
+const double RSTAR = 2.0 * R1 * R2 / (R1 + R2);
+const double SC = (1.0 + 0.5 * THETA) * std::cbrt(VB);
+
+double willett(double s)
+{
+  const double u = (s > 0.0 ? s : 0.0) * std::sqrt(RSTAR / VB);
+  return 2.0 * M_PI * RSTAR * GAMMA * std::cos(THETA) / (1.0 + 1.05 * u + 2.5 * u * u);
+}
+
+// -int_s^s_c F ds' by Simpson's rule
+double willett_energy(double s)
+{
+  const int n = 20000;
+  const double h = (SC - s) / n;
+  double sum = willett(s) + willett(SC);
+  for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett(s + k * h);
+  return -sum * h / 3.0;
+}
+
+const std::string BRIDGE =
+    " bridge " + num(VB) + " " + num(GAMMA) + " " + num(THETA_DEG);
+
+// two spheres on the x axis, the second at x2, the bridge law on type 1
+void two_spheres(Lmp &l, double x2, double e, const std::string &skin = "3e-4")
+{
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01",
+          "create_box 1 box", "polyhedron_shape s1 ellipsoid " + num(R1) + " " + num(R1) + " " +
+              num(R1),
+          "polyhedron_shape s2 ellipsoid " + num(R2) + " " + num(R2) + " " + num(R2),
+          "create_atoms 1 single 0 0 0", "create_atoms 1 single " + num(x2) + " 0 0",
+          "polyhedron_set atom 1 shape s1", "polyhedron_set atom 2 shape s2",
+          "polyhedron_set group all density 2500", "pair_style polyhedron",
+          "pair_coeff * * 1e7 0.3 " + num(e) + " 0.0" + BRIDGE, "neighbor " + skin + " bin",
+          "thermo_style custom step pe ke", "thermo_modify norm no"});
+}
+
+double force_x(Lmp &l, int id)
+{
+  return l.lmp->atom->f[l.lmp->atom->map(id)][0];
+}
+
+}    // namespace
+
+TEST(Bridge, ForceAndEnergyFollowWillettsClosedForm)
+{
+  Lmp l;
+  two_spheres(l, R1 + R2 - 1e-9, 1.0);
+  l.cmd("run 0");    // touching: the bridge forms
+  int nchecked = 0;
+  for (double f : {0.0, 0.01, 0.05, 0.1, 0.2, 0.4, 0.6, 0.8, 0.95, 0.999}) {
+    const double s = f * SC;
+    l.cmd("set atom 2 x " + num(R1 + R2 + s));
+    l.cmd("run 0");
+    const double F1 = force_x(l, 1), F2 = force_x(l, 2);
+    const double U = l.lmp->force->pair->eng_vdwl;
+    const double Fw = willett(s), Uw = willett_energy(s);
+    std::printf("[ bridge   ] s/s_c %.3f: F %.9e N (Willett %.9e), U %.9e J (quadrature %.9e)\n",
+                f, F1, Fw, U, Uw);
+    EXPECT_NEAR(F1, Fw, 1e-12 * Fw) << f;
+    EXPECT_NEAR(F2, -Fw, 1e-12 * Fw) << f;
+    if (f < 0.999) EXPECT_NEAR(U, Uw, 1e-9 * std::fabs(willett_energy(0.0))) << f;
+    nchecked++;
+  }
+  EXPECT_EQ(nchecked, 10);
+  // ruptured beyond s_c, and not formed again on the way back without touching
+  for (double f : {1.001, 0.5, 0.01}) {
+    l.cmd("set atom 2 x " + num(R1 + R2 + f * SC));
+    l.cmd("run 0");
+    EXPECT_EQ(force_x(l, 1), 0.0) << f;
+    EXPECT_EQ(l.lmp->force->pair->eng_vdwl, 0.0) << f;
+  }
+  // touching again forms it again
+  l.cmd("set atom 2 x " + num(R1 + R2 - 1e-8));
+  l.cmd("run 0");
+  l.cmd("set atom 2 x " + num(R1 + R2 + 0.3 * SC));
+  l.cmd("run 0");
+  EXPECT_NEAR(force_x(l, 1), willett(0.3 * SC), 1e-12 * willett(0.3 * SC));
+}
+
+// An elastic head-on collision (e = 1, no friction): the bridge forms at
+// contact with the energy U < 0 and ruptures at s_c with U = 0. From the
+// step it forms to long after it ruptured, kinetic + pair energy is
+// constant (to 2e-6 of the kinetic energy); the spheres leave with the
+// kinetic energy they came with less |U(0)|, up to the work of the pull
+// over the one step in which the bridge appears (F(0) v dt).
+TEST(Bridge, CollisionLosesTheBridgeEnergy)
+{
+  Lmp l;
+  const double v = 0.15, dt = 1e-7;
+  two_spheres(l, R1 + R2 + 5e-5, 1.0);
+  l.cmds({"velocity all set 0 0 0", "set atom 1 vx " + num(v), "set atom 2 vx " + num(-v),
+          "fix 1 all nve/polyhedron", "timestep " + num(dt), "thermo 100", "run 0"});
+  auto *a = l.lmp->atom;
+  auto kinetic = [&]() {
+    double k = 0.0;
+    for (int id : {1, 2}) {
+      const int i = a->map(id);
+      k += 0.5 * a->rmass[i] * (a->v[i][0] * a->v[i][0] + a->v[i][1] * a->v[i][1] +
+                                 a->v[i][2] * a->v[i][2]);
+    }
+    return k;
+  };
+  const double K0 = kinetic();
+  const double U0 = willett_energy(0.0);
+  double gap = 0.0, E_formed = 0.0, dev = 0.0;
+  bool formed = false;
+  for (int k = 0; k < 1000; k++) {
+    l.cmd("run 100 pre no post no");
+    const double E = kinetic() + l.lmp->force->pair->eng_vdwl;
+    if (!formed && l.lmp->force->pair->eng_vdwl < 0.0) {
+      formed = true;
+      E_formed = E;
+    }
+    if (formed) dev = std::fmax(dev, std::fabs(E - E_formed));
+    gap = a->x[a->map(2)][0] - a->x[a->map(1)][0] - R1 - R2;
+    if (gap > 1.2 * SC) break;
+  }
+  ASSERT_TRUE(formed);
+  ASSERT_GT(gap, SC) << "the spheres did not separate";
+  const double K1 = kinetic();
+  std::printf("[ bridge   ] collision: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, |U(0)| %.9e J "
+              "(ratio %.8f); energy from formation on constant to %.3g J\n", K0, K1, K0 - K1,
+              -U0, (K0 - K1) / -U0, dev);
+  EXPECT_LE(dev, 2e-6 * K0);
+  EXPECT_NEAR(K1, E_formed, 2e-6 * K0);
+  EXPECT_NEAR(K0 - K1, -U0, willett(0.0) * 2.0 * v * dt);
+}
+
+// A stretched bridge (separated spheres, the pair kept by its touch flag)
+// continues bit for bit after a restart
+TEST(Bridge, StretchedBridgeRestartsExactly)
+{
+  const std::string file = ::testing::TempDir() + "polydem_bridge_restart.bin";
+  double ref[2], got[2];
+  {
+    Lmp l;
+    two_spheres(l, R1 + R2 + 5e-5, 0.7);
+    l.cmds({"velocity all set 0 0 0", "set atom 1 vx 0.1", "set atom 2 vx -0.05",
+            "fix 1 all nve/polyhedron", "timestep 1e-7", "run 6000"});
+    auto *a = l.lmp->atom;
+    const double gap = a->x[a->map(2)][0] - a->x[a->map(1)][0] - R1 - R2;
+    std::printf("[ bridge   ] gap at the restart %.4g m (s_c %.4g m)\n", gap, SC);
+    EXPECT_GT(gap, 0.0);
+    EXPECT_LT(gap, SC);
+    EXPECT_NE(force_x(l, 1), 0.0);
+    l.cmds({"write_restart " + file, "run 3000"});
+    ref[0] = a->x[a->map(1)][0];
+    ref[1] = a->v[a->map(2)][0];
+  }
+  Lmp l;
+  l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 3e-4 bin",
+          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
+  auto *a = l.lmp->atom;
+  got[0] = a->x[a->map(1)][0];
+  got[1] = a->v[a->map(2)][0];
+  EXPECT_EQ(got[0], ref[0]);
+  EXPECT_EQ(got[1], ref[1]);
+}
+
+TEST(Bridge, Errors)
+{
+  {
+    Lmp l;
+    two_spheres(l, 0.005, 1.0, "1e-4");
+    const std::string e = l.error_of("run 0");
+    EXPECT_NE(e.find("beyond the neighbor skin"), std::string::npos) << e;
+  }
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
+          "create_box 1 box", "pair_style polyhedron"});
+  auto has = [&](const std::string &cmd, const std::string &what) {
+    const std::string e = l.error_of(cmd);
+    EXPECT_NE(e.find(what), std::string::npos) << cmd << " -> " << e;
+  };
+  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07", "needs three values");
+  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07 95", "contact angle theta must be in [0, 90)");
+  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 0 0.07 10", "liquid volume V_b must be > 0");
+  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 -1 10", "surface tension gamma must be > 0");
+  Lmp e;
+  e.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
+          "create_box 1 box", "pair_style ellipsoid"});
+  const std::string m = e.error_of("pair_coeff * * 1e4 0.9 0.5 bridge 1e-11 0.07 10");
+  EXPECT_NE(m.find("part of pair_style polyhedron"), std::string::npos) << m;
+}
