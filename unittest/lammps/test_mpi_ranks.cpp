@@ -27,9 +27,12 @@ namespace {
 // would number atoms or sum momenta per rank).
 std::string write_data(int n)
 {
-  const std::string file = ::testing::TempDir() + "polydem_mpi.data";
-  int me;
+  // one file per rank count: ctest runs the 2- and 4-rank tests side by side
+  int me, nprocs;
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  const std::string file =
+      ::testing::TempDir() + "polydem_mpi_" + std::to_string(nprocs) + "ranks.data";
   if (me == 0) {
     std::mt19937_64 rng(20261122);
     std::uniform_real_distribution<double> u(0.0, 1.0), g(-1.0, 1.0);
