@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""Angle of repose of the wet heap example from the final positions
+(heap_<Bo>.txt of in.heap), and the picture wet_heap.png.
+    /usr/bin/python3 analyze.py [Bo ...]
+The heap's surface: the highest sphere top (z + r) in radial rings 1 mm wide
+about the heap's axis (its grains' mean x, y), measured from the top of the
+rough floor (the fixed spheres' tops, z = 2.1 mm); the angle of repose is
+that of a straight line through the surface between 15 % and 85 % of the
+heap's height (atan of minus its slope). Prints a table and writes
+wet_heap.png."""
+import math
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+ZBASE = 0.0021    # top of the fixed spheres of the floor
+
+
+def load(path):
+    rows = []
+    with open(path) as f:
+        items = None
+        for line in f:
+            if line.startswith("ITEM: ATOMS"):
+                items = line.split()[2:]
+                continue
+            if items and line.strip():
+                rows.append([float(x) for x in line.split()])
+    a = np.array(rows)
+    return {k: a[:, i] for i, k in enumerate(items)}
+
+
+def surface(d, width=0.001, zbase=ZBASE):
+    """the heap's surface h(r) in rings of 'width' above the floor's top zbase"""
+    cx, cy = d["x"].mean(), d["y"].mean()
+    rr = np.hypot(d["x"] - cx, d["y"] - cy)
+    top = d["z"] + d["radius"] - zbase
+    nb = int(rr.max() / width) + 1
+    r = (np.arange(nb) + 0.5) * width
+    h = np.array([top[(rr >= k * width) & (rr < (k + 1) * width)].max()
+                  if np.any((rr >= k * width) & (rr < (k + 1) * width)) else np.nan for k in range(nb)])
+    return r, h, rr, top
+
+
+def angle(r, h):
+    H = np.nanmax(h)
+    sel = np.isfinite(h) & (h > 0.15 * H) & (h < 0.85 * H)
+    slope, icpt = np.polyfit(r[sel], h[sel], 1)
+    return math.degrees(math.atan(-slope)), slope, icpt, sel, H
+
+
+def main():
+    bos = sys.argv[1:] if len(sys.argv) > 1 else ["0", "1", "3", "10"]
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
+    print("| Bo | heap height (mm) | radius of the foot (mm) | angle of repose (deg) |")
+    print("|---|---|---|---|")
+    res = []
+    for k, bo in enumerate(bos):
+        d = load(f"heap_{bo}.txt")
+        r, h, rr, top = surface(d)
+        th, slope, icpt, sel, H = angle(r, h)
+        foot = np.nanmax(r[np.isfinite(h)])
+        res.append((float(bo), th))
+        print(f"| {bo} | {H * 1e3:.1f} | {foot * 1e3:.1f} | {th:.1f} |")
+        c = f"C{k}"
+        ax[0].plot(rr * 1e3, top * 1e3, ".", ms=2, color=c, alpha=0.35)
+        ax[0].plot(r * 1e3, h * 1e3, "-", color=c, label=f"Bo = {bo}: {th:.0f}°")
+        x = r[sel]
+        ax[0].plot(x * 1e3, (slope * x + icpt) * 1e3, "--", color=c, lw=0.8)
+    ax[0].set_xlabel("distance from the heap's axis (mm)")
+    ax[0].set_ylabel("height above the rough floor (mm)")
+    ax[0].set_title("heap profiles (dots: sphere tops; line: surface; dashed: fit)", fontsize=9)
+    ax[0].legend(fontsize=8)
+    res = np.array(res)
+    ax[1].plot(res[:, 0], res[:, 1], "o-")
+    ax[1].set_xlabel("Bond number Bo = 2π r γ / (m g)")
+    ax[1].set_ylabel("angle of repose (deg)")
+    ax[1].set_title("wet heaps stand steeper", fontsize=9)
+    fig.tight_layout()
+    fig.savefig("wet_heap.png")
+    print("wrote wet_heap.png")
+
+
+if __name__ == "__main__":
+    main()
