@@ -93,7 +93,8 @@
    sds): a fully mobilised contact resists with exactly M_m (model C), and
    the dashpot cannot exceed the limit while the spring loads. Rolling radius R_r = r_A r_B / (r_A + r_B), r_k
    the distance from body k's centre to the contact point (on a wall
-   R_r = r_A): the radii for spheres. M_k is kept in the tangent plane with
+   R_r = r_A): the radii for spheres; a sphere on a polyhedron's flat face
+   rolls on its own radius (RollingLaw::R, set by the pipeline). M_k is kept in the tangent plane with
    its length, like s. The torque M_k + M_d acts on A, its opposite on B;
    the spring stores |M_k|^2 / (2 k_r) (counted with spring_energy).
 
@@ -263,6 +264,8 @@ template <typename T> struct RollingLaw {
   T mu_r = T(0);    // rolling friction coefficient (M_m = mu_r R_r F_n)
   T kr = T(2.25);   // k_r = kr k mu_r^2 R_r^2 (Ai et al. Eq. 13)
   T eta = T(0.3);   // dashpot C_r = 2 eta sqrt(I_r k_r) (Eq. 17)
+  T R = T(0);       // R_r of the contact if known (a sphere on a flat face: its
+                    // radius); 0: from the lever arms (rolling_radius)
 };
 
 // liquid bridge (Willett et al. 2000), between spheres; volume = 0: none
@@ -376,7 +379,7 @@ POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<
 {
   const Vec3<T> n = g.normal;
   const T rA = norm(g.centroid - kin.xA), rB = norm(g.centroid - kin.xB);
-  const T Rr = rolling_radius(rA, rB, kin);    // the two norms once
+  const T Rr = rl.R > T(0) ? rl.R : rolling_radius(rA, rB, kin);    // the two norms once
   const T kr = rl.kr * k * rl.mu_r * rl.mu_r * Rr * Rr;
   // M_k in the current tangent plane, its length kept
   Vec3<T> M = make_vec3(hist[0], hist[1], hist[2]);

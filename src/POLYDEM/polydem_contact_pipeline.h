@@ -214,6 +214,14 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
                                                    A.m, B.m);
   r.geo = contact_geometry<T>(ov);
   r.geo.centroid = pressure_centre(ov.S_A, ov.M_A, a.x, ov.centroid);
+  if (law.rolling.mu_r > T(0)) {
+    // a sphere on a polyhedron rolls on its own radius (the face is flat),
+    // not on r_A r_B / (r_A + r_B) of the distances to the centres
+    const T ra = posed_sphere_radius(a), rb = posed_sphere_radius(b);
+    const bool pa = !view_is_ellipsoid(*a.view), pb = !view_is_ellipsoid(*b.view);
+    if (ra > T(0) && pb) law.rolling.R = ra;
+    if (rb > T(0) && pa) law.rolling.R = rb;
+  }
   if (law.bridge.volume > T(0)) {
     // liquid bridge: between spheres, the gap along the line of centres
     const T ra = posed_sphere_radius(a), rb = posed_sphere_radius(b);

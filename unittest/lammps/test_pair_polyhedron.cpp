@@ -769,3 +769,42 @@ TEST(PairPolyhedron, OnePartCompositeEqualsItsPart)
     EXPECT_EQ(c.contact_time, ref.contact_time) << "slots " << slots;
   }
 }
+
+// Rolling resistance of a sphere on a polyhedron (issue 30 section 2): a
+// 1 cm sphere (2000 kg/m^3) rolls without slip at 0.1 m/s on the flat top
+// face of a frozen 0.5 m cube, on which it has settled; it stops after
+// d = 7 v0^2 / (10 mu_r g) within 1 % (it rolls on its own radius: the face
+// is flat, not a sphere of the cube's centre distance, which gave +4 %).
+TEST(PairPolyhedron, SphereRollingOnAPolyhedronStopsAtTheClosedForm)
+{
+  const double R = 0.01, v0 = 0.1, g = 9.81;
+  for (double mur : {0.1, 0.3}) {
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -0.3 0.3 -0.3 0.3 -0.3 0.05",
+            "create_box 1 box", "polyhedron_shape s ellipsoid 0.01 0.01 0.01",
+            "polyhedron_shape c " + potentials() + "/cube.shape",
+            "create_atoms 1 single 0 0 " + polydem_test::num(R),
+            "create_atoms 1 single 0 0 -0.25",
+            "polyhedron_set atom 1 shape s density 2000",
+            "polyhedron_set atom 2 shape c scale 0.5 density 2000", "group ball id 1",
+            "velocity all set 0 0 0", "pair_style polyhedron",
+            "pair_coeff * * 1e7 0.3 0.5 0.5 rolling " + polydem_test::num(mur),
+            "neighbor 0.001 bin", "fix nve ball nve/polyhedron",
+            "fix g ball gravity 9.81 vector 0 0 -1", "timestep 2e-5",
+            "run 2000",    // settle onto the face: the rolling limit mu_r R m g from the start
+            "velocity ball set " + polydem_test::num(v0) + " 0 0",
+            "polyhedron_set atom 1 omega 0 " + polydem_test::num(v0 / R) + " 0", "run 0"});
+    const double x0 = l.lmp->atom->x[l.lmp->atom->map(1)][0];
+    auto *a = l.lmp->atom;
+    double stop = -1.0;
+    for (int k = 0; k < 200 && stop < 0.0; k++) {
+      l.cmd("run 50 pre no post no");
+      if (a->v[a->map(1)][0] <= 0.0) stop = a->x[a->map(1)][0] - x0;
+    }
+    const double d = 7.0 * v0 * v0 / (10.0 * mur * g);
+    std::printf("[ rolling  ] sphere on a cube, mu_r %.2f: stops after %.6f m, closed form %.6f m "
+                "(%+.3f %%)\n", mur, stop, d, 100.0 * (stop / d - 1.0));
+    EXPECT_NEAR(stop, d, 0.01 * d) << mur;
+  }
+}
