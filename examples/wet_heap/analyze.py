@@ -2,6 +2,7 @@
 """Angle of repose of the wet heap example from the final positions
 (heap_<Bo>.txt of in.heap), and the picture wet_heap.png.
     /usr/bin/python3 analyze.py [Bo ...]
+    /usr/bin/python3 analyze.py --rolling [mu_r ...]   (dry heaps, rolling_heap.png)
 The heap's surface: the highest sphere top (z + r) in radial rings 1 mm wide
 about the heap's axis (its grains' mean x, y), measured from the top of the
 rough floor (the fixed spheres' tops, z = 2.1 mm); the angle of repose is
@@ -53,7 +54,32 @@ def angle(r, h):
     return math.degrees(math.atan(-slope)), slope, icpt, sel, H
 
 
+def rolling(murs):
+    """dry heaps against the rolling friction mu_r (rolling_<mu_r>.txt; 0.1 is heap_0.txt)"""
+    print("| mu_r | heap height (mm) | radius of the foot (mm) | angle of repose (deg) |")
+    print("|---|---|---|---|")
+    res = []
+    for m in murs:
+        d = load("heap_0.txt" if float(m) == 0.1 else f"rolling_{m}.txt")
+        r, h, rr, top = surface(d)
+        th, slope, icpt, sel, H = angle(r, h)
+        print(f"| {m} | {H * 1e3:.1f} | {np.nanmax(r[np.isfinite(h)]) * 1e3:.1f} | {th:.1f} |")
+        res.append((float(m), th))
+    res = np.array(res)
+    fig, ax = plt.subplots(figsize=(5, 3.6), dpi=110)
+    ax.plot(res[:, 0], res[:, 1], "o-")
+    ax.set_xlabel("rolling friction $\\mu_r$ (EPSD)")
+    ax.set_ylabel("angle of repose (deg)")
+    ax.set_title("dry heaps (Bo = 0): rolling resistance steepens them", fontsize=9)
+    fig.tight_layout()
+    fig.savefig("rolling_heap.png")
+    print("wrote rolling_heap.png")
+
+
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "--rolling":
+        rolling(sys.argv[2:] if len(sys.argv) > 2 else ["0", "0.05", "0.1", "0.2", "0.4"])
+        return
     bos = sys.argv[1:] if len(sys.argv) > 1 else ["0", "1", "3", "10"]
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
     print("| Bo | heap height (mm) | radius of the foot (mm) | angle of repose (deg) |")
