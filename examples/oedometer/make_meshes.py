@@ -13,11 +13,8 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../dodeca_packing"))
 from make_cylinder import cylinder  # noqa: E402
 
-D, H, n, gap = (float(sys.argv[1]), float(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4])) \
-    if len(sys.argv) > 4 else (0.06, 0.12, 48, 0.001)
-
-
 def write(path, tris):
+    """ASCII STL of the triangles (also used by ../wet_heap/make_meshes.py)"""
     with open(path, "w") as f:
         f.write("solid mesh\n")
         for t in tris:
@@ -28,12 +25,15 @@ def write(path, tris):
         f.write("endsolid mesh\n")
 
 
-def disk(r, z):
+def disk(r, z, n):
     ring = [(r * math.cos(2 * math.pi * k / n), r * math.sin(2 * math.pi * k / n)) for k in range(n)]
     return [((0.0, 0.0, z), (x0, y0, z), (x1, y1, z))
             for (x0, y0), (x1, y1) in zip(ring, ring[1:] + ring[:1])]
 
 
-write("tube.stl", cylinder(D, H, n, False))
-write("floor.stl", disk(D / 2, 0.0))
-write("lid.stl", disk(D / 2 - gap, H))
+if __name__ == "__main__":
+    D, H, n, gap = (float(sys.argv[1]), float(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4])) \
+        if len(sys.argv) > 4 else (0.06, 0.12, 48, 0.001)
+    write("tube.stl", cylinder(D, H, n, False))
+    write("floor.stl", disk(D / 2, 0.0, n))
+    write("lid.stl", disk(D / 2 - gap, H, n))

@@ -7,25 +7,15 @@ PREFIXfloor.stl if a prefix is given: the oedometer example's heap).
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../dodeca_packing"))
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "../dodeca_packing"))
+sys.path.insert(0, os.path.join(here, "../oedometer"))
 from make_cylinder import cylinder  # noqa: E402
+from make_meshes import write  # noqa: E402  (the oedometer's ASCII STL writer)
 
 D, H, n, L = (float(sys.argv[1]), float(sys.argv[2]), int(sys.argv[3]), float(sys.argv[4])) \
     if len(sys.argv) > 4 else (0.016, 0.08, 32, 0.13)
 prefix = sys.argv[5] if len(sys.argv) > 5 else ""
-
-
-def write(path, tris):
-    with open(path, "w") as f:
-        f.write("solid mesh\n")
-        for t in tris:
-            f.write("  facet normal 0 0 0\n    outer loop\n")
-            for v in t:
-                f.write("      vertex %.9g %.9g %.9g\n" % v)
-            f.write("    endloop\n  endfacet\n")
-        f.write("endsolid mesh\n")
-
-
 h = L / 2
 write(prefix + "tube.stl", cylinder(D, H, n, False))
 write(prefix + "floor.stl", [((-h, -h, 0.0), (h, -h, 0.0), (h, h, 0.0)), ((-h, -h, 0.0), (h, h, 0.0), (-h, h, 0.0))])
