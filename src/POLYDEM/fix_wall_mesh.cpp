@@ -60,6 +60,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
   create_attribute = 1;
   time_integrate = 0;
 
+  wall_bridge[0] = wall_bridge[1] = wall_bridge[2] = 0.0;
   const polydem::StlTransform xf = parse_keywords(narg, arg);
 
   // every rank reads the file (meshes are replicated); rank 0 reports
@@ -253,11 +254,17 @@ void FixWallMesh::init()
     L.mu = wall_mu >= 0.0 ? wall_mu : mu[t][t];
     L.mu_r = wall_mur >= 0.0 ? wall_mur : (mur ? mur[t][t] : 0.0);
     L.cohesion = wall_coh >= 0.0 ? wall_coh : (coh ? coh[t][t] : 0.0);
+    L.bridge = polydem::make_bridge_law(wall_bridge[0], wall_bridge[1],
+                                        wall_bridge[2] * MY_PI / 180.0);
     if (!(ellipsoids ? L.kn > 0.0 : L.E1 > 0.0) || !(et > 0.0))
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} {})",
                  t, t, t, ellipsoids ? "kn e mu" : "E nu e mu");
     L.damping = polydem::damping_law(et, 1);
   }
+  if (wall_bridge[0] > 0.0 && nkind[0] + nkind[1] > nkind[2] && comm->me == 0)
+    error->warning(FLERR, "fix wall/mesh {}: liquid bridges act on spheres only; {} particles "
+                   "(or parts) of its group are not spheres and get none", id,
+                   nkind[0] + nkind[1] - nkind[2]);
   build_grid();
   check_timestep();
   check_mesh_step();

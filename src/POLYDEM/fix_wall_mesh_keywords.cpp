@@ -98,6 +98,15 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
     const std::string kw = arg[iarg];
     if (number_keyword(kw, iarg)) {
       iarg += 2;
+    } else if (kw == "bridge") {
+      need(iarg, 3, "V_b gamma theta(degrees)");
+      for (int k = 0; k < 3; k++) wall_bridge[k] = num(iarg + 1 + k);
+      if (!(wall_bridge[0] >= 0.0) || !(wall_bridge[1] > 0.0) ||
+          !(wall_bridge[2] >= 0.0 && wall_bridge[2] < 90.0))
+        error->all(FLERR, "fix wall/mesh: bridge needs V_b >= 0 (0: none), gamma > 0 and theta "
+                   "in [0, 90) degrees, got '{} {} {}'", arg[iarg + 1], arg[iarg + 2],
+                   arg[iarg + 3]);
+      iarg += 4;
     } else if (kw == "offset") {
       need(iarg, 3, "dx dy dz");
       for (int k = 0; k < 3; k++) xf.offset[k] = num(iarg + 1 + k);

@@ -162,14 +162,8 @@ void PairPolydem::mix_keywords(int i, int j, bool own)
 
 polydem::BridgeLaw<double> PairPolydem::bridge_law(int i, int j) const
 {
-  polydem::BridgeLaw<double> b;
-  if (!(bridge_vol[i][j] > 0.0 && bridge_gamma[i][j] > 0.0)) return b;
-  const double theta = bridge_theta[i][j] * MY_PI / 180.0;
-  b.volume = bridge_vol[i][j];
-  b.gamma = bridge_gamma[i][j];
-  b.cos_theta = cos(theta);
-  b.rupture = (1.0 + 0.5 * theta) * cbrt(b.volume);
-  return b;
+  return polydem::make_bridge_law(bridge_vol[i][j], bridge_gamma[i][j],
+                                  bridge_theta[i][j] * MY_PI / 180.0);
 }
 
 int PairPolydem::settings_rolling(int narg, char **arg, int iarg)

@@ -421,6 +421,18 @@ POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<
 // U(s) = -int_s^s_c F ds' (arctan closed form; U(s < 0) = U(0) + F(0) s),
 // so that the pull F n on A is -dU/dx_A; the U(0) it has on forming is
 // what a rupture dissipates.
+// the law of V_b, gamma, theta [radians] (R set per contact); V_b or gamma
+// not > 0: none
+template <typename T> POLYDEM_FN BridgeLaw<T> make_bridge_law(T volume, T gamma, T theta)
+{
+  BridgeLaw<T> b;
+  if (!(volume > T(0) && gamma > T(0))) return b;
+  b.volume = volume;
+  b.gamma = gamma;
+  b.cos_theta = cos(theta);
+  b.rupture = (T(1) + T(0.5) * theta) * cbrt(volume);
+  return b;
+}
 template <typename T> POLYDEM_FN T bridge_force(const BridgeLaw<T> &b, T s)
 {
   const T k = sqrt(b.R / b.volume);

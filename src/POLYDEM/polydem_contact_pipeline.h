@@ -525,8 +525,14 @@ POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const La
   r.near_built = r.near_overflow = 0;
   if (b.axes.x > T(0)) {    // an ellipsoid: the grid query (no near list, no workspace)
     const Vec3<T> ax = make_vec3(s * b.axes.x, s * b.axes.y, s * b.axes.z);
-    const ContactLaw<T> law =
+    ContactLaw<T> law =
         sc.sphere_volume ? wall_polyhedron_law(tab, b.type, V) : wall_ellipsoid_law(tab, b.type);
+    // a liquid bridge on the wall: spheres only, of radius R = 2 r (the
+    // sphere-plane limit of Derjaguin's 2 r_A r_B / (r_A + r_B))
+    if (ax.x == ax.y && ax.y == ax.z)
+      law.bridge.R = T(2) * ax.x;
+    else
+      law.bridge.volume = T(0);
     r.wf = wall_ellipsoid_particle(ax, b.pose, sc.mp, sc.grid, law, b.m, dts, sc.cosmax, sc.both,
                                    b.v, b.w, hist, update, P, sc.sphere_volume != 0);
   } else {

@@ -156,6 +156,7 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
   kin.dt = dt;
   kin.mA = m;
   kin.mB = T(0);    // the wall: no rolling inertia, R_r = r_A
+  int nslot = 0;
   for (int k = 0; k < C.n; ++k) {
     if (!C.on[k]) continue;
     const ContactGeometry<T> &g = C.g[k];
@@ -171,18 +172,31 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
         best = s;
       }
     }
+    // a liquid bridge across a gap (on = 2) acts only where it formed in
+    // contact, i.e. where a slot is kept; it clears the slot's friction and
+    // rolling springs (as a pair's bridge_contact)
+    const bool bridge = C.on[k] == 2;
+    if (bridge && (best < 0 || !(law.bridge.volume > T(0)) || !(g.gap < law.bridge.rupture)))
+      continue;
     T shear[CONTACT_HIST_ROLL];
     for (int i = 0; i < CONTACT_HIST_ROLL; ++i) shear[i] = T(0);
     if (best >= 0) {
       used[best] = true;
-      for (int i = 0; i < CONTACT_HIST_ROLL; ++i) shear[i] = hist[WALL_HIST * best + 4 + i];
+      if (!bridge)
+        for (int i = 0; i < CONTACT_HIST_ROLL; ++i) shear[i] = hist[WALL_HIST * best + 4 + i];
     } else
       out.fresh |= 1 << k;
-    // the mass the contact point sees
-    const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
-    kin.meff = T(1) / point_inverse_mass(T(1) / m, Iinv, rn);
-    const ContactForce<T> cf = contact_step(g, law, kin, shear, CONTACT_HIST_ROLL);
-    T *h = newh + WALL_HIST * out.ncontact;
+    ContactForce<T> cf{};
+    if (bridge) {
+      add_bridge(g, law.bridge, kin, cf);
+    } else {
+      // the mass the contact point sees
+      const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
+      kin.meff = T(1) / point_inverse_mass(T(1) / m, Iinv, rn);
+      cf = contact_step(g, law, kin, shear, CONTACT_HIST_ROLL);
+      out.ncontact++;
+    }
+    T *h = newh + WALL_HIST * nslot++;
     h[0] = key.x;
     h[1] = key.y;
     h[2] = key.z;
@@ -192,7 +206,6 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
     out.fpatch[k] = cf.F_A;
     out.tau += cf.tau_A;
     out.energy += cf.energy;
-    out.ncontact++;
   }
   if (update)    // setup (no time step yet) leaves the history as it was
     for (int i = 0; i < WALL_HIST_SIZE; ++i) hist[i] = newh[i];

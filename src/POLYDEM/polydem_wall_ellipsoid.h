@@ -199,16 +199,82 @@ template <typename T> POLYDEM_FN T ellipsoid_cap_fraction(T r)
   return T(0.25) * x * x * (T(3) - x);
 }
 
+// A sphere (centre c, radius a) apart from triangle t met from side
+// 'side': the gap s = |p - c| - a to its closest point p (face, edge or
+// vertex), the unit normal n = (p - c) / |p - c| into the wall. False if the
+// centre is not in front of the side or s is not below reach (the liquid
+// bridge's rupture distance). s is the distance to the patch's nearest
+// triangle point: continuous in the pose, and its gradient in c is -n.
+template <typename T>
+POLYDEM_FN bool sphere_triangle_gap(const Vec3<T> &c, T a, const MeshGridView<T> &g, int t,
+                                    int side, T reach, T &s, Vec3<T> &n, Vec3<T> &p)
+{
+  const T *pl = g.plane + 4 * t;
+  const T h = T(side) * (pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3]);
+  if (!(h > T(0)) || !(h < a + reach)) return false;
+  const T *q = g.tri + 9 * t;
+  int face;
+  p = triangle_closest_point(c, make_vec3(q[0], q[1], q[2]), make_vec3(q[3], q[4], q[5]),
+                             make_vec3(q[6], q[7], q[8]), face);
+  const Vec3<T> d = p - c;
+  const T dist = norm(d);
+  s = dist - a;
+  if (!(s < reach) || !(dist > T(0))) return false;
+  if (s < T(0)) s = T(0);    // touching within round-off of the contact test
+  n = (T(1) / dist) * d;
+  return true;
+}
+
 // grid visitor: each touching triangle joins the patch of its smooth region
 // (wall_patch_slot; without regions the closest normal), which keeps its
-// deepest contact (largest delta)
+// deepest contact (largest delta). A sphere with a liquid bridge law (reach
+// = its rupture distance > 0): a triangle within reach that it does not
+// touch makes its patch a bridge patch (depth 0, the smallest gap) unless
+// the patch has a contact.
 template <typename T> struct WallEllipsoidAccumulate {
   const WallEllipsoid<T> *e;
   const MeshGridView<T> *g;
   WallPatches<T> *out;
   T cosmax, rb, vol;    // cos(patch angle), bounding radius, ellipsoid volume
+  T reach;              // spheres: liquid bridges' rupture distance (0: none)
   const WallSides<T> *sides;
   T dbest[WALL_MAX_PATCH];
+
+  // the patch of triangle t (side), opened as neither contact nor bridge
+  POLYDEM_FN int patch_of(int t, int side)
+  {
+    const T *pl = g->plane + 4 * t;
+    const Vec3<T> nw = T(side) * make_vec3(pl[0], pl[1], pl[2]);
+    bool opened;
+    const int k = wall_patch_slot(*out, *g, wall_region_key(*g, t, side), nw, cosmax, opened);
+    if (opened) {
+      const T *q = g->tri + 9 * t;
+      WallPatch<T> &p = out->p[k];
+      p.p0 = make_vec3(q[0], q[1], q[2]);
+      p.behind = 0;
+      p.depth = T(0);
+      p.gap = T(-1);
+      dbest[k] = T(-1);    // < any contact's delta (> 0)
+    }
+    return k;
+  }
+
+  // a bridge candidate: kept if its patch has no contact and it is nearer
+  POLYDEM_FN void bridge(int t, int side)
+  {
+    T s;
+    Vec3<T> n, p;
+    if (!sphere_triangle_gap(e->c, e->ax.x, *g, t, side, reach, s, n, p)) return;
+    WallPatch<T> &q = out->p[patch_of(t, side)];
+    if (q.depth > T(0) || (q.gap >= T(0) && !(s < q.gap))) return;
+    q.gap = s;
+    q.volume = q.area = T(0);
+    q.S = n;
+    q.M = make_vec3(T(0), T(0), T(0));
+    q.ac = e->c + (e->ax.x + T(0.5) * s) * n;    // mid-gap on the line to p
+    q.vc = p;
+    q.tri = t;
+  }
 
   POLYDEM_FN void operator()(int t)
   {
@@ -218,19 +284,11 @@ template <typename T> struct WallEllipsoidAccumulate {
     int behind, degenerate;
     if (!ellipsoid_triangle(*e, *g, t, side, r, delta, ns, ps, S, M, behind, degenerate)) {
       out->ndegenerate += degenerate;
+      if (reach > T(0) && !degenerate) bridge(t, side);
       return;
     }
     out->ntri++;
-    const T *pl = g->plane + 4 * t;
-    const Vec3<T> nw = T(side) * make_vec3(pl[0], pl[1], pl[2]);
-    bool opened;
-    const int k = wall_patch_slot(*out, *g, wall_region_key(*g, t, side), nw, cosmax, opened);
-    if (opened) {
-      const T *q = g->tri + 9 * t;
-      out->p[k].p0 = make_vec3(q[0], q[1], q[2]);
-      out->p[k].behind = 0;
-      dbest[k] = T(-1);    // < any contact's delta (> 0)
-    }
+    const int k = patch_of(t, side);
     WallPatch<T> &p = out->p[k];
     p.behind |= behind;
     // The deepest triangle: the patch's energy k delta^2 / 2 is then the
@@ -241,6 +299,7 @@ template <typename T> struct WallEllipsoidAccumulate {
     // triangles agree).
     if (!(delta > dbest[k])) return;
     dbest[k] = delta;
+    p.gap = T(-1);
     p.volume = vol * ellipsoid_cap_fraction(r);
     p.area = T(0);
     p.S = S;
@@ -254,11 +313,12 @@ template <typename T> struct WallEllipsoidAccumulate {
 
 // Patches of ellipsoid e (mesh frame) against the mesh: every triangle
 // within its bounding sphere (the grid; no near lists). sides: which side
-// of each triangle acts (null: the front only).
+// of each triangle acts (null: the front only). reach > 0 (spheres with a
+// liquid bridge law): also the bridge patches within that gap.
 template <typename T>
 POLYDEM_FN void wall_ellipsoid_patches(const WallEllipsoid<T> &e, const MeshGridView<T> &g,
                                        T cosmax, WallPatches<T> &out,
-                                       const WallSides<T> *sides = nullptr)
+                                       const WallSides<T> *sides = nullptr, T reach = T(0))
 {
   out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = out.nunrecorded = 0;
   WallEllipsoidAccumulate<T> acc;
@@ -270,7 +330,8 @@ POLYDEM_FN void wall_ellipsoid_patches(const WallEllipsoid<T> &e, const MeshGrid
   acc.rb = e.ax.x > e.ax.y ? e.ax.x : e.ax.y;
   acc.rb = e.ax.z > acc.rb ? e.ax.z : acc.rb;
   acc.vol = T(4.18879020478639098462) * e.ax.x * e.ax.y * e.ax.z;    // 4/3 pi abc
-  mesh_for_each_near(g, e.c, acc.rb, acc);
+  acc.reach = reach > T(0) ? reach : T(0);
+  mesh_for_each_near(g, e.c, acc.rb + acc.reach, acc);
 }
 
 // ellipsoid patches -> contacts of the contact layer (lab frame)
@@ -282,7 +343,10 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
   const Vec3<T> xw = mesh_axis_point(mp);
   for (int k = 0; k < P.n; ++k) {
     const WallPatch<T> &q = P.p[k];
-    C.on[k] = q.depth > T(0);
+    // 1: a contact; 2: a liquid bridge across the gap (a sphere's patch
+    // within reach, WallEllipsoidAccumulate), which acts only if it formed
+    // in contact (wall_contact_forces)
+    C.on[k] = q.depth > T(0) ? 1 : (q.gap >= T(0) ? 2 : 0);
     if (!C.on[k]) continue;
     ContactGeometry<T> &g = C.g[k];
     g.volume = q.depth;
@@ -295,6 +359,10 @@ POLYDEM_FN WallContacts<T> wall_ellipsoid_contacts(const WallPatches<T> &P, cons
     g.M_B = make_vec3(T(0), T(0), T(0));
     g.centroid = lab_point(mp, xw, q.ac);
     g.gradient_damping = 0;
+    // the bridge's gap: the separation, or minus the depth in contact
+    // (U(s < 0) = U(0) + F(0) s, whose gradient is the pull F(0) n)
+    g.has_gap = 1;
+    g.gap = C.on[k] == 2 ? q.gap : -q.depth;
   }
   return C;
 }
@@ -309,7 +377,7 @@ template <typename T> POLYDEM_FN void sphere_cap_contacts(WallContacts<T> &C, T 
 {
   constexpr T PI = T(3.14159265358979323846264338327950288);
   for (int k = 0; k < C.n; ++k) {
-    if (!C.on[k]) continue;
+    if (C.on[k] != 1) continue;
     ContactGeometry<T> &g = C.g[k];
     const T d = g.volume < T(2) * r ? g.volume : T(2) * r;
     const T A = PI * d * (T(2) * r - d);
@@ -325,6 +393,8 @@ template <typename T> POLYDEM_FN void sphere_cap_contacts(WallContacts<T> &C, T 
 // lab frame (wall_contact_forces, the contact point's mass with the solid
 // ellipsoid's moments I_x = m (b^2 + c^2) / 5, ...). law: ellipsoid_law;
 // or, for a sphere with sphere_volume, wall_polyhedron_law (sphere_cap_contacts).
+// A sphere whose law has a liquid bridge (law.bridge.volume > 0, R set) also
+// finds the bridge patches within its rupture distance.
 template <typename T>
 POLYDEM_FN WallForce<T>
 wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T> &mp,
@@ -337,7 +407,8 @@ wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T>
   e.R = quat_to_mat(mesh_orientation(mp, lab.q));
   e.ax = ax;
   const WallSides<T> sides = wall_kept_sides(hist, mp, both);
-  wall_ellipsoid_patches(e, g, cosmax, P, &sides);
+  const T reach = law.bridge.volume > T(0) ? law.bridge.rupture : T(0);
+  wall_ellipsoid_patches(e, g, cosmax, P, &sides, reach);
   WallContacts<T> C = wall_ellipsoid_contacts(P, mp);
   if (sphere_volume) sphere_cap_contacts(C, ax.x);
   return wall_contact_forces(C, mp, law, m, ellipsoid_inverse_moments(m, ax),
@@ -351,7 +422,7 @@ POLYDEM_FN void wall_ellipsoid_triangle_forces(const WallPatches<T> &P, const Wa
                                                F &add)
 {
   for (int k = 0; k < P.n; ++k)
-    if (P.p[k].depth > T(0))
+    if (P.p[k].depth > T(0) || P.p[k].gap >= T(0))
       add(P.p[k].tri, -wf.fpatch[k].x, -wf.fpatch[k].y, -wf.fpatch[k].z);
 }
 

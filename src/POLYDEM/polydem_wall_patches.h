@@ -41,6 +41,8 @@ template <typename T> struct WallPatch {
   int behind;       // the particle's centroid is behind a clipped triangle (in its prism)
   int tri;          // ellipsoids: the triangle of the patch's closest point
   int key;          // wall_region_key of its triangles, -1 without regions
+  T gap;            // spheres: the gap to the patch (>= 0) when it only holds a
+                    // liquid bridge (depth 0); -1 for a contact
 };
 
 template <typename T> struct WallPatches {

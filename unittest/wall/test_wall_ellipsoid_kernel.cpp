@@ -12,7 +12,10 @@
 //   gone) is continuous: no step of 5e-4 a changes delta by more than
 //   2e-3 a nor the gradient S by more than 1e-2;
 // - behind the acting side (kept side): the face contact keeps pushing back;
-// - NaN poses are counted as degenerate, never a contact.
+// - NaN poses are counted as degenerate, never a contact;
+// - a sphere's liquid bridge on a plate (fix wall/mesh bridge) follows
+//   Willett's force with R = 2 a across the gap, also at an open edge.
+#include "polydem_damping.h"
 #include "polydem_stl.h"
 #include "polydem_wall_ellipsoid.h"
 #include "wall_meshes.h"
@@ -341,4 +344,100 @@ TEST(WallEllipsoidKernel, NanIsDegenerate)
   wall_ellipsoid_patches(e, m.v, 0.9, P);
   EXPECT_EQ(P.n, 0);
   EXPECT_GT(P.ndegenerate, 0);
+}
+
+// Liquid bridge of a sphere on a mesh (fix wall/mesh bridge): Willett et
+// al.'s force (Langmuir 16 (2000) 9396, Eq. 13's closed form) with the
+// sphere-plane radius R = 2 a, written here independently of the kernel:
+// F(s) = 2 pi R gamma cos(theta) / (1 + 1.05 s^ + 2.5 s^2), s^ = s sqrt(R / V).
+namespace {
+double willett(double s, double R, double V, double gamma, double cth)
+{
+  const double u = s * std::sqrt(R / V);
+  return 2.0 * M_PI * R * gamma * cth / (1.0 + 1.05 * u + 2.5 * u * u);
+}
+
+// one step of the wall kernel for a sphere of radius a at c (velocity 0)
+WallForce<double> sphere_on_mesh(const Mesh<double> &m, double a, const Vec3<double> &c,
+                                 const ContactLaw<double> &law, double *hist, bool update,
+                                 WallPatches<double> &P)
+{
+  MeshPose<double> mp;
+  mp.o = mp.d = mp.vw = mp.w = make_vec3(0.0, 0.0, 0.0);
+  mp.q = make_quat(1.0, 0.0, 0.0, 0.0);
+  mp.R = quat_to_mat(mp.q);
+  Pose<double> lab;
+  lab.x = c;
+  lab.q = mp.q;
+  lab.s = 1.0;
+  const Vec3<double> z = make_vec3(0.0, 0.0, 0.0);
+  return wall_ellipsoid_particle(make_vec3(a, a, a), lab, mp, m.v, law, 1e-3, 1e-6,
+                                 std::cos(20.0 * M_PI / 180.0), 1, z, z, hist, update, P);
+}
+}    // namespace
+
+// Pulled off a flat plate: forms in contact (F(0) added to the contact),
+// then across the gap F(s) = Willett's at 1e-12, the pull through the
+// centre (no torque), U(s) whose -dU/dz is F (central differences, 1e-7),
+// nothing beyond s_c = (1 + theta/2) V^(1/3), and no bridge again after
+// the rupture, nor one that never touched.
+TEST(WallBridgeKernel, PullOffFollowsWillett)
+{
+  const double a = 0.01, V = 1e-9, gamma = 0.072, theta = 20.0 * M_PI / 180.0;
+  const Mesh<double> m(wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
+  ContactLaw<double> law = ellipsoid_law(1e4, damping_law(0.5, 1), 0.5, 2.0 / 7.0, 0.5);
+  law.bridge = make_bridge_law(V, gamma, theta);
+  law.bridge.R = 2.0 * a;
+  const double sc = (1.0 + 0.5 * theta) * std::cbrt(V);
+  EXPECT_NEAR(law.bridge.rupture, sc, 1e-15);
+  double hist[WALL_HIST_SIZE] = {};
+  WallPatches<double> P;
+  // never touched: no force within reach
+  WallForce<double> f = sphere_on_mesh(m, a, make_vec3(0.01, 0.0, a + 0.5 * sc), law, hist, true, P);
+  EXPECT_EQ(f.f.z, 0.0);
+  EXPECT_EQ(hist[0], 0.0);
+  // in contact (depth 1e-6): k_n delta + F(0) along the wall's normal
+  const double d0 = 1e-6;
+  f = sphere_on_mesh(m, a, make_vec3(0.01, 0.0, a - d0), law, hist, true, P);
+  const double F0 = willett(0.0, 2.0 * a, V, gamma, std::cos(theta));
+  EXPECT_NEAR(f.f.z, 1e4 * d0 - F0, 1e-12 * F0);
+  EXPECT_EQ(f.ncontact, 1);
+  // across the gap, the history kept (update false: as LAMMPS's setup)
+  double worst = 0.0;
+  for (double s : {1e-9, 1e-6, 0.1 * sc, 0.37 * sc, 0.8 * sc, 0.999 * sc}) {
+    const Vec3<double> c = make_vec3(0.01, 0.0, a + s);
+    f = sphere_on_mesh(m, a, c, law, hist, false, P);
+    const double F = willett(s, 2.0 * a, V, gamma, std::cos(theta));
+    worst = std::fmax(worst, std::fabs(-f.f.z / F - 1.0));
+    EXPECT_EQ(f.ncontact, 0);
+    EXPECT_NEAR(f.f.x, 0.0, 1e-15 * F);
+    EXPECT_NEAR(norm(f.tau), 0.0, 1e-15 * F * a);
+    // -dU/dz = F_z
+    const double h = 1e-7 * sc;
+    double hp[WALL_HIST_SIZE], hm[WALL_HIST_SIZE];
+    std::copy(hist, hist + WALL_HIST_SIZE, hp);
+    std::copy(hist, hist + WALL_HIST_SIZE, hm);
+    const double Up = sphere_on_mesh(m, a, c + make_vec3(0.0, 0.0, h), law, hp, false, P).energy;
+    const double Um = sphere_on_mesh(m, a, c - make_vec3(0.0, 0.0, h), law, hm, false, P).energy;
+    EXPECT_NEAR(-(Up - Um) / (2.0 * h), f.f.z, 1e-6 * F) << s;
+    EXPECT_LT(f.energy, 0.0);
+  }
+  std::printf("[ wall bridge ] F(s) against Willett (R = 2a): largest relative difference %.2g\n",
+              worst);
+  EXPECT_LT(worst, 1e-12);
+  // the bridge on an edge of the plate: the pull towards the edge's closest point
+  {
+    const double ex = 0.3 * sc, ez = a + 0.2 * sc;    // beyond the edge x = 0.05, above it
+    f = sphere_on_mesh(m, a, make_vec3(0.05 + ex, 0.0, ez), law, hist, false, P);
+    const double dist = std::hypot(ex, ez), s = dist - a;
+    const double F = willett(s, 2.0 * a, V, gamma, std::cos(theta));
+    EXPECT_NEAR(f.f.x, -F * ex / dist, 1e-12 * F);
+    EXPECT_NEAR(f.f.z, -F * ez / dist, 1e-12 * F);
+  }
+  // beyond s_c: nothing, and the step clears the slot; back within reach: nothing
+  f = sphere_on_mesh(m, a, make_vec3(0.01, 0.0, a + 1.001 * sc), law, hist, true, P);
+  EXPECT_EQ(f.f.z, 0.0);
+  EXPECT_EQ(f.energy, 0.0);
+  f = sphere_on_mesh(m, a, make_vec3(0.01, 0.0, a + 0.5 * sc), law, hist, true, P);
+  EXPECT_EQ(f.f.z, 0.0);
 }

@@ -50,7 +50,8 @@ TEST(WallEllipsoidKokkos, KkEqualsPlain)
 }
 
 // spheres under pair_style polyhedron (issue 29): the wall's volume law for
-// spheres (sphere_cap_contacts) alike in the plain and /kk fixes
+// spheres (sphere_cap_contacts) alike in the plain and /kk fixes, also with
+// liquid bridges on the walls (issue 30)
 TEST(WallEllipsoidKokkos, SpheresByVolumeKkEqualsPlain)
 {
   const std::string box = tmpdir() + "/sph_kk_box.stl";
@@ -61,8 +62,11 @@ TEST(WallEllipsoidKokkos, SpheresByVolumeKkEqualsPlain)
     if (c.rfind("pair_style", 0) == 0) c = "pair_style polyhedron";
     if (c.rfind("pair_coeff", 0) == 0) c = "pair_coeff * * 1e6 0.3 0.6 0.3";
   }
-  const std::string args = box + " friction 0.5 restitution 0.5 move translate 0.05 0 0";
-  const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);
-  kk_compare(sc, p, k, "spheres by volume");
-  EXPECT_GE(p.contacts, 30.0);
+  // with liquid bridges on the walls (V_b 5e-12: s_c 0.19 mm, F(0) 4.6x a sphere's weight)
+  for (const std::string kw : {"", " bridge 5e-12 0.072 10"}) {
+    const std::string args = box + " friction 0.5 restitution 0.5 move translate 0.05 0 0" + kw;
+    const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);
+    kk_compare(sc, p, k, kw.empty() ? "spheres by volume" : "spheres by volume, bridges");
+    EXPECT_GE(p.contacts, 30.0);
+  }
 }

@@ -301,3 +301,145 @@ TEST(WallServo, TargetFromAVariable)
                              "/servo_lid.stl move servo 0 0 -1 v_nothing 0.05 0.02"});
   EXPECT_NE(bad.error_of("run 0").find("variable 'nothing' does not exist"), std::string::npos);
 }
+
+// Liquid bridges on a mesh (fix wall/mesh bridge, issue 30): a sphere (r =
+// 1 cm, no gravity) touching a floor mesh gets its bridge, then is lifted
+// at v0. Across the gap only the bridge acts, Willett et al.'s F(s) with
+// the sphere-plane radius 2r (Langmuir 16 (2000) 9396): kinetic energy +
+// the wall's energy stay constant (to 1e-5 of |U(0)|, the time step's
+// error); below the escape speed the sphere stops at the gap where
+// U(s_max) = U(s_1) + K_1, U integrated here by Simpson's rule from
+// Willett's formula (within 1e-4 s_c); above it the bridge ruptures at s_c
+// = (1 + theta/2) V^(1/3) (Lian et al. 1993) and the sphere leaves with
+// K_1 + U(s_1), up to the work F(s_c) v dt the step across s_c misses.
+// Bad bridge input is an error.
+namespace {
+const double BV = 1e-9, BGAMMA = 0.072, BTHETA = 20.0;
+
+double willett_wall(double s)
+{
+  const double Rb = 2.0 * R, u = (s > 0.0 ? s : 0.0) * std::sqrt(Rb / BV);
+  return 2.0 * M_PI * Rb * BGAMMA * std::cos(BTHETA * M_PI / 180.0) / (1.0 + 1.05 * u + 2.5 * u * u);
+}
+double rupture_gap() { return (1.0 + 0.5 * BTHETA * M_PI / 180.0) * std::cbrt(BV); }
+// U(s) = -int_s^s_c F (Simpson, 4,000 intervals)
+double willett_energy(double s)
+{
+  const int n = 4000;
+  const double sc = rupture_gap(), h = (sc - s) / n;
+  double sum = willett_wall(s) + willett_wall(sc);
+  for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett_wall(s + k * h);
+  return -sum * h / 3.0;
+}
+}    // namespace
+
+TEST(WallBridge, LiftedSphereKeepsItsEnergyAndRuptures)
+{
+  const std::string stl = tmpdir() + "/bridge_floor.stl";
+  write_ascii(stl, flat(-0.1, 0.1, -0.1, 0.1, 0.0, 3, 3));
+  const double m = RHO * 4.0 / 3.0 * M_PI * R * R * R, sc = rupture_gap();
+  const double U0 = willett_energy(0.0);
+  for (double v0 : {0.015, 0.03}) {
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
+            "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
+            "create_atoms 1 single 0 0 " + num(R - 1e-8), "polyhedron_set atom 1 density " + num(RHO),
+            "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5", "neighbor 0.001 bin",
+            "fix nve all nve/polyhedron",
+            "fix w all wall/mesh " + stl + " bridge " + num(BV) + " " + num(BGAMMA) + " " +
+                num(BTHETA),
+            "timestep 5e-5", "run 1", "velocity all set 0 0 " + num(v0)});
+    auto *a = l.lmp->atom;
+    LAMMPS_NS::Fix *w = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+    double E1 = 0.0, s1 = -1.0, drift = 0.0, smax = 0.0, vfinal = 0.0;
+    bool returned = false;
+    for (int n = 0; n < 6000; n++) {
+      l.cmd(n == 0 ? "run 1" : "run 1 pre no post no");
+      const double s = a->x[0][2] - R, vz = a->v[0][2];
+      const double E = 0.5 * m * vz * vz + w->compute_scalar();
+      if (s <= 0.0) continue;
+      if (s1 < 0.0) {
+        s1 = s;
+        E1 = E;
+      }
+      if (s < sc) drift = std::fmax(drift, std::fabs(E - E1));
+      smax = std::fmax(smax, s);
+      if (vz < 0.0) {
+        returned = true;
+        break;
+      }
+      if (s > 2.0 * sc) {
+        vfinal = vz;
+        break;
+      }
+    }
+    std::printf("[ wall bridge ] v0 %.3g m/s: E drift %.3g of |U(0)| = %.4g J, ", v0,
+                drift / std::fabs(U0), std::fabs(U0));
+    EXPECT_LT(drift, 1e-5 * std::fabs(U0));
+    ASSERT_GT(s1, 0.0);
+    if (v0 < 0.02) {
+      // U(s_max) = E1: bisection on the test's own U
+      double lo = s1, hi = sc;
+      for (int k = 0; k < 60; k++) {
+        const double mid = 0.5 * (lo + hi);
+        (willett_energy(mid) < E1 ? lo : hi) = mid;
+      }
+      std::printf("stopped at s %.6g m, expected %.6g m (s_c %.4g m)\n", smax, lo, sc);
+      EXPECT_TRUE(returned);
+      EXPECT_NEAR(smax, lo, 1e-4 * sc);
+    } else {
+      // the step across s_c misses at most the work F(s_c) v dt of the pull
+      const double expect = std::sqrt(2.0 * E1 / m), jump = willett_wall(sc) * v0 * 5e-5;
+      std::printf("ruptured, leaves at %.8g m/s, expected %.8g m/s (kinetic energy %+.3g of "
+                  "F(s_c) v dt)\n", vfinal, expect, (0.5 * m * vfinal * vfinal - E1) / jump);
+      EXPECT_FALSE(returned);
+      EXPECT_NEAR(0.5 * m * vfinal * vfinal, E1, jump);
+      EXPECT_EQ(w->compute_scalar(), 0.0);
+    }
+  }
+  // errors
+  Lmp l;
+  l.cmds({"units si", "atom_style polyhedron", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2",
+          "create_box 1 box"});
+  for (const std::string kw : {" bridge 1e-9 0 10", " bridge -1 0.07 10", " bridge 1e-9 0.07 90",
+                               " bridge 1e-9 0.07"}) {
+    const std::string err = l.error_of("fix w all wall/mesh " + stl + kw);
+    EXPECT_NE(err.find("bridge"), std::string::npos) << kw << ": " << err;
+  }
+}
+
+// a bridge stretched across the gap (the sphere 0.2 mm above the mesh,
+// still rising) is in the restart file: the run continues bit for bit
+TEST(WallBridge, StretchedBridgeRestartsExactly)
+{
+  const std::string stl = tmpdir() + "/bridge_floor.stl", rst = tmpdir() + "/bridge_wall.restart";
+  write_ascii(stl, flat(-0.1, 0.1, -0.1, 0.1, 0.0, 3, 3));
+  const std::string fix = "fix w all wall/mesh " + stl + " bridge " + num(BV) + " " + num(BGAMMA) +
+      " " + num(BTHETA);
+  double ref[2], gap = 0.0;
+  {
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
+            "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
+            "create_atoms 1 single 0 0 " + num(R - 1e-8), "polyhedron_set atom 1 density " + num(RHO),
+            "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5", "neighbor 0.001 bin",
+            "fix nve all nve/polyhedron", fix, "timestep 5e-5", "run 1",
+            "velocity all set 0 0 0.02", "run 200"});
+    gap = l.lmp->atom->x[0][2] - R;
+    l.cmds({"write_restart " + rst, "run 400"});
+    ref[0] = l.lmp->atom->x[0][2];
+    ref[1] = l.lmp->atom->v[0][2];
+  }
+  Lmp l;
+  l.cmds({"read_restart " + rst, "comm_modify vel yes", "neighbor 0.001 bin",
+          "fix nve all nve/polyhedron", fix, "timestep 5e-5", "run 400"});
+  std::printf("[ wall bridge ] restart at a gap of %.4g m (s_c %.4g m): z %.17g / %.17g\n", gap,
+              rupture_gap(), l.lmp->atom->x[0][2], ref[0]);
+  EXPECT_GT(gap, 0.0);
+  EXPECT_LT(gap, rupture_gap());
+  EXPECT_LT(ref[1], 0.02);    // the bridge pulled
+  EXPECT_EQ(l.lmp->atom->x[0][2], ref[0]);
+  EXPECT_EQ(l.lmp->atom->v[0][2], ref[1]);
+}
