@@ -126,12 +126,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       kinds.push_back(k);
     } else if (kw == "fractions") {
       need(1);
-      if (strcmp(arg[iarg + 1], "number") == 0)
-        massfrac = 0;
-      else if (strcmp(arg[iarg + 1], "mass") == 0)
-        massfrac = 1;
-      else
-        error->all(FLERR, "{}: fractions must be 'number' or 'mass', got '{}'", me, arg[iarg + 1]);
+      massfrac = polydem_parse::choice(FLERR, lmp, me, "fractions", arg[iarg + 1], "mass", "number");
       iarg += 2;
     } else if (kw == "density") {
       need(1);
@@ -227,12 +222,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       iarg += 2;
     } else if (kw == "all_in") {
       need(1);
-      if (strcmp(arg[iarg + 1], "yes") == 0)
-        allin = 1;
-      else if (strcmp(arg[iarg + 1], "no") == 0)
-        allin = 0;
-      else
-        error->all(FLERR, "{}: all_in must be yes or no, got '{}'", me, arg[iarg + 1]);
+      allin = polydem_parse::choice(FLERR, lmp, me, "all_in", arg[iarg + 1], "yes", "no");
       iarg += 2;
     } else if (kw == "gap") {
       need(1);

@@ -86,12 +86,9 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
   };
   // a keyword of two words: true for the first
   auto choice = [&](int iarg, const char *first, const char *second) {
-    const std::string both = std::string(first) + " or " + second;
-    need(iarg, 1, both.c_str());
-    const std::string v = arg[iarg + 1];
-    if (v != first && v != second)
-      error->all(FLERR, "fix wall/mesh: {} expects {}, got '{}'", arg[iarg], both, v);
-    return v == first;
+    need(iarg, 1, (std::string(first) + " or " + second).c_str());
+    return polydem_parse::choice(FLERR, lmp, "fix wall/mesh", arg[iarg], arg[iarg + 1], first,
+                                 second);
   };
   int iarg = 4;
   while (iarg < narg) {

@@ -379,14 +379,8 @@ void *PairEllipsoid::extract(const char *str, int &dim)
   if (strcmp(str, "kn") == 0) return (void *) kn;
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
   if (strcmp(str, "friction") == 0) return (void *) friction;
-  if (strcmp(str, "rolling") == 0) return (void *) rolling;
-  if (strcmp(str, "cohesion") == 0) return (void *) cohesion;
-  dim = 1;
-  if (strcmp(str, "counters") == 0) return (void *) counters;
   dim = 0;    // tangential k_t / k_n and gamma_t / gamma_n (fix wall/mesh)
   if (strcmp(str, "kt_ratio") == 0) return (void *) &kt_ratio;
   if (strcmp(str, "gt_ratio") == 0) return (void *) &gt_ratio;
-  if (strcmp(str, "rolling_kr") == 0) return (void *) &roll_kr;
-  if (strcmp(str, "rolling_eta") == 0) return (void *) &roll_eta;
-  return nullptr;
+  return extract_models(str, dim);
 }

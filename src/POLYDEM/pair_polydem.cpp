@@ -160,6 +160,19 @@ void PairPolydem::mix_keywords(int i, int j, bool own)
   bridge_theta[j][i] = bridge_theta[i][j];
 }
 
+void *PairPolydem::extract_models(const char *str, int &dim)
+{
+  dim = 2;
+  if (strcmp(str, "rolling") == 0) return (void *) rolling;
+  if (strcmp(str, "cohesion") == 0) return (void *) cohesion;
+  dim = 1;
+  if (strcmp(str, "counters") == 0) return (void *) counters;
+  dim = 0;
+  if (strcmp(str, "rolling_kr") == 0) return (void *) &roll_kr;
+  if (strcmp(str, "rolling_eta") == 0) return (void *) &roll_eta;
+  return nullptr;
+}
+
 polydem::BridgeLaw<double> PairPolydem::bridge_law(int i, int j) const
 {
   return polydem::make_bridge_law(bridge_vol[i][j], bridge_gamma[i][j],

@@ -93,6 +93,10 @@ class PairPolydem : public Pair {
   // default 0), and 'bridge V_b gamma theta' where bridge is given (else an
   // error): the count of the values before them
   int coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge = nullptr);
+  // extract() of the fields every POLYDEM pair style has: rolling and
+  // cohesion per type pair, the counters, the rolling k_r factor and
+  // dashpot ratio (fix wall/mesh); null for any other name
+  void *extract_models(const char *str, int &dim);
   // the liquid bridge law of type pair (i, j) (volume 0: none; R set per contact)
   polydem::BridgeLaw<double> bridge_law(int i, int j) const;
   // mixing of the keywords' values for an unlike pair without its own

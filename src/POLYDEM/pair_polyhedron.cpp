@@ -103,9 +103,8 @@ void PairPolyhedron::settings(int narg, char **arg)
   for (int iarg = 0; iarg < narg; iarg += 2) {
     if (settings_rolling(narg, arg, iarg)) continue;
     if (strcmp(arg[iarg], "twist") == 0) {
-      if (iarg + 1 >= narg || (strcmp(arg[iarg + 1], "yes") && strcmp(arg[iarg + 1], "no")))
-        error->all(FLERR, "pair_style polyhedron: twist expects yes or no");
-      twist = strcmp(arg[iarg + 1], "yes") == 0;
+      twist = polydem_parse::choice(FLERR, lmp, "pair_style polyhedron", "twist",
+                                    iarg + 1 < narg ? arg[iarg + 1] : nullptr, "yes", "no");
       continue;
     }
     if (strcmp(arg[iarg], "core") == 0) {
@@ -508,16 +507,10 @@ void *PairPolyhedron::extract(const char *str, int &dim)
   dim = 2;
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
   if (strcmp(str, "friction") == 0) return (void *) friction;
-  if (strcmp(str, "rolling") == 0) return (void *) rolling;
-  if (strcmp(str, "cohesion") == 0) return (void *) cohesion;
   dim = 1;
   if (strcmp(str, "youngs") == 0) return (void *) youngs;
   if (strcmp(str, "poisson") == 0) return (void *) poisson;
-  if (strcmp(str, "counters") == 0) return (void *) counters;
-  dim = 0;    // rolling k_r factor and dashpot ratio (fix wall/mesh)
-  if (strcmp(str, "rolling_kr") == 0) return (void *) &roll_kr;
-  if (strcmp(str, "rolling_eta") == 0) return (void *) &roll_eta;
-  return nullptr;
+  return extract_models(str, dim);
 }
 
 double PairPolyhedron::memory_usage()

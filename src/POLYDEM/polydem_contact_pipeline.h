@@ -203,8 +203,7 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   PairContactResult<T> r;
   r.contact = 1;
   count[PP_CONTACTS] += C(1);
-  const T si = a.s, sj = b.s;
-  const T Vi = a.view->volume * si * si * si, Vj = b.view->volume * sj * sj * sj;
+  const T Vi = posed_volume(a), Vj = posed_volume(b);
   r.vmin = Vi < Vj ? Vi : Vj;
   if (ov.volume > tab.overlap_warn * r.vmin) count[PP_BIGOVERLAP] += C(1);
 
@@ -272,8 +271,7 @@ POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const
                                                    A.m * B.m / (A.m + B.m), T(0), A.m, B.m);
   r.cf = ContactForce<T>{};
   add_bridge(g, law, kin, r.cf);
-  const T si = a.s, sj = b.s;
-  const T Vi = a.view->volume * si * si * si, Vj = b.view->volume * sj * sj * sj;
+  const T Vi = posed_volume(a), Vj = posed_volume(b);
   r.vmin = Vi < Vj ? Vi : Vj;
   return r;
 }
@@ -348,8 +346,7 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   if (r.contact) {
     r.geo.volume = volume;
     r.geo.area = area;
-    const T si = A.shape.s, sj = B.shape.s;
-    const T Vi = A.shape.view->volume * si * si * si, Vj = B.shape.view->volume * sj * sj * sj;
+    const T Vi = posed_volume(A.shape), Vj = posed_volume(B.shape);
     r.vmin = Vi < Vj ? Vi : Vj;
   }
   return r;

@@ -56,6 +56,12 @@ template <typename T> POLYDEM_FN T posed_radius(const PosedShape<T> &a)
   return a.s * a.view->radius;
 }
 
+// Volume of the posed shape s^3 V [length^3]
+template <typename T> POLYDEM_FN T posed_volume(const PosedShape<T> &a)
+{
+  return a.view->volume * a.s * a.s * a.s;
+}
+
 // Index of the point of P (np points, xyz) maximising d . p. With an
 // adjacency (vadj layout of ShapeView: the edges of the convex polytope
 // whose vertices the points are, in any affine image): hill climbing along

@@ -36,6 +36,17 @@ inline double numeric(const char *file, int line, const char *word, LAMMPS_NS::L
   return LAMMPS_NS::utils::numeric(file, line, word ? word : "", false, lmp);
 }
 
+// a keyword of two words: true for `first`, false for `second`, else an
+// error "cmd: kw expects first or second, got 'word'"
+inline bool choice(const char *file, int line, LAMMPS_NS::LAMMPS *lmp, const std::string &cmd,
+                   const char *kw, const char *word, const char *first, const char *second)
+{
+  const std::string w = word ? word : "";
+  if (w != first && w != second)
+    lmp->error->all(file, line, "{}: {} expects {} or {}, got '{}'", cmd, kw, first, second, w);
+  return w == first;
+}
+
 // a finite number written in full; cmd names the command in the message
 inline double number(const char *file, int line, const char *word, LAMMPS_NS::LAMMPS *lmp,
                      const std::string &cmd)

@@ -72,11 +72,8 @@ void PolyhedronShape::command(int narg, char **arg)
   bool hull = false;
   for (int iarg = 2; iarg < narg; iarg += 2) {
     if (strcmp(arg[iarg], "hull") == 0) {
-      if (iarg + 1 >= narg) error->all(FLERR, "polyhedron_shape: keyword 'hull' needs yes or no");
-      const std::string v = arg[iarg + 1];
-      if (v == "yes") hull = true;
-      else if (v == "no") hull = false;
-      else error->all(FLERR, "polyhedron_shape: keyword 'hull' needs yes or no, got '{}'", v);
+      hull = polydem_parse::choice(FLERR, lmp, "polyhedron_shape", "hull",
+                                   iarg + 1 < narg ? arg[iarg + 1] : nullptr, "yes", "no");
     } else
       error->all(FLERR, "polyhedron_shape: unknown keyword '{}'", arg[iarg]);
   }
