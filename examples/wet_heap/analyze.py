@@ -3,6 +3,7 @@
 (heap_<Bo>.txt of in.heap), and the picture wet_heap.png.
     /usr/bin/python3 analyze.py [Bo ...]
     /usr/bin/python3 analyze.py --rolling [mu_r ...]   (dry heaps, rolling_heap.png)
+    /usr/bin/python3 analyze.py --poured [mu_r ...]    (in.pour's heaps, poured_heap.png)
 The heap's surface: the highest sphere top (z + r) in radial rings 1 mm wide
 about the heap's axis (its grains' mean x, y), measured from the top of the
 rough floor (the fixed spheres' tops, z = 2.1 mm); the angle of repose is
@@ -76,7 +77,43 @@ def rolling(murs):
     print("wrote rolling_heap.png")
 
 
+def poured(murs):
+    """heaps poured onto the fixed base (in.pour: poured_<mu_r>.txt) against the
+    rolling friction mu_r; only grains on the base (r < 35 mm, z > 0) count"""
+    print("| mu_r | grains on the base | heap height (mm) | angle of repose (deg) |")
+    print("|---|---|---|---|")
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
+    res = []
+    for k, m in enumerate(murs):
+        d = load(f"poured_{m}.txt")
+        keep = (np.hypot(d["x"], d["y"]) < 0.035) & (d["z"] > 0.0)
+        d = {key: v[keep] for key, v in d.items()}
+        r, h, rr, top = surface(d)
+        th, slope, icpt, sel, H = angle(r, h)
+        res.append((float(m), th))
+        print(f"| {m} | {keep.sum()} | {H * 1e3:.1f} | {th:.1f} |")
+        c = f"C{k}"
+        ax[0].plot(r * 1e3, h * 1e3, "-", color=c, label=f"$\\mu_r$ = {m}: {th:.1f}°")
+        x = r[sel]
+        ax[0].plot(x * 1e3, (slope * x + icpt) * 1e3, "--", color=c, lw=0.8)
+    ax[0].set_xlabel("distance from the heap's axis (mm)")
+    ax[0].set_ylabel("height above the rough base (mm)")
+    ax[0].set_title("poured heaps on a 70 mm base (line: surface; dashed: fit)", fontsize=9)
+    ax[0].legend(fontsize=8)
+    res = np.array(res)
+    ax[1].plot(res[:, 0], res[:, 1], "o-")
+    ax[1].set_xlabel("rolling friction $\\mu_r$ (EPSD)")
+    ax[1].set_ylabel("angle of repose (deg)")
+    ax[1].set_title("dry poured heaps: rolling resistance steepens them", fontsize=9)
+    fig.tight_layout()
+    fig.savefig("poured_heap.png")
+    print("wrote poured_heap.png")
+
+
 def main():
+    if len(sys.argv) > 1 and sys.argv[1] == "--poured":
+        poured(sys.argv[2:] if len(sys.argv) > 2 else ["0", "0.05", "0.1", "0.2"])
+        return
     if len(sys.argv) > 1 and sys.argv[1] == "--rolling":
         rolling(sys.argv[2:] if len(sys.argv) > 2 else ["0", "0.05", "0.1", "0.2", "0.4"])
         return

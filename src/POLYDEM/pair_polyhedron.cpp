@@ -461,8 +461,9 @@ void PairPolyhedron::report_counters()
                         "overlaps beyond overlap/warn of the smaller particle volume",
                         "part contacts of composites beyond the pair's history slots (friction "
                         "without history)",
-                        "contact-steps of grains that are not both spheres under a liquid bridge "
-                        "law (bridges act between spheres only; none there)"};
+                        "contact-steps under a liquid bridge law of grains that get no bridge "
+                        "(bridges act between two spheres and between a sphere and a convex "
+                        "polyhedron, not between polyhedra, unequal ellipsoids or composites' parts)"};
   PairPolydem::report_counters(what, polydem::PP_CONTACTS);
 }
 

@@ -191,14 +191,104 @@ POLYDEM_FN OverlapResult<T> convex_overlap(const PosedShape<T> &A, const PosedSh
   return ov;
 }
 
+// a convex polyhedron template (not an ellipsoid, not a composite)
+template <typename T> POLYDEM_FN bool view_is_convex_polyhedron(const ShapeView<T> &v)
+{
+  return !view_is_ellipsoid(v) && !view_is_composite(v);
+}
+
+// Signed distance from the point c to the surface of the posed convex
+// polyhedron b: outside, |p - c| to its nearest point p (on a face, an edge
+// or a vertex: the nearest of the closest points of the fan triangles of
+// the faces c sees); inside (or on it), minus the distance to the nearest
+// face plane, p the foot on it. n: the unit direction from c towards b at
+// p ((p - c)/|p - c| outside, minus that face's normal inside). The
+// distance's gradient is -n in c and (p - x_b) x n in b's rotation.
+template <typename T>
+POLYDEM_FN T point_polyhedron_distance(const Vec3<T> &c, const PosedShape<T> &b, Vec3<T> &n,
+                                       Vec3<T> &p)
+{
+  const ShapeView<T> &v = *b.view;
+  auto vertex = [&](int i) {
+    const T *q = v.verts + 3 * i;
+    return b.x + b.s * matvec(b.R, make_vec3(q[0], q[1], q[2]));
+  };
+  T dmax = T(-1e300);
+  Vec3<T> nmax = make_vec3(T(0), T(0), T(1));
+  T best = T(-1);
+  for (int f = 0; f < v.nfaces; ++f) {
+    const T *q = v.planes + 4 * f;
+    const Vec3<T> nf = matvec(b.R, make_vec3(q[0], q[1], q[2]));
+    const T d = dot(nf, c - b.x) - b.s * q[3];    // above the face's plane
+    if (d > dmax) {
+      dmax = d;
+      nmax = nf;
+    }
+    if (!(d > T(0))) continue;
+    // the face's convex polygon as a fan from its first vertex
+    const int k0 = v.face_start[f], k1 = v.face_start[f + 1];
+    const Vec3<T> p0 = vertex(v.face_verts[k0]);
+    Vec3<T> pj = vertex(v.face_verts[k0 + 1]);
+    for (int k = k0 + 2; k < k1; ++k) {
+      const Vec3<T> pk = vertex(v.face_verts[k]);
+      int face;
+      const Vec3<T> y = triangle_closest_point(c, p0, pj, pk, face);
+      const T d2 = norm2(y - c);
+      if (best < T(0) || d2 < best) {
+        best = d2;
+        p = y;
+      }
+      pj = pk;
+    }
+  }
+  if (!(dmax > T(0)) || !(best > T(0))) {    // inside or on the surface
+    n = -nmax;
+    p = c - dmax * nmax;
+    return dmax;
+  }
+  const T dist = sqrt(best);
+  n = (T(1) / dist) * (p - c);
+  return dist;
+}
+
+// The liquid bridge of a sphere sph and a convex polyhedron poly (pair_coeff
+// ... bridge): the gap s = d(c) - r from the sphere's centre c to the
+// polyhedron's surface (point_polyhedron_distance; negative in overlap) and
+// Willett's force with the sphere-plane radius R = 2 r, the pull F(s) n on
+// the sphere through its centre and -F(s) n on the polyhedron at p: the
+// exact gradient of U(s) (bridge_energy) in both bodies' positions and
+// rotations. A is the sphere if sphere_first. Adds to out; false (nothing
+// added) at or beyond the rupture distance.
+template <typename T, typename Out>
+POLYDEM_FN bool sphere_polyhedron_bridge(const PosedShape<T> &sph, const PosedShape<T> &poly,
+                                         BridgeLaw<T> law, bool sphere_first,
+                                         const ContactKinematics<T> &kin, Out &out)
+{
+  const T r = posed_sphere_radius(sph);
+  Vec3<T> n, p;
+  const T s = point_polyhedron_distance(sph.x, poly, n, p) - r;
+  if (!(s < law.rupture)) return false;
+  law.R = T(2) * r;
+  ContactGeometry<T> g{};
+  g.normal = sphere_first ? n : -n;
+  g.centroid = p;
+  g.has_gap = 1;
+  g.gap = s;
+  add_bridge(g, law, kin, out);
+  return true;
+}
+
 // The contact of convex shapes a (of body A) and b (of body B) with overlap
 // ov: the law of their volumes, the bodies' kinematics about their centres,
-// the history h (nhist values, or null), counted.
+// the history h (nhist values, or null), counted. bridges: a liquid bridge
+// law acts (two spheres, a sphere and a polyhedron); false for the parts of
+// composites, whose bridges are not kept across a gap (counted as PP_NOBRIDGE).
 template <typename T, typename C>
 POLYDEM_FN PairContactResult<T>
 convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
                     const PosedShape<T> &a, const PosedShape<T> &b, const OverlapResult<T> &ov,
-                    const LawTable<T> &tab, T dt, bool update, T *h, C *count)
+                    const LawTable<T> &tab, T dt, bool update, T *h, C *count,
+                    bool bridges = true)
 {
   PairContactResult<T> r;
   r.contact = 1;
@@ -221,15 +311,25 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     if (ra > T(0) && pb) law.rolling.R = ra;
     if (rb > T(0) && pa) law.rolling.R = rb;
   }
+  // liquid bridge: between spheres, the gap along the line of centres (in
+  // the contact law); a sphere and a polyhedron, the gap to its surface
+  // (added after the contact law, sphere_polyhedron_bridge)
+  BridgeLaw<T> sphere_poly = law.bridge;
+  sphere_poly.volume = T(0);
   if (law.bridge.volume > T(0)) {
-    // liquid bridge: between spheres, the gap along the line of centres
     const T ra = posed_sphere_radius(a), rb = posed_sphere_radius(b);
-    if (ra > T(0) && rb > T(0)) {
+    if (bridges && ra > T(0) && rb > T(0)) {
       law.bridge.R = T(2) * ra * rb / (ra + rb);
       r.geo.has_gap = 1;
       r.geo.gap = norm(b.x - a.x) - ra - rb;
-    } else
-      count[PP_NOBRIDGE] += C(1);
+    } else {
+      if (bridges && ((ra > T(0) && view_is_convex_polyhedron(*b.view)) ||
+                      (rb > T(0) && view_is_convex_polyhedron(*a.view))))
+        sphere_poly = law.bridge;
+      else
+        count[PP_NOBRIDGE] += C(1);
+      law.bridge.volume = T(0);
+    }
   }
   // dV/dtheta about the bodies' centres (Feng's Eq. 9 torques): rotating a
   // part about its body's centre also moves it by theta x (x_part - x_body)
@@ -237,13 +337,18 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   r.geo.M_B -= cross(b.x - B.shape.x, ov.S_A);
   r.cf = pair_contact_step(r.geo, law, kin, h, tab.nhist,
                            T(contact_history_sign(A.tag, B.tag)), update);
+  if (sphere_poly.volume > T(0)) {
+    const bool sa = posed_sphere_radius(a) > T(0);
+    sphere_polyhedron_bridge(sa ? a : b, sa ? b : a, sphere_poly, sa, kin, r.cf);
+  }
   return r;
 }
 
-// Two separated spheres a, b whose liquid bridge formed when they touched
-// (the pair's touch flag): the bridge's pull while the gap is below its
-// rupture distance (contact = 2: no overlap, the pair stays flagged), else
-// none (contact = 0: ruptured). The history (friction, rolling) is cleared.
+// Two separated spheres a, b, or a separated sphere and convex polyhedron,
+// whose liquid bridge formed when they touched (the pair's touch flag): the
+// bridge's pull while the gap is below its rupture distance (contact = 2:
+// no overlap, the pair stays flagged), else none (contact = 0: ruptured).
+// The history (friction, rolling) is cleared.
 template <typename T>
 POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
                                                const PosedShape<T> &a, const PosedShape<T> &b,
@@ -253,7 +358,22 @@ POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const
   r.contact = 0;
   const LawEntry<T> &e = tab.pair(A.type, B.type);
   const T ra = posed_sphere_radius(a), rb = posed_sphere_radius(b);
-  if (!(e.bridge.volume > T(0)) || !(ra > T(0) && rb > T(0))) return r;
+  if (!(e.bridge.volume > T(0))) return r;
+  if ((ra > T(0)) != (rb > T(0)) &&
+      view_is_convex_polyhedron(ra > T(0) ? *b.view : *a.view)) {
+    const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
+                                                     A.m * B.m / (A.m + B.m), T(0), A.m, B.m);
+    r.cf = ContactForce<T>{};
+    const bool sa = ra > T(0);
+    if (!sphere_polyhedron_bridge(sa ? a : b, sa ? b : a, e.bridge, sa, kin, r.cf)) return r;
+    r.contact = 2;
+    r.geo = ContactGeometry<T>{};
+    r.geo.normal = (T(1) / norm(r.cf.F_A)) * r.cf.F_A;
+    const T Vi = posed_volume(a), Vj = posed_volume(b);
+    r.vmin = Vi < Vj ? Vi : Vj;
+    return r;
+  }
+  if (!(ra > T(0) && rb > T(0))) return r;
   const Vec3<T> d = b.x - a.x;
   const T dist = norm(d);
   const T gap = dist - ra - rb;
@@ -321,8 +441,8 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
             slot[0] = key;
           }
       if (!slot && update) count[PP_NOSLOT] += C(1);    // more part contacts than slots
-      const PairContactResult<T> c =
-          convex_contact_step(A, B, a, b, ov, tab, dt, update, slot ? slot + 1 : nullptr, count);
+      const PairContactResult<T> c = convex_contact_step(A, B, a, b, ov, tab, dt, update,
+                                                         slot ? slot + 1 : nullptr, count, false);
       if (!r.contact) {
         r.cf = c.cf;
       } else {

@@ -13,6 +13,11 @@
 //    the bridge's energy at contact, |U(0)|, up to F(0) v dt;
 //  - a stretched bridge continues bit for bit after write_restart /
 //    read_restart;
+//  - a sphere and a convex polyhedron (a cube): Willett's force with the
+//    sphere-plane radius 2 r across the gap to the cube's nearest point, on
+//    the sphere through its centre and on the cube at that point, to 1e-12;
+//    an off-centre elastic impact that spins the cube keeps the energy
+//    from the bridge's formation on (2e-6) and loses |U(0)|;
 //  - errors: pair_style ellipsoid, a skin below s_c, a bad angle.
 #include "polydem_lmp.h"
 
@@ -160,6 +165,137 @@ TEST(Bridge, CollisionLosesTheBridgeEnergy)
   EXPECT_LE(dev, 2e-6 * K0);
   EXPECT_NEAR(K1, E_formed, 2e-6 * K0);
   EXPECT_NEAR(K0 - K1, -U0, willett(0.0) * 2.0 * v * dt);
+}
+
+// A sphere (r = 1 mm) and a cube (edge 4 mm, scale of cube.shape), the
+// sphere above the cube's top face at (x0, y0): the sphere and the cube in
+// the pair's order `order` (1: sphere first)
+namespace {
+constexpr double CUBE = 4e-3;
+void sphere_and_cube(Lmp &l, double x0, double y0, double z, double e, int order)
+{
+  const std::string sph = "create_atoms 1 single " + num(x0) + " " + num(y0) + " " + num(z);
+  const std::string cube = "create_atoms 1 single 0 0 0";
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01",
+          "create_box 1 box", "polyhedron_shape s ellipsoid " + num(R1) + " " + num(R1) + " " +
+              num(R1),
+          "polyhedron_shape c " + polydem_test::potentials() + "/cube.shape",
+          order == 1 ? sph : cube, order == 1 ? cube : sph});
+  const int is = order == 1 ? 1 : 2, ic = 3 - is;
+  l.cmds({"polyhedron_set atom " + std::to_string(is) + " shape s",
+          "polyhedron_set atom " + std::to_string(ic) + " shape c scale " + num(CUBE),
+          "polyhedron_set group all density 2500", "pair_style polyhedron",
+          "pair_coeff * * 1e7 0.3 " + num(e) + " 0.0" + BRIDGE, "neighbor 3e-4 bin",
+          "compute er all erotate/polyhedron", "thermo_style custom step pe ke c_er",
+          "thermo_modify norm no"});
+}
+// Willett's force with the sphere-plane radius 2 r (the sphere on a face)
+double willett_plane(double s)
+{
+  const double R = 2.0 * R1, u = (s > 0.0 ? s : 0.0) * std::sqrt(R / VB);
+  return 2.0 * M_PI * R * GAMMA * std::cos(THETA) / (1.0 + 1.05 * u + 2.5 * u * u);
+}
+}    // namespace
+
+// Sphere and polyhedron: formed in contact, then across the gap Willett's
+// force with R = 2 r to the nearest point of the cube (a face, then beyond
+// an edge), on the sphere through its centre and on the cube at that point
+// (its torque), in either pair order; nothing beyond s_c.
+TEST(Bridge, SphereOnAPolyhedronFollowsWillett)
+{
+  const double h = 0.5 * CUBE;
+  for (int order : {1, 2}) {
+    Lmp l;
+    sphere_and_cube(l, 0.3 * h, 0.0, h + R1 - 1e-9, 1.0, order);
+    l.cmd("run 0");    // touching: the bridge forms
+    auto *a = l.lmp->atom;
+    const int is = a->map(order == 1 ? 1 : 2), ic = a->map(order == 1 ? 2 : 1);
+    double worst = 0.0;
+    for (double f : {0.0, 0.1, 0.4, 0.8, 0.999}) {
+      const double s = f * SC;
+      l.cmd("set atom " + std::to_string(order == 1 ? 1 : 2) + " z " + num(h + R1 + s));
+      l.cmd("run 0");
+      const double Fw = willett_plane(s);
+      worst = std::fmax(worst, std::fabs(-a->f[is][2] / Fw - 1.0));
+      EXPECT_NEAR(a->f[ic][2], Fw, 1e-12 * Fw) << f;
+      EXPECT_NEAR(a->f[is][0], 0.0, 1e-12 * Fw) << f;
+      // the cube's torque: the pull -F at the face point (0.3 h, 0, h)
+      EXPECT_NEAR(a->torque[ic][1], -0.3 * h * Fw, 1e-12 * Fw * h) << f;
+      EXPECT_NEAR(a->torque[is][1], 0.0, 1e-12 * Fw * h) << f;
+    }
+    // beyond the edge x = h: the pull towards the edge's nearest point
+    const double ex = 0.3 * SC, ez = 0.4 * SC, dist = R1 + 0.5 * SC;
+    l.cmd("set atom " + std::to_string(order == 1 ? 1 : 2) + " x " + num(h + ex * dist / (0.5 * SC)) +
+          " z " + num(h + ez * dist / (0.5 * SC)));
+    l.cmd("run 0");
+    const double Fw = willett_plane(0.5 * SC);
+    EXPECT_NEAR(a->f[is][0], -Fw * 0.6, 1e-12 * Fw);
+    EXPECT_NEAR(a->f[is][2], -Fw * 0.8, 1e-12 * Fw);
+    std::printf("[ bridge   ] sphere on a cube (order %d): F(s) against Willett with R = 2r: "
+                "largest relative difference %.2g\n", order, worst);
+    EXPECT_LT(worst, 1e-12);
+    // beyond s_c: gone
+    l.cmd("set atom " + std::to_string(order == 1 ? 1 : 2) + " x 0 z " + num(h + R1 + 1.001 * SC));
+    l.cmd("run 0");
+    EXPECT_EQ(a->f[is][2], 0.0);
+    EXPECT_EQ(l.lmp->force->pair->eng_vdwl, 0.0);
+  }
+}
+
+// An elastic oblique impact of the sphere on the cube off its centre (e =
+// 1, no friction): the cube is pushed and spun. From the step the bridge
+// forms to after it ruptured, kinetic (both) + rotational + pair energy is
+// constant (2e-6 of the kinetic energy), and the bodies leave with the
+// energy they came with less |U(0)| (up to F(0) v dt).
+TEST(Bridge, SphereOnAPolyhedronKeepsTheEnergy)
+{
+  const double h = 0.5 * CUBE, v = 0.15, dt = 1e-7;
+  Lmp l;
+  sphere_and_cube(l, 0.5 * h, 0.2 * h, h + R1 + 5e-5, 1.0, 1);
+  l.cmds({"velocity all set 0 0 0", "set atom 1 vz " + num(-v) + " vx " + num(0.2 * v),
+          "fix 1 all nve/polyhedron", "timestep " + num(dt), "thermo 100", "run 0"});
+  auto *a = l.lmp->atom;
+  auto energy = [&]() {
+    double k = l.thermo("c_er");
+    for (int id : {1, 2}) {
+      const int i = a->map(id);
+      k += 0.5 * a->rmass[i] * (a->v[i][0] * a->v[i][0] + a->v[i][1] * a->v[i][1] +
+                                 a->v[i][2] * a->v[i][2]);
+    }
+    return k;
+  };
+  const double K0 = energy();
+  const double U0 = -0.0 + [] {
+    const int n = 20000;
+    const double hh = SC / n;
+    double sum = willett_plane(0.0) + willett_plane(SC);
+    for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett_plane(k * hh);
+    return -sum * hh / 3.0;
+  }();
+  double E_formed = 0.0, dev = 0.0, gap = 0.0;
+  bool formed = false;
+  for (int k = 0; k < 2000; k++) {
+    l.cmd("run 100 pre no post no");
+    const double E = energy() + l.lmp->force->pair->eng_vdwl;
+    if (!formed && l.lmp->force->pair->eng_vdwl < 0.0) {
+      formed = true;
+      E_formed = E;
+    }
+    if (formed) dev = std::fmax(dev, std::fabs(E - E_formed));
+    gap = a->x[a->map(1)][2] - a->x[a->map(2)][2] - h - R1;
+    if (formed && gap > 1.2 * SC) break;
+  }
+  ASSERT_TRUE(formed);
+  ASSERT_GT(gap, SC) << "the sphere did not leave";
+  const double K1 = energy();
+  std::printf("[ bridge   ] sphere on a cube: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, |U(0)| %.9e J, "
+              "cube spin energy %.3g J; energy from formation on constant to %.3g J\n", K0, K1,
+              K0 - K1, -U0, l.thermo("c_er"), dev);
+  EXPECT_GT(l.thermo("c_er"), 1e-3 * K0);    // the cube was spun
+  EXPECT_LE(dev, 2e-6 * K0);
+  EXPECT_NEAR(K1, E_formed, 2e-6 * K0);
+  EXPECT_NEAR(K0 - K1, -U0, willett_plane(0.0) * 2.0 * v * dt);
 }
 
 // A stretched bridge (separated spheres, the pair kept by its touch flag)

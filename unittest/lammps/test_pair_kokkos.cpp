@@ -280,7 +280,8 @@ TEST(PairKokkos, CompositesMatchPlain)
   EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
 }
 
-// all grains spheres joined by liquid bridges: the bridged pairs that no
+// all grains spheres (then a quarter spheres among polyhedra) joined by
+// liquid bridges: the bridged pairs that no
 // longer overlap are kept by their touch flags alike in both styles
 TEST(PairKokkos, LiquidBridgesMatchPlain)
 {
@@ -297,6 +298,17 @@ TEST(PairKokkos, LiquidBridgesMatchPlain)
   compare(plain, kk, "liquid bridges, run 100", true);
   // the bridges act: the run differs from the one without
   EXPECT_NE(plain.thermo("pe"), dry.thermo("pe"));
+  // a quarter spheres among the cubes and dodecahedra: sphere-polyhedron bridges
+  Lmp mplain, mkk(KK), mdry;
+  for (Lmp *l : {&mplain, &mkk, &mdry}) {
+    l->cmds(setup());
+    l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
+             "polyhedron_set group g0 shape ball density 1.0", "neighbor 0.15 bin"});
+  }
+  for (Lmp *l : {&mplain, &mkk}) l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10");
+  for (Lmp *l : {&mplain, &mkk, &mdry}) l->cmd("run 100");
+  compare(mplain, mkk, "liquid bridges of spheres and polyhedra, run 100", true);
+  EXPECT_NE(mplain.thermo("pe"), mdry.thermo("pe"));
 }
 
 // two spheres collide, form a liquid bridge, separate with it stretched
