@@ -71,10 +71,40 @@ def rolling(murs):
     ax.plot(res[:, 0], res[:, 1], "o-")
     ax.set_xlabel("rolling friction $\\mu_r$ (EPSD)")
     ax.set_ylabel("angle of repose (deg)")
-    ax.set_title("dry heaps (Bo = 0): rolling resistance steepens them", fontsize=9)
+    ax.set_title("dry slumped columns (Bo = 0) against rolling friction", fontsize=9)
     fig.tight_layout()
     fig.savefig("rolling_heap.png")
     print("wrote rolling_heap.png")
+
+
+def series(runs, dots, title, xlabel, ylabel, title2, png):
+    """profiles (left) and the angle of repose against the run's parameter
+    (right) of runs = [(value, label text, positions)], written to png"""
+    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
+    res = []
+    for k, (value, text, d) in enumerate(runs):
+        r, h, rr, top = surface(d)
+        th, slope, icpt, sel, H = angle(r, h)
+        res.append((value, th))
+        yield value, d, H, np.nanmax(r[np.isfinite(h)]), th
+        c = f"C{k}"
+        if dots:
+            ax[0].plot(rr * 1e3, top * 1e3, ".", ms=2, color=c, alpha=0.35)
+        ax[0].plot(r * 1e3, h * 1e3, "-", color=c, label=f"{text}: {th:.1f}°")
+        x = r[sel]
+        ax[0].plot(x * 1e3, (slope * x + icpt) * 1e3, "--", color=c, lw=0.8)
+    ax[0].set_xlabel("distance from the heap's axis (mm)")
+    ax[0].set_ylabel(ylabel)
+    ax[0].set_title(title, fontsize=9)
+    ax[0].legend(fontsize=8)
+    res = np.array(res)
+    ax[1].plot(res[:, 0], res[:, 1], "o-")
+    ax[1].set_xlabel(xlabel)
+    ax[1].set_ylabel("angle of repose (deg)")
+    ax[1].set_title(title2, fontsize=9)
+    fig.tight_layout()
+    fig.savefig(png)
+    print(f"wrote {png}")
 
 
 def poured(murs):
@@ -82,32 +112,18 @@ def poured(murs):
     rolling friction mu_r; only grains on the base (r < 35 mm, z > 0) count"""
     print("| mu_r | grains on the base | heap height (mm) | angle of repose (deg) |")
     print("|---|---|---|---|")
-    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
-    res = []
-    for k, m in enumerate(murs):
+    runs = []
+    for m in murs:
         d = load(f"poured_{m}.txt")
         keep = (np.hypot(d["x"], d["y"]) < 0.035) & (d["z"] > 0.0)
-        d = {key: v[keep] for key, v in d.items()}
-        r, h, rr, top = surface(d)
-        th, slope, icpt, sel, H = angle(r, h)
-        res.append((float(m), th))
-        print(f"| {m} | {keep.sum()} | {H * 1e3:.1f} | {th:.1f} |")
-        c = f"C{k}"
-        ax[0].plot(r * 1e3, h * 1e3, "-", color=c, label=f"$\\mu_r$ = {m}: {th:.1f}°")
-        x = r[sel]
-        ax[0].plot(x * 1e3, (slope * x + icpt) * 1e3, "--", color=c, lw=0.8)
-    ax[0].set_xlabel("distance from the heap's axis (mm)")
-    ax[0].set_ylabel("height above the rough base (mm)")
-    ax[0].set_title("poured heaps on a 70 mm base (line: surface; dashed: fit)", fontsize=9)
-    ax[0].legend(fontsize=8)
-    res = np.array(res)
-    ax[1].plot(res[:, 0], res[:, 1], "o-")
-    ax[1].set_xlabel("rolling friction $\\mu_r$ (EPSD)")
-    ax[1].set_ylabel("angle of repose (deg)")
-    ax[1].set_title("dry poured heaps: rolling resistance steepens them", fontsize=9)
-    fig.tight_layout()
-    fig.savefig("poured_heap.png")
-    print("wrote poured_heap.png")
+        runs.append((float(m), f"$\\mu_r$ = {m}", {key: v[keep] for key, v in d.items()}))
+    for m, d, H, foot, th in series(runs, False,
+                                    "poured heaps on a 70 mm base (line: surface; dashed: fit)",
+                                    "rolling friction $\\mu_r$ (EPSD)",
+                                    "height above the rough base (mm)",
+                                    "dry poured heaps against rolling resistance",
+                                    "poured_heap.png"):
+        print(f"| {m:g} | {len(d['x'])} | {H * 1e3:.1f} | {th:.1f} |")
 
 
 def main():
@@ -118,34 +134,15 @@ def main():
         rolling(sys.argv[2:] if len(sys.argv) > 2 else ["0", "0.05", "0.1", "0.2", "0.4"])
         return
     bos = sys.argv[1:] if len(sys.argv) > 1 else ["0", "1", "3", "10"]
-    fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
     print("| Bo | heap height (mm) | radius of the foot (mm) | angle of repose (deg) |")
     print("|---|---|---|---|")
-    res = []
-    for k, bo in enumerate(bos):
-        d = load(f"heap_{bo}.txt")
-        r, h, rr, top = surface(d)
-        th, slope, icpt, sel, H = angle(r, h)
-        foot = np.nanmax(r[np.isfinite(h)])
-        res.append((float(bo), th))
-        print(f"| {bo} | {H * 1e3:.1f} | {foot * 1e3:.1f} | {th:.1f} |")
-        c = f"C{k}"
-        ax[0].plot(rr * 1e3, top * 1e3, ".", ms=2, color=c, alpha=0.35)
-        ax[0].plot(r * 1e3, h * 1e3, "-", color=c, label=f"Bo = {bo}: {th:.0f}°")
-        x = r[sel]
-        ax[0].plot(x * 1e3, (slope * x + icpt) * 1e3, "--", color=c, lw=0.8)
-    ax[0].set_xlabel("distance from the heap's axis (mm)")
-    ax[0].set_ylabel("height above the rough floor (mm)")
-    ax[0].set_title("heap profiles (dots: sphere tops; line: surface; dashed: fit)", fontsize=9)
-    ax[0].legend(fontsize=8)
-    res = np.array(res)
-    ax[1].plot(res[:, 0], res[:, 1], "o-")
-    ax[1].set_xlabel("Bond number Bo = 2π r γ / (m g)")
-    ax[1].set_ylabel("angle of repose (deg)")
-    ax[1].set_title("wet heaps stand steeper", fontsize=9)
-    fig.tight_layout()
-    fig.savefig("wet_heap.png")
-    print("wrote wet_heap.png")
+    runs = [(float(bo), f"Bo = {bo}", load(f"heap_{bo}.txt")) for bo in bos]
+    for bo, d, H, foot, th in series(runs, True,
+                                     "heap profiles (dots: sphere tops; line: surface; dashed: fit)",
+                                     "Bond number Bo = 2π r γ / (m g)",
+                                     "height above the rough floor (mm)", "wet heaps stand steeper",
+                                     "wet_heap.png"):
+        print(f"| {bo:g} | {H * 1e3:.1f} | {foot * 1e3:.1f} | {th:.1f} |")
 
 
 if __name__ == "__main__":

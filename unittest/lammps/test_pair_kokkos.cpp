@@ -285,30 +285,22 @@ TEST(PairKokkos, CompositesMatchPlain)
 // longer overlap are kept by their touch flags alike in both styles
 TEST(PairKokkos, LiquidBridgesMatchPlain)
 {
-  Lmp plain, kk(KK), dry;
-  for (Lmp *l : {&plain, &kk, &dry}) {
-    l->cmds(setup());
-    l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
-             "polyhedron_set group all shape ball density 1.0", "neighbor 0.15 bin"});
+  // all spheres; a quarter spheres among the cubes and dodecahedra (group
+  // g0): sphere-polyhedron bridges
+  for (const std::string group : {"all", "g0"}) {
+    Lmp plain, kk(KK), dry;
+    for (Lmp *l : {&plain, &kk, &dry}) {
+      l->cmds(setup());
+      l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
+               "polyhedron_set group " + group + " shape ball density 1.0", "neighbor 0.15 bin"});
+    }
+    for (Lmp *l : {&plain, &kk}) l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10");
+    for (Lmp *l : {&plain, &kk, &dry}) l->cmd("run 100");
+    compare(plain, kk, group == "all" ? "liquid bridges, run 100" :
+                                        "liquid bridges of spheres and polyhedra, run 100", true);
+    // the bridges act: the run differs from the one without
+    EXPECT_NE(plain.thermo("pe"), dry.thermo("pe"));
   }
-  for (Lmp *l : {&plain, &kk}) l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10");
-  plain.cmd("run 100");
-  kk.cmd("run 100");
-  dry.cmd("run 100");
-  compare(plain, kk, "liquid bridges, run 100", true);
-  // the bridges act: the run differs from the one without
-  EXPECT_NE(plain.thermo("pe"), dry.thermo("pe"));
-  // a quarter spheres among the cubes and dodecahedra: sphere-polyhedron bridges
-  Lmp mplain, mkk(KK), mdry;
-  for (Lmp *l : {&mplain, &mkk, &mdry}) {
-    l->cmds(setup());
-    l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
-             "polyhedron_set group g0 shape ball density 1.0", "neighbor 0.15 bin"});
-  }
-  for (Lmp *l : {&mplain, &mkk}) l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10");
-  for (Lmp *l : {&mplain, &mkk, &mdry}) l->cmd("run 100");
-  compare(mplain, mkk, "liquid bridges of spheres and polyhedra, run 100", true);
-  EXPECT_NE(mplain.thermo("pe"), mdry.thermo("pe"));
 }
 
 // two spheres collide, form a liquid bridge, separate with it stretched

@@ -322,6 +322,30 @@ double willett_wall(double s)
   return 2.0 * M_PI * Rb * BGAMMA * std::cos(BTHETA * M_PI / 180.0) / (1.0 + 1.05 * u + 2.5 * u * u);
 }
 double rupture_gap() { return (1.0 + 0.5 * BTHETA * M_PI / 180.0) * std::cbrt(BV); }
+// the floor mesh (its file name)
+std::string bridge_floor()
+{
+  const std::string stl = tmpdir() + "/bridge_floor.stl";
+  write_ascii(stl, flat(-0.1, 0.1, -0.1, 0.1, 0.0, 3, 3));
+  return stl;
+}
+std::string bridge_fix(const std::string &stl)
+{
+  return "fix w all wall/mesh " + stl + " bridge " + num(BV) + " " + num(BGAMMA) + " " + num(BTHETA);
+}
+// a sphere touching the floor (overlap 1e-8 m), no gravity, the wall with
+// the bridge; one step forms the bridge, then the sphere is given the
+// upward velocity v0
+void bridge_scene(Lmp &l, const std::string &stl, double v0)
+{
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
+          "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
+          "create_atoms 1 single 0 0 " + num(R - 1e-8), "polyhedron_set atom 1 density " + num(RHO),
+          "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5", "neighbor 0.001 bin",
+          "fix nve all nve/polyhedron", bridge_fix(stl), "timestep 5e-5", "run 1",
+          "velocity all set 0 0 " + num(v0)});
+}
 // U(s) = -int_s^s_c F (Simpson, 4,000 intervals)
 double willett_energy(double s)
 {
@@ -335,21 +359,12 @@ double willett_energy(double s)
 
 TEST(WallBridge, LiftedSphereKeepsItsEnergyAndRuptures)
 {
-  const std::string stl = tmpdir() + "/bridge_floor.stl";
-  write_ascii(stl, flat(-0.1, 0.1, -0.1, 0.1, 0.0, 3, 3));
+  const std::string stl = bridge_floor();
   const double m = RHO * 4.0 / 3.0 * M_PI * R * R * R, sc = rupture_gap();
   const double U0 = willett_energy(0.0);
   for (double v0 : {0.015, 0.03}) {
     Lmp l;
-    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-            "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
-            "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
-            "create_atoms 1 single 0 0 " + num(R - 1e-8), "polyhedron_set atom 1 density " + num(RHO),
-            "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5", "neighbor 0.001 bin",
-            "fix nve all nve/polyhedron",
-            "fix w all wall/mesh " + stl + " bridge " + num(BV) + " " + num(BGAMMA) + " " +
-                num(BTHETA),
-            "timestep 5e-5", "run 1", "velocity all set 0 0 " + num(v0)});
+    bridge_scene(l, stl, v0);
     auto *a = l.lmp->atom;
     LAMMPS_NS::Fix *w = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
     double E1 = 0.0, s1 = -1.0, drift = 0.0, smax = 0.0, vfinal = 0.0;
@@ -413,20 +428,12 @@ TEST(WallBridge, LiftedSphereKeepsItsEnergyAndRuptures)
 // still rising) is in the restart file: the run continues bit for bit
 TEST(WallBridge, StretchedBridgeRestartsExactly)
 {
-  const std::string stl = tmpdir() + "/bridge_floor.stl", rst = tmpdir() + "/bridge_wall.restart";
-  write_ascii(stl, flat(-0.1, 0.1, -0.1, 0.1, 0.0, 3, 3));
-  const std::string fix = "fix w all wall/mesh " + stl + " bridge " + num(BV) + " " + num(BGAMMA) +
-      " " + num(BTHETA);
+  const std::string stl = bridge_floor(), rst = tmpdir() + "/bridge_wall.restart";
   double ref[2], gap = 0.0;
   {
     Lmp l;
-    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-            "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
-            "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
-            "create_atoms 1 single 0 0 " + num(R - 1e-8), "polyhedron_set atom 1 density " + num(RHO),
-            "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5", "neighbor 0.001 bin",
-            "fix nve all nve/polyhedron", fix, "timestep 5e-5", "run 1",
-            "velocity all set 0 0 0.02", "run 200"});
+    bridge_scene(l, stl, 0.02);
+    l.cmd("run 200");
     gap = l.lmp->atom->x[0][2] - R;
     l.cmds({"write_restart " + rst, "run 400"});
     ref[0] = l.lmp->atom->x[0][2];
@@ -434,7 +441,7 @@ TEST(WallBridge, StretchedBridgeRestartsExactly)
   }
   Lmp l;
   l.cmds({"read_restart " + rst, "comm_modify vel yes", "neighbor 0.001 bin",
-          "fix nve all nve/polyhedron", fix, "timestep 5e-5", "run 400"});
+          "fix nve all nve/polyhedron", bridge_fix(stl), "timestep 5e-5", "run 400"});
   std::printf("[ wall bridge ] restart at a gap of %.4g m (s_c %.4g m): z %.17g / %.17g\n", gap,
               rupture_gap(), l.lmp->atom->x[0][2], ref[0]);
   EXPECT_GT(gap, 0.0);
