@@ -180,8 +180,12 @@ void compare(Lmp &plain, Lmp &kk, const char *when, bool positions)
   EXPECT_LE(pf, 1e-10);
   EXPECT_LE(pt, 1e-10);
   if (positions) {
-    EXPECT_LE(ex, 1e-12);
-    EXPECT_LE(ev, 1e-12);
+    // with threads the force sums are reordered from run to run (atomics)
+    // and their round-off grows over a run's 100 steps (up to 1.03e-12 in v
+    // seen for the composites on 2 threads); one thread repeats exactly
+    const double tol = polydem_test::kk_threads() > 1 ? 1e-11 : 1e-12;
+    EXPECT_LE(ex, tol);
+    EXPECT_LE(ev, tol);
   }
   EXPECT_GT(contacts(plain), 0.5 * b.size() / REC);
   EXPECT_EQ(contacts(plain), contacts(kk));
