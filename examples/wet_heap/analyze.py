@@ -77,22 +77,27 @@ def rolling(murs):
     print("wrote rolling_heap.png")
 
 
-def series(runs, dots, title, xlabel, ylabel, title2, png):
-    """profiles (left) and the angle of repose against the run's parameter
-    (right) of runs = [(value, label text, positions)], written to png"""
+def series(runs, dots, title, xlabel, ylabel, title2, png, base=None):
+    """profiles (left) and the angle against the run's parameter (right) of
+    runs = [(value, label text, positions)], written to png: the angle of
+    repose of the line fit (angle()), or with base (the radius of a fixed
+    base) the heap's mean slope atan(H / base), without fit lines"""
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2), dpi=110)
     res = []
     for k, (value, text, d) in enumerate(runs):
         r, h, rr, top = surface(d)
         th, slope, icpt, sel, H = angle(r, h)
+        if base:
+            th = math.degrees(math.atan(H / base))
         res.append((value, th))
         yield value, d, H, np.nanmax(r[np.isfinite(h)]), th
         c = f"C{k}"
         if dots:
             ax[0].plot(rr * 1e3, top * 1e3, ".", ms=2, color=c, alpha=0.35)
         ax[0].plot(r * 1e3, h * 1e3, "-", color=c, label=f"{text}: {th:.1f}°")
-        x = r[sel]
-        ax[0].plot(x * 1e3, (slope * x + icpt) * 1e3, "--", color=c, lw=0.8)
+        if not base:
+            x = r[sel]
+            ax[0].plot(x * 1e3, (slope * x + icpt) * 1e3, "--", color=c, lw=0.8)
     ax[0].set_xlabel("distance from the heap's axis (mm)")
     ax[0].set_ylabel(ylabel)
     ax[0].set_title(title, fontsize=9)
@@ -100,7 +105,7 @@ def series(runs, dots, title, xlabel, ylabel, title2, png):
     res = np.array(res)
     ax[1].plot(res[:, 0], res[:, 1], "o-")
     ax[1].set_xlabel(xlabel)
-    ax[1].set_ylabel("angle of repose (deg)")
+    ax[1].set_ylabel("mean slope atan(H / R) (deg)" if base else "angle of repose (deg)")
     ax[1].set_title(title2, fontsize=9)
     fig.tight_layout()
     fig.savefig(png)
@@ -109,20 +114,21 @@ def series(runs, dots, title, xlabel, ylabel, title2, png):
 
 def poured(murs):
     """heaps poured onto the fixed base (in.pour: poured_<mu_r>.txt) against the
-    rolling friction mu_r; only grains on the base (r < 35 mm, z > 0) count"""
-    print("| mu_r | grains on the base | heap height (mm) | angle of repose (deg) |")
+    rolling friction mu_r; only grains on the base (r < 35 mm, z > 0) count.
+    The heaps are flat-topped, so that a line fit gives no angle of repose:
+    their height H and mean slope atan(H / 35 mm)"""
+    print("| mu_r | grains on the base | heap height H (mm) | mean slope atan(H/R) (deg) |")
     print("|---|---|---|---|")
     runs = []
     for m in murs:
         d = load(f"poured_{m}.txt")
         keep = (np.hypot(d["x"], d["y"]) < 0.035) & (d["z"] > 0.0)
         runs.append((float(m), f"$\\mu_r$ = {m}", {key: v[keep] for key, v in d.items()}))
-    for m, d, H, foot, th in series(runs, False,
-                                    "poured heaps on a 70 mm base (line: surface; dashed: fit)",
+    for m, d, H, foot, th in series(runs, False, "heaps poured on a base of radius R = 35 mm",
                                     "rolling friction $\\mu_r$ (EPSD)",
                                     "height above the rough base (mm)",
                                     "dry poured heaps against rolling resistance",
-                                    "poured_heap.png"):
+                                    "poured_heap.png", base=0.035):
         print(f"| {m:g} | {len(d['x'])} | {H * 1e3:.1f} | {th:.1f} |")
 
 
