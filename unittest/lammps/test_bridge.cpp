@@ -17,7 +17,8 @@
 //    sphere-plane radius 2 r across the gap to the cube's nearest point, on
 //    the sphere through its centre and on the cube at that point, to 1e-12;
 //    an off-centre elastic impact that spins the cube keeps the energy
-//    from the bridge's formation on (2e-6) and loses |U(0)|;
+//    from the bridge's formation on (2e-6) and loses |U(0)|; a bridge
+//    stretched between them continues bit for bit after a restart;
 //  - errors: pair_style ellipsoid, a skin below s_c, a bad angle.
 #include "polydem_lmp.h"
 
@@ -327,6 +328,58 @@ TEST(Bridge, StretchedBridgeRestartsExactly)
   got[1] = a->v[a->map(2)][0];
   EXPECT_EQ(got[0], ref[0]);
   EXPECT_EQ(got[1], ref[1]);
+}
+
+// A bridge stretched between a sphere and a spun cube (the oblique impact
+// above, e = 0.7) continues bit for bit after a restart: positions,
+// velocities and spins of both bodies 3000 steps on
+TEST(Bridge, SphereCubeBridgeRestartsExactly)
+{
+  const std::string file = ::testing::TempDir() + "polydem_sphere_cube_bridge.bin";
+  const double h = 0.5 * CUBE, v = 0.15;
+  double ref[6][3];
+  auto state = [](Lmp &l, double out[6][3]) {
+    auto *a = l.lmp->atom;
+    for (int id : {1, 2}) {
+      const int i = a->map(id);
+      for (int d = 0; d < 3; d++) {
+        out[3 * (id - 1)][d] = a->x[i][d];
+        out[3 * (id - 1) + 1][d] = a->v[i][d];
+        out[3 * (id - 1) + 2][d] = a->omega[i][d];
+      }
+    }
+  };
+  {
+    Lmp l;
+    sphere_and_cube(l, 0.5 * h, 0.2 * h, h + R1 + 5e-5, 0.7, 1);
+    l.cmds({"velocity all set 0 0 0", "set atom 1 vz " + num(-v) + " vx " + num(0.2 * v),
+            "fix 1 all nve/polyhedron", "timestep 1e-7", "run 0"});
+    auto *a = l.lmp->atom;
+    bool formed = false;
+    double gap = 0.0;
+    for (int k = 0; k < 400; k++) {
+      l.cmd("run 500 pre no post no");
+      formed = formed || l.lmp->force->pair->eng_vdwl < 0.0;
+      gap = a->x[a->map(1)][2] - a->x[a->map(2)][2] - h - R1;
+      if (formed && gap > 0.3 * SC) break;
+    }
+    std::printf("[ bridge   ] sphere-cube gap at the restart %.4g m (s_c %.4g m), cube spin %.3g rad/s\n",
+                gap, SC, a->omega[a->map(2)][0]);
+    ASSERT_TRUE(formed);
+    ASSERT_GT(gap, 0.3 * SC);
+    ASSERT_LT(gap, SC);
+    ASSERT_LT(l.lmp->force->pair->eng_vdwl, 0.0);    // stretched, not ruptured
+    EXPECT_NE(a->omega[a->map(2)][0], 0.0);
+    l.cmds({"write_restart " + file, "run 3000"});
+    state(l, ref);
+  }
+  Lmp l;
+  l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 3e-4 bin",
+          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
+  double got[6][3];
+  state(l, got);
+  for (int k = 0; k < 6; k++)
+    for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
 }
 
 TEST(Bridge, Errors)
