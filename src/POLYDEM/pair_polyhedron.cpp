@@ -462,8 +462,8 @@ void PairPolyhedron::report_counters()
                         "part contacts of composites beyond the pair's history slots (friction "
                         "without history)",
                         "contact-steps under a liquid bridge law of grains that get no bridge "
-                        "(bridges act between two spheres and between a sphere and a convex "
-                        "polyhedron, not between polyhedra, unequal ellipsoids or composites' parts)"};
+                        "(bridges act between spheres and convex polyhedra, not on unequal "
+                        "ellipsoids or composites' parts)"};
   PairPolydem::report_counters(what, polydem::PP_CONTACTS);
 }
 

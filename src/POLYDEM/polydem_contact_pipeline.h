@@ -278,10 +278,74 @@ POLYDEM_FN bool sphere_polyhedron_bridge(const PosedShape<T> &sph, const PosedSh
   return true;
 }
 
+// Willett's radius for a liquid bridge between two convex polyhedra: the
+// Derjaguin mean 2 r_A r_B / (r_A + r_B) of their volume-equivalent sphere
+// radii r = (3 V / 4 pi)^(1/3) (a flat face has no curvature of its own; the
+// grains' size stands for it, as for clumps of spheres)
+template <typename T>
+POLYDEM_FN T polyhedron_bridge_radius(const PosedShape<T> &a, const PosedShape<T> &b)
+{
+  const T k = T(3) / (T(4) * T(3.14159265358979323846));
+  const T ra = cbrt(k * posed_volume(a)), rb = cbrt(k * posed_volume(b));
+  return T(2) * ra * rb / (ra + rb);
+}
+
+// The liquid bridge of two convex polyhedra a and b (pair_coeff ... bridge):
+// Willett's force with R = polyhedron_bridge_radius at their signed distance
+// s, the distance of their nearest points (gjk_witness) while apart, minus
+// their penetration depth (epa_penetration) while they overlap, so that s is
+// continuous through contact and U(s) (bridge_energy) has the pull F(s) n
+// on A and -F(s) n on B along the line of the witness points as its exact
+// gradient in both bodies' positions and rotations (where the nearest or
+// deepest features are unique; else at the centre of the region they share,
+// witness_region_centre). Touching within GJK's tolerance: s = 0
+// along the line of centres. Adds to out (and the geometry to geo); false
+// (nothing added) at or beyond the rupture distance.
+template <typename T, typename Out>
+POLYDEM_FN bool polyhedron_pair_bridge(const PosedShape<T> &a, const PosedShape<T> &b,
+                                       BridgeLaw<T> law, const ContactKinematics<T> &kin,
+                                       Out &out, ContactGeometry<T> *geo = nullptr)
+{
+  const GjkWitness<T> w = gjk_witness(a, b);
+  ContactGeometry<T> g{};
+  g.has_gap = 1;
+  bool found = false;
+  if (w.status == STATUS_SEPARATED) {
+    if (!(w.distance < law.rupture)) return false;
+    const Vec3<T> dw = w.pb - w.pa;
+    g.normal = (T(1) / norm(dw)) * dw;
+    // on the line of the force (the same torques); the region's centre
+    // where the nearest features are not unique
+    g.centroid = witness_region_centre(a, b, g.normal, T(0.5) * (w.pa + w.pb));
+    g.gap = w.distance;
+    found = true;
+  } else if (w.status == STATUS_OK && w.nsimplex == 4) {
+    const EpaResult<T> e = epa_penetration(a, b, w);
+    if ((e.status == STATUS_OK || e.status == STATUS_NO_CONVERGENCE) && e.depth > T(0)) {
+      g.normal = e.normal;
+      g.centroid = witness_region_centre(a, b, g.normal, T(0.5) * (e.pa + e.pb));
+      g.gap = -e.depth;
+      found = true;
+    }
+  }
+  if (!found) {    // touching
+    const Vec3<T> dc = b.x - a.x;
+    const T d = norm(dc);
+    if (!(d > T(0))) return false;
+    g.normal = (T(1) / d) * dc;
+    g.centroid = a.x;
+    g.gap = T(0);
+  }
+  law.R = polyhedron_bridge_radius(a, b);
+  add_bridge(g, law, kin, out);
+  if (geo) *geo = g;
+  return true;
+}
+
 // The contact of convex shapes a (of body A) and b (of body B) with overlap
 // ov: the law of their volumes, the bodies' kinematics about their centres,
 // the history h (nhist values, or null), counted. bridges: a liquid bridge
-// law acts (two spheres, a sphere and a polyhedron); false for the parts of
+// law acts (two spheres, a sphere and a polyhedron, two polyhedra); false for the parts of
 // composites, whose bridges are not kept across a gap (counted as PP_NOBRIDGE).
 template <typename T, typename C>
 POLYDEM_FN PairContactResult<T>
@@ -313,19 +377,23 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   }
   // liquid bridge: between spheres, the gap along the line of centres (in
   // the contact law); a sphere and a polyhedron, the gap to its surface
-  // (added after the contact law, sphere_polyhedron_bridge)
-  BridgeLaw<T> sphere_poly = law.bridge;
+  // (sphere_polyhedron_bridge), two convex polyhedra, their signed distance
+  // (polyhedron_pair_bridge), both added after the contact law
+  BridgeLaw<T> sphere_poly = law.bridge, poly_poly = law.bridge;
   sphere_poly.volume = T(0);
+  poly_poly.volume = T(0);
   if (law.bridge.volume > T(0)) {
     const T ra = posed_sphere_radius(a), rb = posed_sphere_radius(b);
+    const bool pa = view_is_convex_polyhedron(*a.view), pb = view_is_convex_polyhedron(*b.view);
     if (bridges && ra > T(0) && rb > T(0)) {
       law.bridge.R = T(2) * ra * rb / (ra + rb);
       r.geo.has_gap = 1;
       r.geo.gap = norm(b.x - a.x) - ra - rb;
     } else {
-      if (bridges && ((ra > T(0) && view_is_convex_polyhedron(*b.view)) ||
-                      (rb > T(0) && view_is_convex_polyhedron(*a.view))))
+      if (bridges && ((ra > T(0) && pb) || (rb > T(0) && pa)))
         sphere_poly = law.bridge;
+      else if (bridges && pa && pb)
+        poly_poly = law.bridge;
       else
         count[PP_NOBRIDGE] += C(1);
       law.bridge.volume = T(0);
@@ -341,11 +409,12 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     const bool sa = posed_sphere_radius(a) > T(0);
     sphere_polyhedron_bridge(sa ? a : b, sa ? b : a, sphere_poly, sa, kin, r.cf);
   }
+  if (poly_poly.volume > T(0)) polyhedron_pair_bridge(a, b, poly_poly, kin, r.cf);
   return r;
 }
 
-// Two separated spheres a, b, or a separated sphere and convex polyhedron,
-// whose liquid bridge formed when they touched (the pair's touch flag): the
+// Two separated spheres a, b, a separated sphere and convex polyhedron, or
+// two separated convex polyhedra, whose liquid bridge formed when they touched (the pair's touch flag): the
 // bridge's pull while the gap is below its rupture distance (contact = 2:
 // no overlap, the pair stays flagged), else none (contact = 0: ruptured).
 // The history (friction, rolling) is cleared.
@@ -369,6 +438,19 @@ POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const
     r.contact = 2;
     r.geo = ContactGeometry<T>{};
     r.geo.normal = (T(1) / norm(r.cf.F_A)) * r.cf.F_A;
+    const T Vi = posed_volume(a), Vj = posed_volume(b);
+    r.vmin = Vi < Vj ? Vi : Vj;
+    return r;
+  }
+  if (view_is_convex_polyhedron(*a.view) && view_is_convex_polyhedron(*b.view)) {
+    // two convex polyhedra: Willett's force across their distance
+    const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
+                                                     A.m * B.m / (A.m + B.m), T(0), A.m, B.m);
+    r.cf = ContactForce<T>{};
+    ContactGeometry<T> g{};
+    if (!polyhedron_pair_bridge(a, b, e.bridge, kin, r.cf, &g)) return r;
+    r.contact = 2;
+    r.geo = g;
     const T Vi = posed_volume(a), Vj = posed_volume(b);
     r.vmin = Vi < Vj ? Vi : Vj;
     return r;

@@ -3,6 +3,10 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Gmpzf.h>
+#include <CGAL/Polytope_distance_d.h>
+#include <CGAL/Polytope_distance_d_traits_3.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 #include <CGAL/intersections.h>
@@ -257,6 +261,18 @@ RefClip ref_clip(const Pts &p, const std::array<double, 3> &t0, const std::array
   r.area = ar;
   if (ar > 0) r.acentroid = {cx / ar, cy / ar, cz / ar};
   return r;
+}
+
+double ref_distance(const Pts &a, const Pts &b)
+{
+  using K = CGAL::Simple_cartesian<double>;
+  using Traits = CGAL::Polytope_distance_d_traits_3<K, CGAL::Gmpzf, double>;
+  std::vector<K::Point_3> pa, pb;
+  for (auto &q : a) pa.emplace_back(q[0], q[1], q[2]);
+  for (auto &q : b) pb.emplace_back(q[0], q[1], q[2]);
+  CGAL::Polytope_distance_d<Traits> pd(pa.begin(), pa.end(), pb.begin(), pb.end());
+  return std::sqrt(CGAL::to_double(pd.squared_distance_numerator()) /
+                   CGAL::to_double(pd.squared_distance_denominator()));
 }
 
 }    // namespace polydem_test

@@ -43,6 +43,10 @@ struct RefClip {
 RefClip ref_clip(const Pts &p, const std::array<double, 3> &t0, const std::array<double, 3> &t1,
                  const std::array<double, 3> &t2);
 
+// Distance between conv(a) and conv(b) (CGAL's Polytope_distance_d, the
+// points taken as exact rationals, solved exactly; 0 if they intersect).
+double ref_distance(const Pts &a, const Pts &b);
+
 }    // namespace polydem_test
 
 #endif

@@ -593,3 +593,211 @@ TEST(KernelGjk, HullGapLowerBound)
   EXPECT_GT(nsep, 2000);
   EXPECT_GT(nover, 50);
 }
+
+// The distance of separated pairs and its witness points (gjk_witness):
+// random pairs of the pool (centre distance up to 1.6 (r_A + r_B)) against
+// CGAL's exact polytope distance, to 1e-10 of the pair's size; the witness
+// points are 'distance' apart and each lies on its shape's supporting plane
+// normal to pb - pa (so that they are a nearest pair); intersecting pairs
+// are STATUS_OK.
+TEST(KernelGjk, WitnessDistanceVsCgal)
+{
+  std::mt19937_64 rng(4242);
+  std::uniform_real_distribution<double> u(0, 1);
+  int nsep = 0, nover = 0;
+  double worst = 0.0, worst_plane = 0.0;
+  for (int trial = 0; trial < 1500; trial++) {
+    Pair p = random_pair(pool(), rng);
+    const double rr = p.pa.s * pool().data[p.a].radius + p.pb.s * pool().data[p.b].radius;
+    p.pb.x = p.pa.x + (1.6 * u(rng)) * (p.pb.x - p.pa.x) * (rr / std::fmax(norm(p.pb.x - p.pa.x), 1e-300));
+    const auto A = posed_vertices(pool().data[p.a], p.pa), B = posed_vertices(pool().data[p.b], p.pb);
+    const double ref = ref_distance(A, B), L = length_of(p);
+    const auto g = gjk_witness(make_posed(pool().d[p.a]->view, p.pa),
+                               make_posed(pool().d[p.b]->view, p.pb));
+    if (ref > 1e-9 * L) {
+      nsep++;
+      ASSERT_EQ(g.status, STATUS_SEPARATED) << trial << " ref " << ref;
+      worst = std::fmax(worst, std::fabs(g.distance - ref) / L);
+      EXPECT_NEAR(g.distance, ref, 1e-10 * L) << trial;
+      const Vec3<double> d = g.pb - g.pa;
+      EXPECT_NEAR(norm(d), g.distance, 1e-12 * L) << trial;
+      const Vec3<double> n = (1.0 / norm(d)) * d;
+      double amax = -1e300, bmin = 1e300;
+      for (auto &q : A) amax = std::fmax(amax, n.x * q[0] + n.y * q[1] + n.z * q[2]);
+      for (auto &q : B) bmin = std::fmin(bmin, n.x * q[0] + n.y * q[1] + n.z * q[2]);
+      worst_plane = std::fmax(worst_plane, std::fmax(std::fabs(amax - dot(n, g.pa)),
+                                                     std::fabs(bmin - dot(n, g.pb))) / L);
+    } else if (ref == 0.0) {
+      nover++;
+      EXPECT_EQ(g.status, STATUS_OK) << trial;
+    }
+  }
+  std::printf("[ gjk      ] witness distance: %d separated pairs (largest difference from CGAL "
+              "%.2g, witness off its supporting plane %.2g, of the size), %d intersecting\n",
+              nsep, worst, worst_plane, nover);
+  EXPECT_LT(worst_plane, 1e-10);
+  EXPECT_GT(nsep, 500);
+  EXPECT_GT(nover, 300);
+}
+
+// The penetration of overlapping pairs (epa_penetration from gjk_witness's
+// tetrahedron) against the separating-axis minimum over a superset of the
+// Minkowski difference's face normals (every plane through three vertices of
+// one shape, every cross product of two vertex-pair directions), to 1e-10 of
+// the size; the projections along the normal overlap by the depth, and the
+// witness points lie on their shapes' extreme planes with pa - pb = depth n.
+// Shapes of at most 20 vertices of the pool (the oracle is O(n^4)).
+TEST(KernelGjk, EpaDepthVsSeparatingAxes)
+{
+  std::mt19937_64 rng(777);
+  std::uniform_real_distribution<double> u(0, 1);
+  int n = 0, tried = 0;
+  double worst = 0.0, worst_w = 0.0;
+  while (n < 300 && tried < 200000) {
+    tried++;
+    Pair p = random_pair(pool(), rng);
+    if (pool().data[p.a].verts.size() > 60 || pool().data[p.b].verts.size() > 60) continue;
+    const auto A = posed_vertices(pool().data[p.a], p.pa), B = posed_vertices(pool().data[p.b], p.pb);
+    const auto ga = make_posed(pool().d[p.a]->view, p.pa), gb = make_posed(pool().d[p.b]->view, p.pb);
+    const auto g = gjk_witness(ga, gb);
+    if (g.status != STATUS_OK || g.nsimplex != 4) continue;
+    const double L = length_of(p);
+    std::vector<Vec3<double>> PA, PB;
+    for (auto &q : A) PA.push_back(make_vec3(q[0], q[1], q[2]));
+    for (auto &q : B) PB.push_back(make_vec3(q[0], q[1], q[2]));
+    auto overlap_along = [&](Vec3<double> m, double &amax, double &bmin) {
+      m = (1.0 / norm(m)) * m;
+      amax = -1e300, bmin = 1e300;
+      double amin = 1e300, bmax = -1e300;
+      for (auto &q : PA) amax = std::fmax(amax, dot(m, q)), amin = std::fmin(amin, dot(m, q));
+      for (auto &q : PB) bmin = std::fmin(bmin, dot(m, q)), bmax = std::fmax(bmax, dot(m, q));
+      return std::fmin(amax - bmin, bmax - amin);    // either side
+    };
+    double sat = 1e300, amax, bmin;
+    auto axis = [&](const Vec3<double> &m) {
+      if (norm2(m) > 1e-24 * L * L * L * L) sat = std::fmin(sat, overlap_along(m, amax, bmin));
+    };
+    for (int pass = 0; pass < 2; pass++) {
+      const auto &P = pass ? PB : PA;
+      for (size_t i = 0; i < P.size(); i++)
+        for (size_t j = i + 1; j < P.size(); j++)
+          for (size_t k = j + 1; k < P.size(); k++) axis(cross(P[j] - P[i], P[k] - P[i]));
+    }
+    for (size_t i = 0; i < PA.size(); i++)
+      for (size_t j = i + 1; j < PA.size(); j++)
+        for (size_t k = 0; k < PB.size(); k++)
+          for (size_t l = k + 1; l < PB.size(); l++) axis(cross(PA[j] - PA[i], PB[l] - PB[k]));
+    const auto e = epa_penetration(ga, gb, g);
+    ASSERT_EQ(e.status, STATUS_OK) << tried;
+    n++;
+    worst = std::fmax(worst, std::fabs(e.depth - sat) / L);
+    EXPECT_NEAR(e.depth, sat, 1e-10 * L) << tried;
+    const double along = overlap_along(e.normal, amax, bmin);
+    EXPECT_NEAR(amax - bmin, e.depth, 1e-10 * L) << tried;    // A's side towards B along n
+    (void) along;
+    const Vec3<double> d = e.pa - e.pb - e.depth * e.normal;
+    worst_w = std::fmax(worst_w, std::fmax(norm(d), std::fmax(std::fabs(dot(e.normal, e.pa) - amax),
+                                                            std::fabs(dot(e.normal, e.pb) - bmin))) / L);
+  }
+  std::printf("[ gjk      ] EPA penetration: %d overlapping pairs (%d drawn): largest difference "
+              "from the separating-axis depth %.2g, witnesses off %.2g, of the size\n", n, tried,
+              worst, worst_w);
+  EXPECT_EQ(n, 300);
+  EXPECT_LT(worst_w, 1e-10);
+  // every pool shape (up to 64 vertices), overlaps up to the deepest: the
+  // depth is the projections' overlap along the normal wherever EPA
+  // converges; where it runs out of room (STATUS_NO_CONVERGENCE) it is a
+  // lower bound, within 2 % here
+  int nall = 0, noconv = 0;
+  double worst_all = 0.0, worst_low = 0.0;
+  for (int t = 0; t < 60000; t++) {
+    const Pair p = random_pair(pool(), rng);
+    const auto ga = make_posed(pool().d[p.a]->view, p.pa), gb = make_posed(pool().d[p.b]->view, p.pb);
+    const auto g = gjk_witness(ga, gb);
+    if (g.status != STATUS_OK || g.nsimplex != 4) continue;
+    nall++;
+    const auto e = epa_penetration(ga, gb, g);
+    const auto A = posed_vertices(pool().data[p.a], p.pa), B = posed_vertices(pool().data[p.b], p.pb);
+    double amax = -1e300, bmin = 1e300;
+    for (auto &q : A) amax = std::fmax(amax, e.normal.x * q[0] + e.normal.y * q[1] + e.normal.z * q[2]);
+    for (auto &q : B) bmin = std::fmin(bmin, e.normal.x * q[0] + e.normal.y * q[1] + e.normal.z * q[2]);
+    const double L = length_of(p);
+    ASSERT_TRUE(e.status == STATUS_OK || e.status == STATUS_NO_CONVERGENCE) << t;
+    if (e.status == STATUS_OK) {
+      worst_all = std::fmax(worst_all, std::fabs(amax - bmin - e.depth) / L);
+    } else {
+      noconv++;
+      EXPECT_GT(e.depth, 0.0);
+      EXPECT_LE(e.depth, (amax - bmin) * (1 + 1e-12));
+      worst_low = std::fmax(worst_low, 1.0 - e.depth / (amax - bmin));
+    }
+  }
+  std::printf("[ gjk      ] EPA on %d overlapping pool pairs: depth = overlap along the normal to "
+              "%.2g of the size; %d out of room (a lower bound, at most %.2g low)\n", nall,
+              worst_all, noconv, worst_low);
+  EXPECT_LT(worst_all, 1e-10);
+  EXPECT_LE(noconv, nall / 10000);
+  EXPECT_LT(worst_low, 0.02);
+}
+
+// Where the pull of two convex polyhedra acts (witness_region_centre): the
+// centre of the region their extreme features share. Unit cubes (pool 0)
+// face to face, apart by 0.01 or overlapping by 0.01, the second shifted by
+// (0.3, 0.2) across: the centre of the faces' common rectangle; parallel
+// edges: the middle of their common part; random generic pairs, apart or
+// overlapping: on the line of the unique witness points (1e-9 of the size)
+TEST(KernelGjk, WitnessRegionCentre)
+{
+  const auto &cube = pool().d[0]->view;
+  auto posed = [&](double x, double y, double z) {
+    return make_posed(cube, make_pose(make_vec3(x, y, z), polydem::make_quat(1.0, 0.0, 0.0, 0.0), 1.0));
+  };
+  const Vec3<double> nx = make_vec3(1.0, 0.0, 0.0);
+  for (double g : {0.01, -0.01}) {
+    const auto a = posed(0, 0, 0), b = posed(1 + g, 0.3, 0.2);
+    const Vec3<double> c = witness_region_centre(a, b, nx, make_vec3(9.0, 9.0, 9.0));
+    // y in [-0.2, 0.5], z in [-0.3, 0.5]
+    EXPECT_NEAR(c.x, 0.5 + 0.5 * g, 1e-14) << g;
+    EXPECT_NEAR(c.y, 0.15, 1e-14) << g;
+    EXPECT_NEAR(c.z, 0.1, 1e-14) << g;
+  }
+  {    // parallel edges along y: the first cube's at (0.5, y, 0.5) for y in [-0.5, 0.5], the other's for y in [-0.1, 0.9]
+    const auto a = posed(0, 0, 0), b = posed(1.02, 0.4, 1.02);
+    const Vec3<double> n = make_vec3(std::sqrt(0.5), 0.0, std::sqrt(0.5));
+    const Vec3<double> c = witness_region_centre(a, b, n, make_vec3(9.0, 9.0, 9.0));
+    EXPECT_NEAR(c.y, 0.2, 1e-14);
+    EXPECT_NEAR(c.x, 0.51, 1e-14);
+    EXPECT_NEAR(c.z, 0.51, 1e-14);
+  }
+  std::mt19937_64 rng(515);
+  std::uniform_real_distribution<double> u(0, 1);
+  int napart = 0, nover = 0;
+  double worst = 0.0;
+  for (int t = 0; t < 4000; t++) {
+    Pair p = random_pair(pool(), rng);
+    const auto ga = make_posed(pool().d[p.a]->view, p.pa), gb = make_posed(pool().d[p.b]->view, p.pb);
+    const auto w = gjk_witness(ga, gb);
+    Vec3<double> n, m;
+    if (w.status == STATUS_SEPARATED) {
+      n = (1.0 / norm(w.pb - w.pa)) * (w.pb - w.pa);
+      m = 0.5 * (w.pa + w.pb);
+      napart++;
+    } else if (w.status == STATUS_OK && w.nsimplex == 4) {
+      const auto e = epa_penetration(ga, gb, w);
+      if (e.status != STATUS_OK) continue;
+      n = e.normal;
+      m = 0.5 * (e.pa + e.pb);
+      nover++;
+    } else {
+      continue;
+    }
+    const Vec3<double> c = witness_region_centre(ga, gb, n, m);
+    const Vec3<double> d = (c - m) - dot(c - m, n) * n;    // off the line of the force
+    worst = std::fmax(worst, norm(d) / length_of(p));
+  }
+  std::printf("[ gjk      ] witness region centre: %d pairs apart, %d overlapping: off the witnesses' "
+              "line by at most %.2g of the size\n", napart, nover, worst);
+  EXPECT_LT(worst, 1e-9);
+  EXPECT_GT(napart, 1000);
+  EXPECT_GT(nover, 1000);
+}

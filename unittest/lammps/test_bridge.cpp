@@ -382,6 +382,204 @@ TEST(Bridge, SphereCubeBridgeRestartsExactly)
     for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
 }
 
+// Two convex polyhedra (cube.shape of edge 4 mm, and dodecahedron.shape):
+// Willett's force with the Derjaguin mean of their volume-equivalent radii,
+// across their distance along the line of their nearest points
+namespace {
+double willett_R(double s, double R)
+{
+  const double u = (s > 0.0 ? s : 0.0) * std::sqrt(R / VB);
+  return 2.0 * M_PI * R * GAMMA * std::cos(THETA) / (1.0 + 1.05 * u + 2.5 * u * u);
+}
+double willett_R_energy(double s, double R)
+{
+  const int n = 20000;
+  const double h = (SC - s) / n;
+  double sum = willett_R(s, R) + willett_R(SC, R);
+  for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett_R(s + k * h, R);
+  return -sum * h / 3.0;
+}
+double equivalent_radius(double volume)
+{
+  return std::cbrt(3.0 * volume / (4.0 * M_PI));
+}
+// a cube (atom 1, edge CUBE) at the origin and a polyhedron of shape file
+// `other` at scale `scale` (atom 2) at (x2, 0, z2)
+void cube_and_polyhedron(Lmp &l, const std::string &other, double scale, double x2, double z2,
+                         double e)
+{
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.02 0.02 -0.02 0.02 -0.02 0.02",
+          "create_box 1 box", "polyhedron_shape c " + polydem_test::potentials() + "/cube.shape",
+          "polyhedron_shape o " + polydem_test::potentials() + "/" + other,
+          "create_atoms 1 single 0 0 0", "create_atoms 1 single " + num(x2) + " 0 " + num(z2),
+          "polyhedron_set atom 1 shape c scale " + num(CUBE),
+          "polyhedron_set atom 2 shape o scale " + num(scale),
+          "polyhedron_set group all density 2500", "pair_style polyhedron",
+          "pair_coeff * * 1e7 0.3 " + num(e) + " 0.0" + BRIDGE, "neighbor 3e-4 bin",
+          "compute er all erotate/polyhedron", "thermo_style custom step pe ke c_er",
+          "thermo_modify norm no"});
+}
+}    // namespace
+
+// Two aligned cubes: formed on contact, then across the gap between their
+// facing faces the force is Willett's with R = r_eq (equal cubes: the mean
+// of r_eq and r_eq) to 1e-12; beyond their parallel edges (the second cube
+// moved diagonally) it pulls along the line between the edges, with the
+// torque about the edges' direction that the pull at the edge gives; nothing
+// beyond s_c
+TEST(Bridge, TwoCubesFollowWillett)
+{
+  const double h = 0.5 * CUBE, R = equivalent_radius(CUBE * CUBE * CUBE);
+  Lmp l;
+  cube_and_polyhedron(l, "cube.shape", CUBE, CUBE - 1e-9, 0.0, 1.0);
+  l.cmd("run 0");    // touching: the bridge forms
+  auto *a = l.lmp->atom;
+  const int i1 = a->map(1), i2 = a->map(2);
+  double worst = 0.0;
+  for (double f : {0.0, 0.1, 0.4, 0.8, 0.999}) {
+    const double s = f * SC;
+    l.cmd("set atom 2 x " + num(CUBE + s));
+    l.cmd("run 0");
+    const double Fw = willett_R(s, R);
+    worst = std::fmax(worst, std::fabs(a->f[i1][0] / Fw - 1.0));
+    EXPECT_NEAR(a->f[i2][0], -Fw, 1e-12 * Fw) << f;
+    EXPECT_NEAR(a->f[i1][2], 0.0, 1e-12 * Fw) << f;
+    if (f > 0.0)
+      EXPECT_NEAR(l.lmp->force->pair->eng_vdwl, willett_R_energy(s, R),
+                  1e-9 * std::fabs(willett_R_energy(0.0, R))) << f;
+  }
+  std::printf("[ bridge   ] two cubes, face to face: F(s) against Willett with R = r_eq = %.6g m: "
+              "largest relative difference %.2g\n", R, worst);
+  EXPECT_LT(worst, 1e-12);
+  // beyond the parallel edges (along y) at x = z = h of the first cube
+  const double gx = 0.3 * SC, gz = 0.4 * SC, d = 0.5 * SC;
+  l.cmd("set atom 2 x " + num(CUBE + gx) + " z " + num(CUBE + gz));
+  l.cmd("run 0");
+  const double Fw = willett_R(d, R);
+  EXPECT_NEAR(a->f[i1][0], Fw * gx / d, 1e-12 * Fw);
+  EXPECT_NEAR(a->f[i1][2], Fw * gz / d, 1e-12 * Fw);
+  EXPECT_NEAR(a->f[i1][1], 0.0, 1e-12 * Fw);
+  // about y: the pull F at A's edge point (h, y, h) from A's centre and -F
+  // at B's (-h, y, -h) from B's give h (F_x - F_z) on both
+  EXPECT_NEAR(a->torque[i1][1], h * Fw * (gx - gz) / d, 1e-12 * Fw * h);
+  EXPECT_NEAR(a->torque[i2][1], h * Fw * (gx - gz) / d, 1e-12 * Fw * h);
+  // beyond s_c: gone
+  l.cmd("set atom 2 x " + num(CUBE + 1.001 * SC) + " z 0");
+  l.cmd("run 0");
+  EXPECT_EQ(a->f[i1][0], 0.0);
+  EXPECT_EQ(l.lmp->force->pair->eng_vdwl, 0.0);
+}
+
+// An elastic oblique impact of a dodecahedron on a cube off its centre (e =
+// 1, no friction): both are spun. The pull is the exact gradient of U(s)
+// with s their signed distance (the nearest points' distance apart, minus
+// the penetration depth in contact): from the bridge's formation on,
+// kinetic + rotational + pair energy is constant (2e-6 of the kinetic
+// energy), and the bodies leave with the energy they came with less |U(0)|
+// up to F(0) v dt (the step in which the bridge appears)
+TEST(Bridge, TwoPolyhedraKeepTheEnergy)
+{
+  const double h = 0.5 * CUBE, v = 0.15, dt = 1e-7;
+  Lmp l;
+  cube_and_polyhedron(l, "dodecahedron.shape", 0.002, 0.4 * h, h + 0.0029, 1.0);
+  l.cmds({"velocity all set 0 0 0", "set atom 2 vz " + num(-v) + " vx " + num(0.2 * v),
+          "polyhedron_set atom 2 quat 0.3 0.5 0.8 40", "fix 1 all nve/polyhedron",
+          "timestep " + num(dt), "thermo 100", "run 0"});
+  auto *a = l.lmp->atom;
+  auto energy = [&]() {
+    double k = l.thermo("c_er");
+    for (int id : {1, 2}) {
+      const int i = a->map(id);
+      k += 0.5 * a->rmass[i] * (a->v[i][0] * a->v[i][0] + a->v[i][1] * a->v[i][1] +
+                                 a->v[i][2] * a->v[i][2]);
+    }
+    return k;
+  };
+  const double K0 = energy();
+  double E_formed = 0.0, dev = 0.0, U0 = 0.0;
+  bool formed = false, gone = false;
+  for (int k = 0; k < 3000; k++) {
+    l.cmd("run 100 pre no post no");
+    const double pe = l.lmp->force->pair->eng_vdwl, E = energy() + pe;
+    if (!formed && pe < 0.0) {
+      formed = true;
+      E_formed = E;
+    }
+    if (formed) dev = std::fmax(dev, std::fabs(E - E_formed));
+    if (formed && pe == 0.0) {
+      gone = true;
+      break;
+    }
+  }
+  ASSERT_TRUE(formed);
+  ASSERT_TRUE(gone) << "the bridge did not rupture";
+  {
+    const double R = 2.0 * equivalent_radius(CUBE * CUBE * CUBE) *
+        equivalent_radius(a->rmass[a->map(2)] / 2500.0) /
+        (equivalent_radius(CUBE * CUBE * CUBE) + equivalent_radius(a->rmass[a->map(2)] / 2500.0));
+    U0 = willett_R_energy(0.0, R);
+  }
+  const double K1 = energy();
+  std::printf("[ bridge   ] dodecahedron on a cube: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, |U(0)| "
+              "%.9e J (ratio %.6f), spin energy %.3g J; energy from formation on constant to "
+              "%.3g J\n", K0, K1, K0 - K1, -U0, (K0 - K1) / -U0, l.thermo("c_er"),
+              dev);
+  EXPECT_GT(l.thermo("c_er"), 1e-3 * K0);    // spun
+  EXPECT_LE(dev, 2e-6 * K0);
+  EXPECT_NEAR(K1, E_formed, 2e-6 * K0);
+  const double R = 2.0 * equivalent_radius(CUBE * CUBE * CUBE);    // a bound of F(0): R <= 2 r_cube
+  EXPECT_NEAR(K0 - K1, -U0, 2.0 * M_PI * R * GAMMA * std::cos(THETA) * 2.0 * v * dt);
+}
+
+// A bridge stretched between a cube and a spun dodecahedron (the oblique
+// impact above, e = 0.7) continues bit for bit after a restart
+TEST(Bridge, TwoPolyhedraBridgeRestartsExactly)
+{
+  const std::string file = ::testing::TempDir() + "polydem_poly_bridge.bin";
+  const double h = 0.5 * CUBE, v = 0.15;
+  auto state = [](Lmp &l, double out[6][3]) {
+    auto *a = l.lmp->atom;
+    for (int id : {1, 2}) {
+      const int i = a->map(id);
+      for (int d = 0; d < 3; d++) {
+        out[3 * (id - 1)][d] = a->x[i][d];
+        out[3 * (id - 1) + 1][d] = a->v[i][d];
+        out[3 * (id - 1) + 2][d] = a->omega[i][d];
+      }
+    }
+  };
+  double ref[6][3], got[6][3];
+  {
+    Lmp l;
+    cube_and_polyhedron(l, "dodecahedron.shape", 0.002, 0.4 * h, h + 0.0029, 0.7);
+    l.cmds({"velocity all set 0 0 0", "set atom 2 vz " + num(-v) + " vx " + num(0.2 * v),
+            "polyhedron_set atom 2 quat 0.3 0.5 0.8 40", "fix 1 all nve/polyhedron",
+            "timestep 1e-7", "run 0"});
+    // the pair energy: U(0) on touching, up with the elastic energy in
+    // contact, down to about U(0) as they part, then up towards 0 across the
+    // gap: stretched once it is back at half its lowest value after contact
+    bool elastic = false, stretched = false;
+    double low = 0.0;
+    for (int k = 0; k < 3000 && !stretched; k++) {
+      l.cmd("run 100 pre no post no");
+      const double pe = l.lmp->force->pair->eng_vdwl;
+      elastic = elastic || pe > 0.0;
+      if (elastic) low = std::fmin(low, pe);
+      stretched = elastic && pe < 0.0 && pe > 0.5 * low;
+    }
+    ASSERT_TRUE(stretched) << "no stretched bridge";
+    l.cmds({"write_restart " + file, "run 3000"});
+    state(l, ref);
+  }
+  Lmp l;
+  l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 3e-4 bin",
+          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
+  state(l, got);
+  for (int k = 0; k < 6; k++)
+    for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
+}
+
 TEST(Bridge, Errors)
 {
   {
