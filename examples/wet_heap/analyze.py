@@ -112,29 +112,32 @@ def series(runs, dots, title, xlabel, ylabel, title2, png, base=None):
     print(f"wrote {png}")
 
 
-def poured(murs):
-    """heaps poured onto the fixed base (in.pour: poured_<mu_r>.txt) against the
-    rolling friction mu_r; only grains on the base (r < 35 mm, z > 0) count.
-    The heaps are flat-topped, so that a line fit gives no angle of repose:
-    their height H and mean slope atan(H / 35 mm)"""
-    print("| mu_r | grains on the base | heap height H (mm) | mean slope atan(H/R) (deg) |")
-    print("|---|---|---|---|")
+def poured(murs, base=0.025):
+    """conical heaps poured onto the fixed base of radius 'base' (in.pour:
+    poured_<mu_r>.txt) against the rolling friction mu_r; only grains on the
+    base (r < base, z > 0) count. The angle of repose: the line fit of
+    angle() through the cone's flank"""
+    print("| mu_r | grains on the base | heap height H (mm) | angle of repose (deg) | "
+          "mean slope atan(H/R) (deg) |")
+    print("|---|---|---|---|---|")
     runs = []
     for m in murs:
         d = load(f"poured_{m}.txt")
-        keep = (np.hypot(d["x"], d["y"]) < 0.035) & (d["z"] > 0.0)
+        keep = (np.hypot(d["x"], d["y"]) < base) & (d["z"] > 0.0)
         runs.append((float(m), f"$\\mu_r$ = {m}", {key: v[keep] for key, v in d.items()}))
-    for m, d, H, foot, th in series(runs, False, "heaps poured on a base of radius R = 35 mm",
+    for m, d, H, foot, th in series(runs, True, f"heaps poured on a base of radius R = "
+                                    f"{base * 1e3:g} mm (dots: sphere tops; dashed: fit)",
                                     "rolling friction $\\mu_r$ (EPSD)",
                                     "height above the rough base (mm)",
                                     "dry poured heaps against rolling resistance",
-                                    "poured_heap.png", base=0.035):
-        print(f"| {m:g} | {len(d['x'])} | {H * 1e3:.1f} | {th:.1f} |")
+                                    "poured_heap.png"):
+        print(f"| {m:g} | {len(d['x'])} | {H * 1e3:.1f} | {th:.1f} | "
+              f"{math.degrees(math.atan(H / base)):.1f} |")
 
 
 def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--poured":
-        poured(sys.argv[2:] if len(sys.argv) > 2 else ["0", "0.05", "0.1", "0.2"])
+        poured(sys.argv[2:] if len(sys.argv) > 2 else ["0", "0.05", "0.1", "0.2", "0.4"])
         return
     if len(sys.argv) > 1 and sys.argv[1] == "--rolling":
         rolling(sys.argv[2:] if len(sys.argv) > 2 else ["0", "0.05", "0.1", "0.2", "0.4"])
