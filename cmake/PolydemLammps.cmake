@@ -39,7 +39,7 @@ if(NOT LAMMPS_SOURCE_DIR)
     message(STATUS "POLYDEM: fetching Debian's lammps ${POLYDEM_LAMMPS_DEB_VERSION} source (${_lmp_suite}) with apt")
     execute_process(
       COMMAND ${CMAKE_COMMAND} -E env POLYDEM_DEBIAN_SUITE=${_lmp_suite}
-              bash ${CMAKE_SOURCE_DIR}/tools/fetch-debian-source.sh lammps
+              bash ${CMAKE_SOURCE_DIR}/cmake/scripts/fetch-debian-source.sh lammps
               ${POLYDEM_LAMMPS_DEB_VERSION} ${_lmp_cache}/download
       RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
     if(NOT _rc EQUAL 0)
@@ -278,9 +278,9 @@ file(REMOVE ${POLYDEM_STAGE}/cmake/CMakeLists.txt.tmp)
 # 3. Kokkos. POLYDEM_KOKKOS_BACKEND (unless Kokkos_DIR is given):
 #   openmp  (default) Kokkos 3.4.01 Serial + OpenMP, built from Debian's trilinos
 #           source package into POLYDEM_CACHE_DIR/kokkos-openmp at configure time
-#           (tools/build-kokkos-host.sh; the source is fetched with apt once, as
+#           (cmake/scripts/build-kokkos-host.sh; the source is fetched with apt once, as
 #           for the CUDA compile check): `lmp -k on t N` runs N threads
-#   tsan    Serial + Threads, ThreadSanitizer, Kokkos debug checks (tools/tsan.sh)
+#   tsan    Serial + Threads, ThreadSanitizer, Kokkos debug checks (unittest/scripts/tsan.sh)
 #   debian  Debian's libtrilinos-kokkos-dev (Serial only: `t N` runs serially).
 #           Its KokkosConfig.cmake points its include directory at
 #           /usr/lib/include (it forgets the multiarch level); a corrected copy
@@ -316,7 +316,7 @@ if(POLYDEM_KOKKOS AND (NOT Kokkos_DIR OR Kokkos_DIR STREQUAL "${_POLYDEM_KOKKOS_
     message(STATUS "POLYDEM: Kokkos 3.4.01 (${POLYDEM_KOKKOS_BACKEND}) in ${POLYDEM_CACHE_DIR}/kokkos-${POLYDEM_KOKKOS_BACKEND}")
     execute_process(
       COMMAND ${CMAKE_COMMAND} -E env CMAKE=${CMAKE_COMMAND} CXX=${CMAKE_CXX_COMPILER}
-              bash ${CMAKE_SOURCE_DIR}/tools/build-kokkos-host.sh ${POLYDEM_CACHE_DIR} ${POLYDEM_KOKKOS_BACKEND}
+              bash ${CMAKE_SOURCE_DIR}/cmake/scripts/build-kokkos-host.sh ${POLYDEM_CACHE_DIR} ${POLYDEM_KOKKOS_BACKEND}
       RESULT_VARIABLE _rc OUTPUT_VARIABLE _out ERROR_VARIABLE _err)
     if(NOT _rc EQUAL 0)
       message(FATAL_ERROR "POLYDEM: building Kokkos (${POLYDEM_KOKKOS_BACKEND}) failed:\n${_out}\n${_err}\n"

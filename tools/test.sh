@@ -11,7 +11,7 @@
 #    and are not repeated; nor is example.hopper, 5 min on 2 ranks, unless
 #    POLYDEM_TEST_HOPPER=1; nor fuzz.data, see below);
 # 3. for 2025: the /kk styles compiled (object files only) against LAMMPS
-#    4 Feb 2025 and Kokkos 4.5.1's headers (tools/kokkos-compile-check.sh,
+#    4 Feb 2025 and Kokkos 4.5.1's headers (unittest/scripts/kokkos-compile-check.sh,
 #    build-lammps2025-kk/).
 # Environment: POLYDEM_BUILD_DIR, POLYDEM_JOBS, POLYDEM_CMAKE_ARGS (extra args
 # for step 1), POLYDEM_TEST_LAMMPS ("" skips steps 2 and 3),
@@ -49,7 +49,7 @@ for v in ${POLYDEM_TEST_LAMMPS-2025}; do
   echo "test.sh: LAMMPS $v host build + tests took $(( $(date +%s) - t0 )) s"
   if [ "$v" = 2025 ] && [ "${POLYDEM_TEST_KK_CHECK:-1}" != 0 ]; then
     t0=$(date +%s)
-    POLYDEM_JOBS=$JOBS bash tools/kokkos-compile-check.sh "$BUILD-lammps2025-kk" 2025
+    POLYDEM_JOBS=$JOBS bash unittest/scripts/kokkos-compile-check.sh "$BUILD-lammps2025-kk" 2025
     echo "test.sh: /kk compile check against LAMMPS 2025 + Kokkos 4.5.1 took $(( $(date +%s) - t0 )) s"
   fi
 done

@@ -1,7 +1,7 @@
 /* -*- c++ -*- ----------------------------------------------------------
    POLYDEM - the differences of LAMMPS's KOKKOS package API between LAMMPS
    29 Sep 2021 (run here, Kokkos 3.4.01) and 4 Feb 2025 (compiled against
-   Kokkos 4.5.1's headers: tools/kokkos-compile-check.sh), for
+   Kokkos 4.5.1's headers: unittest/scripts/kokkos-compile-check.sh), for
    atom_style polyhedron/kk. Host API differences: polydem_lammps_compat.h.
 
    Since 2021 the device communication sends one swap's list (a 1-D view,

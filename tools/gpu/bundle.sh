@@ -76,7 +76,7 @@ lmp_ver=20220106.git7586adbb6a+ds1-2
 lmp_cache="$cache/lammps-$lmp_ver"
 if [ ! -f "$lmp_cache/.extracted" ]; then
   log "fetching the LAMMPS source (Debian lammps $lmp_ver)"
-  tarball=$(bash "$repo/tools/fetch-debian-source.sh" lammps "$lmp_ver" "$lmp_cache/download" | head -n1)
+  tarball=$(bash "$repo/cmake/scripts/fetch-debian-source.sh" lammps "$lmp_ver" "$lmp_cache/download" | head -n1)
   mkdir -p "$lmp_cache/src"
   tar -xf "$tarball" -C "$lmp_cache/src"
   touch "$lmp_cache/.extracted"
@@ -90,7 +90,7 @@ find "$lsrc/src" -maxdepth 1 -type f -exec cp {} "$kit/lammps/src/" \;
 for p in KOKKOS ASPHERE GRANULAR STUBS fmt; do cp -r "$lsrc/src/$p" "$kit/lammps/src/"; done
 
 # --- Kokkos ------------------------------------------------------------------------
-ksrc=$(bash "$repo/tools/kokkos-source.sh" "$cache" | tail -n1)    # fetched and patched if missing
+ksrc=$(bash "$repo/cmake/scripts/kokkos-source.sh" "$cache" | tail -n1)    # fetched and patched if missing
 mkdir -p "$kit/kokkos"
 (cd "$ksrc" && tar -c --exclude=./doc --exclude=./benchmarks \
   --exclude='./*/unit_test' --exclude='./*/unit_tests' --exclude='./*/perf_test' . ) |
@@ -117,7 +117,7 @@ done
   echo "POLYDEM GPU run kit, made $(date -u +%Y-%m-%dT%H:%M:%SZ) on $(uname -m)"
   echo "polydem  $(git -C "$repo" rev-parse HEAD)$(git -C "$repo" diff --quiet HEAD || echo ' (+ uncommitted changes not in the kit)')"
   echo "lammps   Debian source package lammps $lmp_ver (29 Sep 2021, Update 2)"
-  echo "kokkos   3.4.01 from Debian's trilinos 13.2.0-4 source + tools/kokkos-cuda13.patch"
+  echo "kokkos   3.4.01 from Debian's trilinos 13.2.0-4 source + cmake/scripts/kokkos-cuda13.patch"
   echo "cgal     $(dpkg-query -W -f='${Version}' libcgal-dev 2> /dev/null) (headers used by polydem_shape_*.cpp)"
   echo "boost    $(dpkg-query -W -f='${Version}' libboost-dev 2> /dev/null) (headers used by CGAL)"
   echo "gmp      $(dpkg-query -W -f='${Version}' libgmp10 2> /dev/null) (libgmp.so.10)"

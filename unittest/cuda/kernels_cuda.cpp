@@ -13,7 +13,7 @@
    which a CUDA thread's stack does not hold.
 
    Two uses:
-   - compiled with -c only by tools/cuda-compile-check.sh (ctest
+   - compiled with -c only by unittest/scripts/cuda-compile-check.sh (ctest
      cuda_compile_check): nvcc must compile every kernel's device code;
    - linked (with -DPOLYDEM_KERNELS_MAIN, libpolydem_shapes and Kokkos) as
      polydem_kernels_device SHAPE_FILE...: exit 0 if device and host agree

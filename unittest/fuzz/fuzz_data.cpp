@@ -4,7 +4,7 @@
 // instance each time. An input must end in atoms whose mass, scale and
 // quaternion are finite and normal, or in a LAMMPS error (an exception
 // here); a crash, hang or sanitizer report is a finding. Linked with the
-// bounded driver in ctest (fuzz.data); needs LAMMPS, so not in tools/fuzz.sh.
+// bounded driver in ctest (fuzz.data); needs LAMMPS, so not in unittest/scripts/fuzz.sh.
 #include "atom.h"
 #include "error.h"
 #include "input.h"

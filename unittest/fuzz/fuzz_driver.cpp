@@ -1,5 +1,5 @@
 // Bounded mutation driver for the fuzz harnesses when libFuzzer is not used
-// (ctest fuzz.*; the coverage-guided campaign is tools/fuzz.sh). Replays the
+// (ctest fuzz.*; the coverage-guided campaign is unittest/scripts/fuzz.sh). Replays the
 // seed corpus, then mutates its entries (bit flips, bytes, insertions,
 // deletions, duplications, splices, numbers replaced by extreme ones,
 // 32-bit counts) for a fixed time or number of runs, from a fixed seed, so

@@ -2,7 +2,7 @@
 // (ASCII and binary; then coplanar merging and the bin grid) and shape files
 // (parser, CGAL hull, mass properties). One entry point per reader,
 // LLVMFuzzerTestOneInput, chosen by POLYDEM_FUZZ_STL or POLYDEM_FUZZ_SHAPE:
-// linked with libFuzzer (clang -fsanitize=fuzzer, tools/fuzz.sh) it is
+// linked with libFuzzer (clang -fsanitize=fuzzer, unittest/scripts/fuzz.sh) it is
 // coverage-guided; linked with fuzz_driver.cpp it is the bounded mutation
 // run of ctest (fuzz.stl, fuzz.shape). Every input must end in a result or
 // a reported error: a crash, hang, sanitizer report or a broken invariant

@@ -2,7 +2,7 @@
 //
 // The check (KOKKOS_ENABLE_DEBUG_DUALVIEW_MODIFY_CHECK) lives in
 // Kokkos_DualView.hpp; it is defined here before that header so that this
-// test works against any Kokkos 3.4 build (the TSan build of tools/tsan.sh
+// test works against any Kokkos 3.4 build (the TSan build of unittest/scripts/tsan.sh
 // also turns it on for the whole LAMMPS build). The check only acts on
 // DualViews whose two sides are distinct (DualView::modify returns early when
 // the device and host types are the same, as for every DualView of a CPU-only

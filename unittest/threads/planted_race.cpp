@@ -1,4 +1,4 @@
-// A planted race for ThreadSanitizer (issue 19, tools/tsan.sh): shows that
+// A planted race for ThreadSanitizer (issue 19, unittest/scripts/tsan.sh): shows that
 // the TSan build (Kokkos Threads backend, everything built with
 // -fsanitize=thread) reports a race of the kind a /kk kernel could have:
 // every thread adds into one slot of a View.

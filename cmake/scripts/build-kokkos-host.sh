@@ -2,7 +2,7 @@
 # build-kokkos-host.sh CACHE_DIR VARIANT
 #
 # Builds Kokkos 3.4.01 for the CPU from Debian's trilinos source package
-# (tools/kokkos-source.sh) and installs it into CACHE_DIR/kokkos-VARIANT.
+# (cmake/scripts/kokkos-source.sh) and installs it into CACHE_DIR/kokkos-VARIANT.
 # Prints that prefix (last line of stdout); progress goes to stderr.
 #
 #   openmp  Serial + OpenMP, Release, C++17, PIC: the Kokkos that the default
@@ -10,7 +10,7 @@
 #   tsan    Serial + Threads (pthreads: ThreadSanitizer understands them,
 #           libgomp is not instrumented), -fsanitize=thread -O1 -g,
 #           Kokkos_ENABLE_DEBUG, DEBUG_BOUNDS_CHECK and
-#           DEBUG_DUALVIEW_MODIFY_CHECK: tools/tsan.sh
+#           DEBUG_DUALVIEW_MODIFY_CHECK: unittest/scripts/tsan.sh
 #
 # Idempotent (stamp CACHE_DIR/kokkos-VARIANT/.polydem-stamp: the options and
 # the compiler); concurrent runs serialise on a lock. ccache when present.

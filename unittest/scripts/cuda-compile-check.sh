@@ -9,7 +9,7 @@
 #   SRC_DIR    the POLYDEM source tree (top-level CMakeLists.txt), or a plain
 #              LAMMPS source tree (src/, cmake/), e.g. to try LAMMPS's own
 #              KOKKOS styles
-#   CACHE_DIR  where Kokkos for CUDA is built (tools/build-kokkos-cuda.sh)
+#   CACHE_DIR  where Kokkos for CUDA is built (cmake/scripts/build-kokkos-cuda.sh)
 #   FILE       two kinds:
 #     *_kokkos.cpp  LAMMPS KOKKOS styles: compiled with the exact command of a
 #                   second build tree of SRC_DIR configured with nvcc_wrapper and
@@ -81,7 +81,7 @@ done
 
 # --- 1. Kokkos for CUDA --------------------------------------------------------
 t0=$(now)
-prefix=$("$here/build-kokkos-cuda.sh" "$cache" | tail -n1)
+prefix=$("$here/../../cmake/scripts/build-kokkos-cuda.sh" "$cache" | tail -n1)
 wrapper="$prefix/bin/nvcc_wrapper"
 std=$(sed -n 's/^cxx_standard=//p' "$prefix/.polydem-stamp")
 arch=$(sed -n 's/.* arch=sm_\([0-9]*\) .*/\1/p' "$prefix/.polydem-stamp")

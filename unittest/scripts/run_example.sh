@@ -15,4 +15,4 @@ if [ "${POLYDEM_EXAMPLE_NP:-1}" -gt 1 ]; then
   launch=(mpirun --allow-run-as-root --oversubscribe -np "$POLYDEM_EXAMPLE_NP")
 fi
 "${launch[@]}" "$lmp" -in "$input" -log log.new -screen none -var pot "$(cd "$dir"/../../potentials && pwd)" "$@"
-/usr/bin/python3 "$(dirname "$0")/compare_log.py" log.new "$dir/$ref" --rtol "$rtol"
+/usr/bin/python3 "$(dirname "$0")/../../tools/compare_log.py" log.new "$dir/$ref" --rtol "$rtol"

@@ -1,5 +1,5 @@
 # shellcheck shell=sh
-# Sourced by tools/fetch-debian-source.sh and tools/fetch-debian-deb.sh:
+# Sourced by cmake/scripts/fetch-debian-source.sh and cmake/scripts/fetch-debian-deb.sh:
 # system_archive_uri prints the Debian archive URI of the system's own apt
 # sources, so that no package host is named in POLYDEM's code.
 #

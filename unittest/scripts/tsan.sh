@@ -4,7 +4,7 @@
 # Builds a second tree (default build-tsan/) against Kokkos 3.4.01 Serial +
 # Threads (pthreads, which TSan understands; libgomp is not instrumented),
 # itself built with -fsanitize=thread, Kokkos_ENABLE_DEBUG, DEBUG_BOUNDS_CHECK
-# and DEBUG_DUALVIEW_MODIFY_CHECK (tools/build-kokkos-host.sh tsan). LAMMPS,
+# and DEBUG_DUALVIEW_MODIFY_CHECK (cmake/scripts/build-kokkos-host.sh tsan). LAMMPS,
 # its KOKKOS package, POLYDEM and the tests are all compiled with
 # -fsanitize=thread. Then runs, with THREADS threads (default 4):
 #   - every /kk test (the *_threads ctest entries, label "threads", once each)
@@ -17,7 +17,7 @@
 # Environment: POLYDEM_TSAN_BUILD_DIR (default build-tsan), POLYDEM_JOBS (default 2),
 #              TSAN_OPTIONS (added to the defaults below).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 threads=${1:-4}
 build=${POLYDEM_TSAN_BUILD_DIR:-build-tsan}
 jobs=${POLYDEM_JOBS:-2}

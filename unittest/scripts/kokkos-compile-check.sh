@@ -6,7 +6,7 @@
 # the default) and Kokkos 4.5.1's headers, host (Serial) backend: object
 # files only, never linked or run. Kokkos 4.5.1 comes from sid's
 # libtrilinos-kokkos-dev 16.1.0-5+b2 binary package, unpacked (not installed) into
-# POLYDEM_CACHE_DIR by tools/fetch-debian-deb.sh: its libraries need a newer
+# POLYDEM_CACHE_DIR by cmake/scripts/fetch-debian-deb.sh: its libraries need a newer
 # glibc than Debian 12's, its headers serve. The build tree BUILD_DIR is
 # LAMMPS + KOKKOS + POLYDEM configured by the top-level CMakeLists.txt; only
 # the objects of the /kk styles (and generated headers) are built.
@@ -21,7 +21,7 @@ if [ $# -lt 1 ]; then
   exit 2
 fi
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-src=$(cd "$here/.." && pwd)
+src=$(cd "$here/../.." && pwd)
 build=$1
 lammps=${2:-2025}
 cache=${POLYDEM_CACHE_DIR:-$HOME/.cache/polydem}
@@ -29,7 +29,7 @@ jobs=${POLYDEM_JOBS:-2}
 log() { echo "kokkos-compile-check: $*" >&2; }
 t0=$(date +%s)
 
-root=$(sh "$here/fetch-debian-deb.sh" sid "$cache/kokkos-4.5.1-deb" \
+root=$(sh "$src/cmake/scripts/fetch-debian-deb.sh" sid "$cache/kokkos-4.5.1-deb" \
   libtrilinos-kokkos-dev=16.1.0-5+b2 libtrilinos-kokkos-16.1=16.1.0-5+b2 | tail -n1)
 kdir=$(dirname "$(find "$root" -name KokkosConfig.cmake | head -n1)")
 if [ ! -f "$kdir/KokkosConfig.cmake" ]; then

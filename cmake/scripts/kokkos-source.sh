@@ -3,8 +3,8 @@
 #
 # Makes sure CACHE_DIR/kokkos-3.4.01-src holds Kokkos 3.4.01, i.e.
 # packages/kokkos of Debian's trilinos 13.2.0-4 source package (fetched with
-# tools/fetch-debian-source.sh into CACHE_DIR/src/trilinos, 166 MB, apt
-# verifies it), patched with tools/kokkos-cuda13.patch (CUDA 13 only; the
+# cmake/scripts/fetch-debian-source.sh into CACHE_DIR/src/trilinos, 166 MB, apt
+# verifies it), patched with cmake/scripts/kokkos-cuda13.patch (CUDA 13 only; the
 # host backends are unchanged). Prints the source directory (last line of
 # stdout). Used by build-kokkos-cuda.sh (CUDA compile check) and
 # build-kokkos-host.sh (the Kokkos that LAMMPS is built against).

@@ -7,9 +7,9 @@
 # goes to stderr.
 #
 #   source : packages/kokkos of Debian's trilinos 13.2.0-4 source package,
-#            fetched with tools/fetch-debian-source.sh into CACHE_DIR/src/trilinos
-#            and extracted by tools/kokkos-source.sh
-#   patch  : tools/kokkos-cuda13.patch (CUDA 13 fixes)
+#            fetched with cmake/scripts/fetch-debian-source.sh into CACHE_DIR/src/trilinos
+#            and extracted by cmake/scripts/kokkos-source.sh
+#   patch  : cmake/scripts/kokkos-cuda13.patch (CUDA 13 fixes)
 #   build  : CACHE_DIR/kokkos-cuda-build, compiler = Kokkos's bin/nvcc_wrapper
 #            (installed as CACHE_DIR/kokkos-cuda/bin/nvcc_wrapper), ccache if present
 #
@@ -93,7 +93,7 @@ fi
 
 t0=$(date +%s)
 
-# --- 1. source: only packages/kokkos, patched (tools/kokkos-source.sh) ----
+# --- 1. source: only packages/kokkos, patched (cmake/scripts/kokkos-source.sh) ----
 old_src_sum=$(cat "$src/.polydem-patched" 2>/dev/null || true)
 "$here/kokkos-source.sh" "$cache" > /dev/null
 if [ "$old_src_sum" != "$patch_sum" ]; then

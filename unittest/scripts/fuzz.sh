@@ -7,12 +7,12 @@
 # any crash/leak/timeout file it wrote (WORK/crash-*, ...); exits non-zero
 # on a finding. ctest runs the same harnesses without clang (fuzz.stl,
 # fuzz.shape: bounded mutation, not coverage-guided).
-#   bash tools/fuzz.sh [SECONDS per reader (60)] [WORK dir (/tmp/polydem-fuzz)]
+#   bash unittest/scripts/fuzz.sh [SECONDS per reader (60)] [WORK dir (/tmp/polydem-fuzz)]
 # Needs clang++ with libFuzzer (Debian: apt-get install clang), CGAL, GMP, MPFR.
 set -euo pipefail
 secs=${1:-60}
 work=${2:-/tmp/polydem-fuzz}
-src=$(cd "$(dirname "$0")/.." && pwd)
+src=$(cd "$(dirname "$0")/../.." && pwd)
 cxx=${CXX_FUZZ:-clang++}
 mkdir -p "$work"
 flags=(-std=c++17 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined
