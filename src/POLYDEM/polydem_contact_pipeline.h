@@ -37,6 +37,7 @@
 #include "polydem_law_table.h"
 #include "polydem_overlap.h"
 #include "polydem_pair_counts.h"
+#include "polydem_signed_distance.h"
 #include "polydem_wall_contact.h"
 #include "polydem_wall_ellipsoid.h"
 

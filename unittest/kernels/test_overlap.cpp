@@ -7,6 +7,7 @@
 #include "polydem_gjk.h"
 #include "polydem_mesh_grid.h"
 #include "polydem_overlap.h"
+#include "polydem_signed_distance.h"
 
 #include <gtest/gtest.h>
 
