@@ -81,6 +81,20 @@ double force_x(Lmp &l, int id)
   return l.lmp->atom->f[l.lmp->atom->map(id)][0];
 }
 
+// kinetic energy of atoms 1 and 2 plus the rotational energy compute c_er
+// of the scenes below
+double two_body_energy(Lmp &l)
+{
+  auto *a = l.lmp->atom;
+  double k = l.thermo("c_er");
+  for (int id : {1, 2}) {
+    const int i = a->map(id);
+    k += 0.5 * a->rmass[i] * (a->v[i][0] * a->v[i][0] + a->v[i][1] * a->v[i][1] +
+                               a->v[i][2] * a->v[i][2]);
+  }
+  return k;
+}
+
 }    // namespace
 
 TEST(Bridge, ForceAndEnergyFollowWillettsClosedForm)
@@ -257,15 +271,7 @@ TEST(Bridge, SphereOnAPolyhedronKeepsTheEnergy)
   l.cmds({"velocity all set 0 0 0", "set atom 1 vz " + num(-v) + " vx " + num(0.2 * v),
           "fix 1 all nve/polyhedron", "timestep " + num(dt), "thermo 100", "run 0"});
   auto *a = l.lmp->atom;
-  auto energy = [&]() {
-    double k = l.thermo("c_er");
-    for (int id : {1, 2}) {
-      const int i = a->map(id);
-      k += 0.5 * a->rmass[i] * (a->v[i][0] * a->v[i][0] + a->v[i][1] * a->v[i][1] +
-                                 a->v[i][2] * a->v[i][2]);
-    }
-    return k;
-  };
+  auto energy = [&]() { return two_body_energy(l); };
   const double K0 = energy();
   const double U0 = -0.0 + [] {
     const int n = 20000;
@@ -487,15 +493,7 @@ TEST(Bridge, TwoPolyhedraKeepTheEnergy)
           "polyhedron_set atom 2 quat 0.3 0.5 0.8 40", "fix 1 all nve/polyhedron",
           "timestep " + num(dt), "thermo 100", "run 0"});
   auto *a = l.lmp->atom;
-  auto energy = [&]() {
-    double k = l.thermo("c_er");
-    for (int id : {1, 2}) {
-      const int i = a->map(id);
-      k += 0.5 * a->rmass[i] * (a->v[i][0] * a->v[i][0] + a->v[i][1] * a->v[i][1] +
-                                 a->v[i][2] * a->v[i][2]);
-    }
-    return k;
-  };
+  auto energy = [&]() { return two_body_energy(l); };
   const double K0 = energy();
   double E_formed = 0.0, dev = 0.0, U0 = 0.0;
   bool formed = false, gone = false;
