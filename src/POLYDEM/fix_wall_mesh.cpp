@@ -169,23 +169,27 @@ void FixWallMesh::init()
   // the group's shapes, and those an insertion fix will add to it (every
   // rank sees the same candidates: counted on rank 0)
   int nkind[4] = {0, 0, 0, -1};    // polyhedra, ellipsoids, of them spheres; a composite
-  auto count = [&](int ishape) {    // a composite: by its parts
+  // per type: it has ellipsoids of unequal semi-axes (or parts that are)
+  std::vector<int> aniso_type(atom->ntypes + 1, 0);
+  auto count = [&](int ishape, int type) {    // a composite: by its parts
     const auto &sh = avec->shape(ishape);
     auto one = [&](const polydem::PolyShapeTemplate &p) {
       nkind[p.is_ellipsoid() ? 1 : 0]++;
       if (p.is_sphere()) nkind[2]++;
+      if (p.is_ellipsoid() && !p.is_sphere()) aniso_type[type] = 1;
     };
     if (!sh.is_composite()) return one(sh);
     nkind[3] = ishape;
     for (int k = 0; k < sh.nparts(); k++) one(sh.part_shape(k));
   };
   for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) count(atom->pshape[i]);
+    if (atom->mask[i] & groupbit) count(atom->pshape[i], atom->type[i]);
   if (comm->me == 0)
     for (const auto &c : ParticleSource::candidates(lmp))
-      if (c.mask & groupbit) count(c.ishape);
+      if (c.mask & groupbit) count(c.ishape, c.type);
   MPI_Allreduce(MPI_IN_PLACE, nkind, 3, MPI_INT, MPI_SUM, world);
   MPI_Allreduce(MPI_IN_PLACE, &nkind[3], 1, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(MPI_IN_PLACE, aniso_type.data(), atom->ntypes + 1, MPI_INT, MPI_MAX, world);
   if (nkind[3] >= 0 && nh < NH * avec->max_parts())
     error->all(FLERR, "fix wall/mesh {}: shape '{}' of its group is a composite defined after "
                "the fix, whose history keeps {} parts per atom: define composite shapes "
@@ -195,8 +199,9 @@ void FixWallMesh::init()
   int dim = 0;
   double *E = nullptr, *nu = nullptr, **e = nullptr, **mu = nullptr, **kn = nullptr;
   double *ktr = nullptr, *gtr = nullptr, **mur = nullptr, *rkr = nullptr, *reta = nullptr;
-  double **coh = nullptr;
+  double **coh = nullptr, **ekn = nullptr;
   if (force->pair) {
+    ekn = (double **) force->pair->extract("ellipsoid_kn", dim);
     coh = (double **) force->pair->extract("cohesion", dim);
     mur = (double **) force->pair->extract("rolling", dim);
     rkr = (double *) force->pair->extract("rolling_kr", dim);
@@ -212,18 +217,18 @@ void FixWallMesh::init()
   const bool poly_mat = E && nu && e && mu, ell_mat = kn && ktr && gtr && e && mu;
   const std::string pstyle = force->pair_style ? force->pair_style : "none";
   // under pair_style polyhedron, spheres take the polyhedra's volume law
-  // (polydem_wall_ellipsoid.h, sphere_cap_contacts) and may share a wall
-  const bool spheres_by_volume = poly_mat && !ell_mat && nkind[1] == nkind[2];
+  // (polydem_wall_ellipsoid.h, sphere_cap_contacts) and ellipsoids of
+  // unequal semi-axes pair_style ellipsoid's linear law with the like
+  // pair's 'ellipsoid k_n': all may share a wall
+  const bool spheres_by_volume = poly_mat && !ell_mat;
   if (nkind[0] && nkind[1] && !spheres_by_volume)
-    error->all(FLERR, "fix wall/mesh: its group has {} polyhedra and {} ellipsoids; one wall "
-               "takes one kind (their material comes from pair_style polyhedron or ellipsoid): "
-               "use a fix for each group", nkind[0], nkind[1]);
+    error->all(FLERR, "fix wall/mesh: its group has {} polyhedra and {} ellipsoids; they share "
+               "a wall under pair_style polyhedron only (pair_style is '{}')", nkind[0],
+               nkind[1], pstyle);
   if (nkind[1] && !ell_mat && !spheres_by_volume)
     error->all(FLERR, "fix wall/mesh: {} atoms of its group have an ellipsoid shape; their wall "
-               "contact takes k_n, e and mu from pair_style ellipsoid (pair_coeff I I kn e mu), "
-               "pair_style is '{}'{}", nkind[1], pstyle,
-               poly_mat ? " (under pair_style polyhedron it takes spheres only, by their "
-                          "overlap volume)" : "");
+               "contact takes k_n, e and mu from pair_style ellipsoid (pair_coeff I I kn e mu) "
+               "or polyhedron, pair_style is '{}'", nkind[1], pstyle);
   if (!nkind[1] && !poly_mat && !ell_mat)
     error->all(FLERR, "fix wall/mesh: requires pair_style polyhedron (the particles' E and nu "
                "come from its pair_coeff) or pair_style ellipsoid (k_n)");
@@ -236,8 +241,10 @@ void FixWallMesh::init()
   laws = polydem::law_table(law_entries.data(), nt, nt + 1);
   laws.core = core;
   laws.twist = twist;
-  laws.kt_ratio = ellipsoids ? *ktr : 0.0;
-  laws.gt_ratio = ellipsoids ? *gtr : 0.0;
+  // the linear law's tangential ratios: pair_style ellipsoid's, or its
+  // defaults for the ellipsoids of a pair_style polyhedron scene
+  laws.kt_ratio = ellipsoids ? *ktr : polydem::ELLIPSOID_KT_RATIO;
+  laws.gt_ratio = ellipsoids ? *gtr : polydem::ELLIPSOID_GT_RATIO;
   if (rkr) laws.roll_kr = *rkr;
   if (reta) laws.roll_eta = *reta;
   for (int t = 1; t <= nt; t++) {
@@ -245,6 +252,12 @@ void FixWallMesh::init()
     if (ellipsoids) {
       L.kn = kn[t][t];
     } else {
+      // k_n: ellipsoids of unequal semi-axes under pair_style polyhedron
+      L.kn = ekn ? ekn[t][t] : 0.0;
+      if (aniso_type[t] && !(L.kn > 0.0))
+        error->all(FLERR, "fix wall/mesh {}: particle type {} has ellipsoids of unequal "
+                   "semi-axes, which meet the wall by the linear law of pair_style ellipsoid: "
+                   "add 'ellipsoid k_n' to pair_coeff {} {}", id, t, t, t);
       L.E1 = E[t];
       L.nu1 = nu[t];
       L.E2 = wall_E > 0.0 ? wall_E : E[t];
@@ -308,7 +321,7 @@ void FixWallMesh::check_timestep()
   TimestepCheck check;
   bigint nover = 0;
   auto consider = [&](int type, int ishape, double s, double m) {
-    if (avec->shape(ishape).is_ellipsoid() && ellipsoids) {
+    if (avec->shape(ishape).is_ellipsoid() && (ellipsoids || !avec->shape(ishape).is_sphere())) {
       // ellipsoids: the linear spring's contact time (central impact)
       check.contact(m, law_entries[type].kn * force->ftm2v);
       return;

@@ -39,7 +39,8 @@ static constexpr int SIZE_HISTORY = polydem::ELLIPSOID_HIST;    // s (polydem_co
 
 PairEllipsoid::PairEllipsoid(LAMMPS *lmp) :
     PairPolydem(lmp, "ellipsoid", "NEIGH_HISTORY_ELL", SIZE_HISTORY, NCOUNT), kn(nullptr),
-    restitution(nullptr), friction(nullptr), kt_ratio(2.0 / 7.0), gt_ratio(0.5), use_history(0),
+    restitution(nullptr), friction(nullptr), kt_ratio(polydem::ELLIPSOID_KT_RATIO),
+    gt_ratio(polydem::ELLIPSOID_GT_RATIO), use_history(0),
     overlap_warn(0.05), overlap(polydem::OVERLAP_CENTRE), damping_mass(polydem::DAMPING_REDUCED)
 {
   // compute pair ellipsoid: [1] collisions started, [2] pair-steps in contact (this run;
@@ -90,8 +91,8 @@ void PairEllipsoid::settings(int narg, char **arg)
   overlap_warn = 0.05;
   overlap = polydem::OVERLAP_CENTRE;
   damping_mass = polydem::DAMPING_REDUCED;
-  kt_ratio = 2.0 / 7.0;
-  gt_ratio = 0.5;
+  kt_ratio = polydem::ELLIPSOID_KT_RATIO;
+  gt_ratio = polydem::ELLIPSOID_GT_RATIO;
   roll_kr = polydem::RollingLaw<double>().kr;
   roll_eta = polydem::RollingLaw<double>().eta;
   for (int iarg = 0; iarg < narg; iarg += 2) {

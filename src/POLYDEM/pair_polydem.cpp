@@ -32,8 +32,10 @@ using MathConst::MY_PI;
 // first value of the restart settings: the layout since the history
 // convention of polydem_contact_law.h (older files begin with overlap/warn > 0);
 // -3 adds rolling resistance (files of -2 are read with none), -4 liquid
-// bridges (files of -3 are read with none)
-static constexpr double RESTART_VERSION = -4.0;
+// bridges (files of -3 are read with none), -5 the stiffness of ellipsoid
+// pairs in pair_style polyhedron (files of -4 are read with none)
+static constexpr double RESTART_VERSION = -5.0;
+static constexpr double RESTART_VERSION_NO_ELLIPSOID_KN = -4.0;
 static constexpr double RESTART_VERSION_NO_BRIDGE = -3.0;
 static constexpr double RESTART_VERSION_NO_ROLLING = -2.0;
 
@@ -96,50 +98,66 @@ void PairPolydem::allocate_rolling()
           bridge_theta[i][j] = 0.0;
 }
 
-int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge)
+int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge,
+                                double *ellipsoid_kn)
 {
   mu_r = coh = 0.0;
   if (bridge) bridge[0] = bridge[1] = bridge[2] = 0.0;
-  auto keyword = [&](const char *a) {
-    return strcmp(a, "rolling") == 0 || strcmp(a, "cohesion") == 0 || strcmp(a, "bridge") == 0;
+  if (ellipsoid_kn) *ellipsoid_kn = 0.0;
+  // each keyword: its values, where they go (null: not a keyword of this
+  // style), each value's name and range (> 0, >= 0, or an angle in [0, 90))
+  enum Range { POSITIVE, NONNEGATIVE, WETTING_ANGLE };
+  struct Keyword {
+    const char *name;
+    int n;
+    double *dest;
+    const char *what[3];
+    Range range[3];
+    const char *absent;    // why dest is null
+  };
+  const Keyword kws[4] = {
+      {"rolling", 1, &mu_r, {"rolling friction mu_r"}, {NONNEGATIVE}, ""},
+      {"cohesion", 1, &coh, {"cohesion"}, {NONNEGATIVE}, ""},
+      {"bridge", 3, bridge,
+       {"bridge liquid volume V_b", "bridge surface tension gamma", "bridge contact angle theta"},
+       {POSITIVE, POSITIVE, WETTING_ANGLE},
+       "liquid bridges ('bridge') are a part of pair_style polyhedron"},
+      {"ellipsoid", 1, ellipsoid_kn, {"ellipsoid stiffness k_n"}, {POSITIVE},
+       "'ellipsoid k_n' is a keyword of pair_style polyhedron (here k_n is the pair's own "
+       "coefficient)"}};
+  auto keyword = [&](const char *a) -> const Keyword * {
+    for (const auto &kw : kws)
+      if (strcmp(a, kw.name) == 0) return &kw;
+    return nullptr;
   };
   int first = 2;
   while (first < narg && !keyword(arg[first])) first++;
   for (int k = first; k < narg;) {
-    if (strcmp(arg[k], "bridge") == 0) {
-      // bridge V_b gamma theta: liquid volume, surface tension, contact angle [degrees]
-      if (!bridge)
-        error->all(FLERR, "pair_coeff {}: liquid bridges ('bridge') are a part of pair_style "
-                   "polyhedron (between spheres)", style_name);
-      if (k + 3 >= narg)
-        error->all(FLERR, "pair_coeff {}: 'bridge' needs three values: the liquid volume "
-                   "V_b, the surface tension gamma and the contact angle theta in degrees",
-                   style_name);
-      const char *what[3] = {"liquid volume V_b", "surface tension gamma", "contact angle theta"};
-      for (int m = 0; m < 3; m++) {
-        const double v = polydem_parse::numeric(FLERR, arg[k + 1 + m], lmp);
-        const bool ok = m == 2 ? v >= 0.0 && v < 90.0 : v > 0.0 && std::isfinite(v);
-        if (!ok)
-          error->all(FLERR, "pair_coeff {}: bridge {} must be {}, got '{}'", style_name, what[m],
-                     m == 2 ? "in [0, 90) degrees (a wetting liquid)" : "> 0", arg[k + 1 + m]);
-        bridge[m] = v;
-      }
-      k += 4;
-      continue;
-    }
-    const bool roll = strcmp(arg[k], "rolling") == 0;
-    if (!roll && strcmp(arg[k], "cohesion") != 0)
+    const Keyword *kw = keyword(arg[k]);
+    if (!kw)
       error->all(FLERR, "pair_coeff {}: unknown keyword '{}' (after the coefficients: "
                  "'rolling mu_r', 'cohesion c'{})", style_name, arg[k],
-                 bridge ? ", 'bridge V_b gamma theta'" : "");
-    if (k + 1 >= narg)
-      error->all(FLERR, "pair_coeff {}: '{}' needs a value", style_name, arg[k]);
-    const double v = polydem_parse::numeric(FLERR, arg[k + 1], lmp);
-    if (!(v >= 0.0) || !std::isfinite(v))
-      error->all(FLERR, "pair_coeff {}: {} must be >= 0, got '{}'", style_name,
-                 roll ? "rolling friction mu_r" : "cohesion", arg[k + 1]);
-    (roll ? mu_r : coh) = v;
-    k += 2;
+                 bridge ? ", 'bridge V_b gamma theta', 'ellipsoid k_n'" : "");
+    if (!kw->dest) error->all(FLERR, "pair_coeff {}: {}", style_name, kw->absent);
+    if (k + kw->n >= narg)
+      error->all(FLERR, "pair_coeff {}: '{}' needs {}", style_name, kw->name,
+                 kw->n == 1 ? "a value" : "three values: the liquid volume V_b, the surface "
+                                          "tension gamma and the contact angle theta in degrees");
+    for (int m = 0; m < kw->n; m++) {
+      const char *word = arg[k + 1 + m];
+      const double v = polydem_parse::numeric(FLERR, word, lmp);
+      const Range r = kw->range[m];
+      const bool ok = std::isfinite(v) &&
+          (r == POSITIVE ? v > 0.0 : r == NONNEGATIVE ? v >= 0.0 : v >= 0.0 && v < 90.0);
+      if (!ok)
+        error->all(FLERR, "pair_coeff {}: {} must be {}, got '{}'", style_name, kw->what[m],
+                   r == POSITIVE      ? "> 0"
+                       : r == NONNEGATIVE ? ">= 0"
+                                          : "in [0, 90) degrees (a wetting liquid)",
+                   word);
+      kw->dest[m] = v;
+    }
+    k += 1 + kw->n;
   }
   return first;
 }
@@ -347,7 +365,7 @@ void PairPolydem::RestartFields::flag_as_double(int &v)
 void PairPolydem::write_restart_settings(FILE *fp)
 {
   double version = RESTART_VERSION;
-  RestartFields io(this, fp, false, 4);
+  RestartFields io(this, fp, false, 5);
   io(version);
   settings_fields(io);
   rolling_settings_fields(io);
@@ -358,12 +376,15 @@ void PairPolydem::read_restart_settings(FILE *fp)
   double version = 0.0;
   RestartFields head(this, fp, true, 0);
   head(version);
-  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_BRIDGE &&
-      version != RESTART_VERSION_NO_ROLLING)
+  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_ELLIPSOID_KN &&
+      version != RESTART_VERSION_NO_BRIDGE && version != RESTART_VERSION_NO_ROLLING)
     error->all(FLERR, "pair_style {}: this restart file was written by an older POLYDEM ({}); "
                "restart it with that version, or write a data file there and start from it",
                style_name, restart_version_text());
-  restart_format = version == RESTART_VERSION ? 4 : (version == RESTART_VERSION_NO_BRIDGE ? 3 : 2);
+  restart_format = version == RESTART_VERSION                  ? 5
+      : version == RESTART_VERSION_NO_ELLIPSOID_KN               ? 4
+      : version == RESTART_VERSION_NO_BRIDGE                     ? 3
+                                                                 : 2;
   RestartFields io(this, fp, true, restart_format);
   settings_fields(io);
   rolling_settings_fields(io);
@@ -372,7 +393,7 @@ void PairPolydem::read_restart_settings(FILE *fp)
 void PairPolydem::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
-  RestartFields io(this, fp, false, 4);
+  RestartFields io(this, fp, false, 5);
   coeff_fields(io);
 }
 

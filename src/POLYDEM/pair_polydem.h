@@ -49,6 +49,8 @@ class PairPolydem : public Pair {
     bool has_rolling() const { return version >= 3; }
     // ... and the liquid bridges' (since format 4)
     bool has_bridge() const { return version >= 4; }
+    // ... and pair_style polyhedron's stiffness of ellipsoid pairs (since format 5)
+    bool has_ellipsoid_kn() const { return version >= 5; }
 
    private:
     PairPolydem *pair;
@@ -66,7 +68,7 @@ class PairPolydem : public Pair {
   int nhistory;               // values per pair (set in init_style: choose_history_size)
   int nhistory_contact;       // of them per contact (nhistory without part slots)
   int nhistory_restart;       // the restart file's (0: none read)
-  int restart_format;         // the restart file's format (2, 3, 4) while it is read
+  int restart_format;         // the restart file's format (2 to 5) while it is read
   int nhistory_fix;           // values per pair of the history fix made (0: none yet)
   const int ncount;
   // rolling resistance (polydem_contact_law.h RollingLaw): mu_r per type
@@ -90,9 +92,11 @@ class PairPolydem : public Pair {
   virtual void allocate() = 0;
   void allocate_rolling();
   // pair_coeff's trailing keywords 'rolling mu_r' and 'cohesion c' (each
-  // default 0), and 'bridge V_b gamma theta' where bridge is given (else an
-  // error): the count of the values before them
-  int coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge = nullptr);
+  // default 0), 'bridge V_b gamma theta' where bridge is given and
+  // 'ellipsoid k_n' where ellipsoid_kn is (else errors): the count of the
+  // values before them
+  int coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge = nullptr,
+                     double *ellipsoid_kn = nullptr);
   // extract() of the fields every POLYDEM pair style has: rolling and
   // cohesion per type pair, the counters, the rolling k_r factor and
   // dashpot ratio (fix wall/mesh); null for any other name

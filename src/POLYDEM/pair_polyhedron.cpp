@@ -30,8 +30,10 @@
 #include "polydem_parse.h"
 #include "polydem_shape_template.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <vector>
 
 using namespace LAMMPS_NS;
 using MathConst::MY_PI;
@@ -42,7 +44,8 @@ static constexpr int SIZE_HISTORY = polydem::CONTACT_HIST;    // s, k_t, twist (
 
 PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
     PairPolydem(lmp, "polyhedron", "NEIGH_HISTORY_POLY", SIZE_HISTORY, NCOUNT), youngs(nullptr),
-    poisson(nullptr), matset(nullptr), restitution(nullptr), friction(nullptr), twist(1),
+    poisson(nullptr), matset(nullptr), restitution(nullptr), friction(nullptr),
+    ellipsoid_kn(nullptr), twist(1),
     pairset(nullptr), overlap_warn(0.05), core(1.0e-4), dt(0.0), contact_step(-1)
 {
   ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
@@ -59,6 +62,7 @@ PairPolyhedron::~PairPolyhedron()
     memory->destroy(matset);
     memory->destroy(restitution);
     memory->destroy(friction);
+    memory->destroy(ellipsoid_kn);
     memory->destroy(pairset);
   }
 }
@@ -76,13 +80,14 @@ void PairPolyhedron::allocate()
   memory->create(matset, n + 1, "pair:matset");
   memory->create(restitution, n + 1, n + 1, "pair:restitution");
   memory->create(friction, n + 1, n + 1, "pair:friction");
+  memory->create(ellipsoid_kn, n + 1, n + 1, "pair:ellipsoid_kn");
   memory->create(pairset, n + 1, n + 1, "pair:pairset");
   for (int i = 0; i <= n; i++) {
     youngs[i] = poisson[i] = 0.0;
     matset[i] = 0;
     for (int j = 0; j <= n; j++) {
       setflag[i][j] = pairset[i][j] = 0;
-      restitution[i][j] = friction[i][j] = 0.0;
+      restitution[i][j] = friction[i][j] = ellipsoid_kn[i][j] = 0.0;
     }
   }
   allocate_rolling();
@@ -130,15 +135,16 @@ void PairPolyhedron::settings(int narg, char **arg)
    pair_coeff I J E nu e mu : material (E, nu) of the types in I and J,
                               restitution e and friction mu of the pairs
    pair_coeff I J e mu      : e and mu of unlike pairs (I != J) only
-   either ending in 'rolling mu_r' (rolling resistance) and/or 'cohesion k_c'
-   (adhesive stress) of the pairs
+   either ending in 'rolling mu_r' (rolling resistance), 'cohesion k_c'
+   (adhesive stress), 'bridge V_b gamma theta' (liquid bridge) and/or
+   'ellipsoid k_n' (stiffness of two ellipsoids, one with unequal semi-axes)
 ------------------------------------------------------------------------- */
 
 void PairPolyhedron::coeff(int nargs, char **arg)
 {
   if (!allocated) allocate();
-  double mu_r = 0.0, coh = 0.0, bridge[3];
-  const int narg = coeff_keywords(nargs, arg, mu_r, coh, bridge);
+  double mu_r = 0.0, coh = 0.0, bridge[3], kn = 0.0;
+  const int narg = coeff_keywords(nargs, arg, mu_r, coh, bridge, &kn);
   if (narg != 4 && narg != 6)
     error->all(FLERR, "pair_coeff polyhedron: expected 'I J E nu e mu' or 'I J e mu', got {} "
                "values", narg);
@@ -183,6 +189,7 @@ void PairPolyhedron::coeff(int nargs, char **arg)
       bridge_vol[i][j] = bridge[0];
       bridge_gamma[i][j] = bridge[1];
       bridge_theta[i][j] = bridge[2];
+      ellipsoid_kn[i][j] = kn;
       pairset[i][j] = 1;
       setflag[i][j] = 1;
       count++;
@@ -206,8 +213,8 @@ void PairPolyhedron::init_style()
   }
   // spheres and ellipsoids meet polyhedra and spheres by their exact overlap
   // volume; two ellipsoids of which one has unequal semi-axes have no volume
-  // kernel (pair_style ellipsoid takes scenes of ellipsoids alone)
-  // (composites: by their parts)
+  // kernel and meet by the algebraic contact of pair_style ellipsoid, with
+  // the type pair's 'ellipsoid k_n' (composites: by their parts)
   auto parts_any = [&](int ishape, bool aniso_only) {
     const auto &sh = avec->shape(ishape);
     auto one = [&](const polydem::PolyShapeTemplate &p) {
@@ -218,33 +225,41 @@ void PairPolyhedron::init_style()
       if (one(sh.part_shape(k))) return true;
     return false;
   };
-  auto aniso = [&](int ishape) {
-    return parts_any(ishape, true);
+  // per type: it holds ellipsoids ([0]), of them with unequal semi-axes ([1])
+  const int ntp = atom->ntypes + 1;
+  std::vector<int> ell_type(2 * ntp, 0), first_shape(ntp, -1);
+  int nell[2] = {0, 0};    // ellipsoid atoms, of them with unequal axes
+  auto consider = [&](int ishape, int type, int natoms) {
+    if (!parts_any(ishape, false)) return;
+    nell[0] += natoms;
+    ell_type[type] = 1;
+    if (parts_any(ishape, true)) {
+      nell[1] += natoms;
+      ell_type[ntp + type] = 1;
+      first_shape[type] = ishape;
+    }
   };
-  int nell[2] = {0, 0}, first = -1;    // ellipsoid atoms, of them with unequal axes
-  for (int i = 0; i < atom->nlocal; i++)
-    if (parts_any(atom->pshape[i], false)) {
-      nell[0]++;
-      if (aniso(atom->pshape[i])) {
-        nell[1]++;
-        first = atom->pshape[i];
-      }
-    }
+  for (int i = 0; i < atom->nlocal; i++) consider(atom->pshape[i], atom->type[i], 1);
   MPI_Allreduce(MPI_IN_PLACE, nell, 2, MPI_INT, MPI_SUM, world);
-  MPI_Allreduce(MPI_IN_PLACE, &first, 1, MPI_INT, MPI_MAX, world);
-  bool source_ell = false;
-  for (const auto &c : ParticleSource::candidates(lmp)) {
-    source_ell = source_ell || parts_any(c.ishape, false);
-    if (aniso(c.ishape)) {
-      nell[1]++;
-      first = c.ishape;
-    }
-  }
-  if (nell[1] > 0 && (nell[0] > 1 || source_ell))
-    error->all(FLERR, "pair_style polyhedron: shape '{}' is an ellipsoid with unequal semi-axes; "
-               "two ellipsoids meet by overlap volume only if both are spheres (equal "
-               "semi-axes). Use spheres, or pair_style ellipsoid for a scene of ellipsoids alone",
-               avec->shape_id(first));
+  MPI_Allreduce(MPI_IN_PLACE, ell_type.data(), 2 * ntp, MPI_INT, MPI_MAX, world);
+  MPI_Allreduce(MPI_IN_PLACE, first_shape.data(), ntp, MPI_INT, MPI_MAX, world);
+  // an insertion fix adds many of each candidate
+  for (const auto &c : ParticleSource::candidates(lmp)) consider(c.ishape, c.type, 2);
+  if (nell[1] > 0 && nell[0] > 1)
+    for (int i = 1; i < ntp; i++)
+      for (int j = 1; j < ntp; j++) {
+        if (!ell_type[ntp + i] || !ell_type[j]) continue;
+        const int lo = std::min(i, j), hi = std::max(i, j);
+        const bool given = pairset[lo][hi] ? ellipsoid_kn[lo][hi] > 0.0
+                                           : ellipsoid_kn[lo][lo] > 0.0 && ellipsoid_kn[hi][hi] > 0.0;
+        if (!given)
+          error->all(FLERR, "pair_style polyhedron: shape '{}' is an ellipsoid with unequal "
+                     "semi-axes; two ellipsoids meet by overlap volume only if both are spheres "
+                     "(equal semi-axes), others by the algebraic contact of pair_style "
+                     "ellipsoid, whose normal stiffness types {} and {} lack: add 'ellipsoid "
+                     "k_n' to their pair_coeff (or to each type's own)",
+                     avec->shape_id(first_shape[i]), lo, hi);
+      }
 
   dt = update->dt;
 
@@ -257,6 +272,11 @@ void PairPolyhedron::init_style()
   laws.overlap_warn = overlap_warn;
   laws.roll_kr = roll_kr;
   laws.roll_eta = roll_eta;
+  // the algebraic contact of ellipsoid pairs: pair_style ellipsoid's defaults
+  laws.kt_ratio = polydem::ELLIPSOID_KT_RATIO;
+  laws.gt_ratio = polydem::ELLIPSOID_GT_RATIO;
+  laws.overlap = polydem::OVERLAP_CENTRE;
+  laws.damping_mass = polydem::DAMPING_REDUCED;
   beyond_contact = 0;    // init_one: 1 with liquid bridges
   choose_history_size();
   laws.nhist = nhistory_contact;
@@ -288,6 +308,8 @@ double PairPolyhedron::init_one(int i, int j)
   restitution[j][i] = restitution[i][j];
   friction[j][i] = friction[i][j];
   mix_keywords(i, j, pairset[i][j]);
+  if (!pairset[i][j]) ellipsoid_kn[i][j] = sqrt(ellipsoid_kn[i][i] * ellipsoid_kn[j][j]);
+  ellipsoid_kn[j][i] = ellipsoid_kn[i][j];
   // the law table's entries of the pair, damping in closed form (polydem_damping.h)
   const int nt = atom->ntypes + 1;
   const auto damp = polydem::damping_law(restitution[i][j], 1);
@@ -297,7 +319,7 @@ double PairPolyhedron::init_one(int i, int j)
     e.nu1 = poisson[a];
     e.E2 = youngs[b];
     e.nu2 = poisson[b];
-    e.kn = 0.0;
+    e.kn = ellipsoid_kn[i][j];
     e.mu = friction[i][j];
     e.damping = damp;
     e.mu_r = rolling[i][j];
@@ -336,7 +358,14 @@ void PairPolyhedron::check_timestep()
     const double R = s * cbrt(3.0 * V / (4.0 * MY_PI));
     const double kn = 2.0 * youngs[type] * R;
     check.contact(0.5 * m, kn * force->ftm2v);
-    if (shape.is_ellipsoid()) return;
+    if (shape.is_ellipsoid()) {
+      // and the algebraic contact of ellipsoid pairs, at the stiffest k_n of its type
+      double kmax = 0.0;
+      for (int u = 1; u <= atom->ntypes; u++)
+        kmax = std::max(kmax, ellipsoid_kn[std::min(type, u)][std::max(type, u)]);
+      if (kmax > 0.0) check.contact(0.5 * m, kmax * force->ftm2v);
+      return;
+    }
     // like pair of this particle, its largest face flat on another's
     const double Vs = V * s * s * s, ms = m / force->ftm2v;
     const auto law = polydem::feng_law(youngs[type], 0.0, Vs, youngs[type], 0.0, Vs,
@@ -497,6 +526,7 @@ void PairPolyhedron::coeff_fields(RestartFields &io)
       io(restitution[i][j]);
       io(friction[i][j]);
       rolling_coeff_fields(io, i, j);
+      if (io.has_ellipsoid_kn()) io(ellipsoid_kn[i][j]);
     }
   }
 }
@@ -508,6 +538,7 @@ void *PairPolyhedron::extract(const char *str, int &dim)
   dim = 2;
   if (strcmp(str, "restitution") == 0) return (void *) restitution;
   if (strcmp(str, "friction") == 0) return (void *) friction;
+  if (strcmp(str, "ellipsoid_kn") == 0) return (void *) ellipsoid_kn;
   dim = 1;
   if (strcmp(str, "youngs") == 0) return (void *) youngs;
   if (strcmp(str, "poisson") == 0) return (void *) poisson;

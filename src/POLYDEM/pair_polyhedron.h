@@ -55,6 +55,9 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
   double *youngs, *poisson;    // per type
   int *matset;                 // per type: material given
   double **restitution, **friction;
+  // per type pair: k_n of the algebraic contact of two ellipsoids of which
+  // one has unequal semi-axes (pair_coeff ... ellipsoid k_n; 0: none given)
+  double **ellipsoid_kn;
   // the law table (polydem_law_table.h) of the contacts: settings from
   // init_style, each type pair's entry from init_one (mixed coefficients)
   std::vector<polydem::LawEntry<double>> law_entries;

@@ -321,6 +321,71 @@ POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const
   return r;
 }
 
+// Two ellipsoids of which one has unequal semi-axes (either may be a part of
+// a composite): they have no overlap-volume kernel and meet by the
+// algebraic contact of pair_style ellipsoid instead.
+template <typename T>
+POLYDEM_FN bool algebraic_pair(const PosedShape<T> &a, const PosedShape<T> &b)
+{
+  return view_is_ellipsoid(*a.view) && view_is_ellipsoid(*b.view) &&
+         !(posed_sphere_radius(a) > T(0) && posed_sphere_radius(b) > T(0));
+}
+
+// The algebraic contact of ellipsoids a (of body A) and b (of body B)
+// (algebraic_pair): the linear law of pair_style ellipsoid (ellipsoid seed
+// Eqs. 23-24) with the type pair's k_n (LawEntry::kn; pair_coeff ...
+// ellipsoid k_n), the overlap delta = r (1/W0 - 1) along the line of
+// centres, whose force is the exact gradient of 1/2 k_n delta^2
+// (OVERLAP_CENTRE), the dashpot of the reduced mass; the torques about the
+// bodies' centres. h: the contact's tab.nhist values or null. vmin is the
+// smallest semi-axis (the overlap is a length). No liquid bridge (counted
+// as PP_NOBRIDGE where the pair has one).
+template <typename T, typename C>
+POLYDEM_FN PairContactResult<T>
+algebraic_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                       const PosedShape<T> &a, const PosedShape<T> &b, const LawTable<T> &tab,
+                       T dt, bool update, T *h, C *count)
+{
+  PairContactResult<T> r;
+  r.contact = 0;
+  EllipsoidFrame<T> fa, fb;
+  fa.x = a.x;
+  fa.R = a.R;
+  fa.axes = a.s * make_vec3(a.view->axes[0], a.view->axes[1], a.view->axes[2]);
+  fb.x = b.x;
+  fb.R = b.R;
+  fb.axes = b.s * make_vec3(b.view->axes[0], b.view->axes[1], b.view->axes[2]);
+  const EllipsoidContact<T> c = ellipsoid_contact(fa, fb);
+  if (c.status != STATUS_OK) {
+    if (c.status != STATUS_SEPARATED) count[PP_DEGENERATE] += C(1);
+    history_release(h, tab.nhist);
+    return r;
+  }
+  r.contact = 1;
+  count[PP_CONTACTS] += C(1);
+  T amin = fa.axes.x;
+  const T ax[5] = {fa.axes.y, fa.axes.z, fb.axes.x, fb.axes.y, fb.axes.z};
+  for (int k = 0; k < 5; ++k)
+    if (ax[k] < amin) amin = ax[k];
+  r.vmin = amin;
+  const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
+                                                   A.m * B.m / (A.m + B.m), update ? dt : T(0),
+                                                   A.m, B.m);
+  r.geo = ellipsoid_geometry(c, OVERLAP_CENTRE, a.x, b.x);
+  // d delta/d theta about the bodies' centres (a part's centre moves too)
+  r.geo.M_A += cross(a.x - A.shape.x, r.geo.S_A);
+  r.geo.M_B -= cross(b.x - B.shape.x, r.geo.S_A);
+  ContactLaw<T> law = ellipsoid_pair_law(tab, A.type, B.type);
+  if (law.bridge.volume > T(0)) {
+    count[PP_NOBRIDGE] += C(1);
+    law.bridge.volume = T(0);
+  }
+  r.cf = pair_contact_step(r.geo, law, kin, h, tab.nhist,
+                           T(contact_history_sign(A.tag, B.tag)), update);
+  if (r.geo.volume > tab.overlap_warn * amin) count[PP_BIGOVERLAP] += C(1);
+  return r;
+}
+
 // A pair of which one or both are composites, in a table with part slots
 // (tab.nslot > 0): every pair of parts whose bounding spheres meet is a
 // contact of its own, with its history in the slot keyed 1 + (part of the
@@ -352,9 +417,15 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
       for (int k = 0; k < tab.nslot; ++k)
         if (hist[k * stride] == key) slot = hist + k * stride;
       const T reach = a.s * a.view->radius + b.s * b.view->radius;
+      const bool algebraic = algebraic_pair(a, b);
       OverlapResult<T> ov;
       ov.status = STATUS_SEPARATED;
-      if (norm2(a.x - b.x) < reach * reach) ov = convex_overlap(a, b, ws, count, slot != nullptr);
+      if (norm2(a.x - b.x) < reach * reach) {
+        if (algebraic)
+          ov.status = STATUS_OK;    // decided by the algebraic contact below
+        else
+          ov = convex_overlap(a, b, ws, count, slot != nullptr);
+      }
       if (ov.status != STATUS_OK) {
         history_release(slot, stride);
         continue;
@@ -366,8 +437,15 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
             slot[0] = key;
           }
       if (!slot && update) count[PP_NOSLOT] += C(1);    // more part contacts than slots
-      const PairContactResult<T> c = convex_contact_step(A, B, a, b, ov, tab, dt, update,
-                                                         slot ? slot + 1 : nullptr, count, false);
+      T *h = slot ? slot + 1 : nullptr;
+      const PairContactResult<T> c =
+          algebraic ? algebraic_contact_step(A, B, a, b, tab, dt, update, h, count)
+                    : convex_contact_step(A, B, a, b, ov, tab, dt, update, h, count, false);
+      if (!c.contact) {
+        // the algebraic contact found them apart: the slot taken above is freed
+        history_release(slot, stride);
+        continue;
+      }
       if (!r.contact) {
         r.cf = c.cf;
       } else {
@@ -417,6 +495,7 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   // convex, or composites of one part (no slots): the part itself
   const PosedShape<T> a = ca ? posed_part(A.shape, 0) : A.shape;
   const PosedShape<T> b = cb ? posed_part(B.shape, 0) : B.shape;
+  if (algebraic_pair(a, b)) return algebraic_contact_step(A, B, a, b, tab, dt, update, hist, count);
   const OverlapResult<T> ov = convex_overlap(a, b, ws, count, touching);
   if (ov.status != STATUS_OK) {
     history_release(hist, tab.nhist);
@@ -567,8 +646,10 @@ POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const La
   r.near_built = r.near_overflow = 0;
   if (b.axes.x > T(0)) {    // an ellipsoid: the grid query (no near list, no workspace)
     const Vec3<T> ax = make_vec3(s * b.axes.x, s * b.axes.y, s * b.axes.z);
-    ContactLaw<T> law =
-        sc.sphere_volume ? wall_polyhedron_law(tab, b.type, V) : wall_ellipsoid_law(tab, b.type);
+    // spheres of a volume-law scene by their cap volume; other ellipsoids
+    // by the linear law (LawEntry::kn)
+    const bool cap = sc.sphere_volume && ax.x == ax.y && ax.y == ax.z;
+    ContactLaw<T> law = cap ? wall_polyhedron_law(tab, b.type, V) : wall_ellipsoid_law(tab, b.type);
     // a liquid bridge on the wall: spheres only, of radius R = 2 r (the
     // sphere-plane limit of Derjaguin's 2 r_A r_B / (r_A + r_B))
     if (ax.x == ax.y && ax.y == ax.z)
@@ -576,7 +657,7 @@ POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const La
     else
       law.bridge.volume = T(0);
     r.wf = wall_ellipsoid_particle(ax, b.pose, sc.mp, sc.grid, law, b.m, dts, sc.cosmax, sc.both,
-                                   b.v, b.w, hist, update, P, sc.sphere_volume != 0);
+                                   b.v, b.w, hist, update, P, cap);
   } else {
     if (near) {
       near->skin = sc.near_skin * sv.radius * s;

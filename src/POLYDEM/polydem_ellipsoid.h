@@ -99,9 +99,8 @@ template <typename T> POLYDEM_FN T symtrprod(const Sym3<T> &x, const Sym3<T> &y)
 }
 
 // Shape matrix M = R diag(k0, k1, k2) R^T (k = a^-2 for the quadric, a^2 for its inverse)
-template <typename T> POLYDEM_FN Sym3<T> ellipsoid_matrix(const Quat<T> &q, T k0, T k1, T k2)
+template <typename T> POLYDEM_FN Sym3<T> ellipsoid_matrix(const Mat3<T> &r, T k0, T k1, T k2)
 {
-  const Mat3<T> r = quat_to_mat(q);
   Sym3<T> m;
   m.xx = k0 * r.m[0][0] * r.m[0][0] + k1 * r.m[0][1] * r.m[0][1] + k2 * r.m[0][2] * r.m[0][2];
   m.yy = k0 * r.m[1][0] * r.m[1][0] + k1 * r.m[1][1] * r.m[1][1] + k2 * r.m[1][2] * r.m[1][2];
@@ -118,6 +117,24 @@ template <typename T> struct EllipsoidPose {
   Quat<T> q;    // unit quaternion, body -> lab
   Vec3<T> axes; // semi-axes along body x, y, z
 };
+
+// The same with the orientation as a rotation matrix (body -> lab): an
+// ellipsoid part of a composite, posed by the product of the body's and the
+// part's rotations (pair_style polyhedron).
+template <typename T> struct EllipsoidFrame {
+  Vec3<T> x;
+  Mat3<T> R;
+  Vec3<T> axes;
+};
+
+template <typename T> POLYDEM_FN EllipsoidFrame<T> ellipsoid_frame(const EllipsoidPose<T> &p)
+{
+  EllipsoidFrame<T> f;
+  f.x = p.x;
+  f.R = quat_to_mat(p.q);
+  f.axes = p.axes;
+  return f;
+}
 
 // Quartic discriminant (Eq. 11) and the sum of the magnitudes of its terms.
 template <typename T>
@@ -151,7 +168,7 @@ template <typename T> struct EllipsoidPencil {
 };
 
 template <typename T>
-POLYDEM_FN void ellipsoid_pencil(const EllipsoidPose<T> &A, const EllipsoidPose<T> &B,
+POLYDEM_FN void ellipsoid_pencil(const EllipsoidFrame<T> &A, const EllipsoidFrame<T> &B,
                                  EllipsoidPencil<T> &pc)
 {
   T L = A.axes.x;
@@ -163,8 +180,8 @@ POLYDEM_FN void ellipsoid_pencil(const EllipsoidPose<T> &A, const EllipsoidPose<
   pc.L = L;
   const T ia = L / A.axes.x, ib = L / A.axes.y, ic = L / A.axes.z;
   const T ja = L / B.axes.x, jb = L / B.axes.y, jc = L / B.axes.z;
-  pc.ma = ellipsoid_matrix(A.q, ia * ia, ib * ib, ic * ic);
-  pc.mb = ellipsoid_matrix(B.q, ja * ja, jb * jb, jc * jc);
+  pc.ma = ellipsoid_matrix(A.R, ia * ia, ib * ib, ic * ic);
+  pc.mb = ellipsoid_matrix(B.R, ja * ja, jb * jb, jc * jc);
   pc.d = (T(1) / L) * (B.x - A.x);
 
   // det(lambda X + Y) = l^3 det X + l^2 tr(adj X Y) + l tr(X adj Y) + det Y
@@ -291,8 +308,8 @@ template <typename T> struct EllipsoidContact {
 };
 
 template <typename T>
-POLYDEM_FN EllipsoidContact<T> ellipsoid_contact(const EllipsoidPose<T> &A,
-                                                 const EllipsoidPose<T> &B)
+POLYDEM_FN EllipsoidContact<T> ellipsoid_contact(const EllipsoidFrame<T> &A,
+                                                 const EllipsoidFrame<T> &B)
 {
   EllipsoidContact<T> r;
   r.status = STATUS_DEGENERATE;
@@ -356,6 +373,13 @@ POLYDEM_FN EllipsoidContact<T> ellipsoid_contact(const EllipsoidPose<T> &A,
   r.c = A.x + pc.L * p;
   r.gB = (T(2) * (T(1) - mu0) / pc.L) * symvec(pc.mb, pc.d - p);
   return r;
+}
+
+template <typename T>
+POLYDEM_FN EllipsoidContact<T> ellipsoid_contact(const EllipsoidPose<T> &A,
+                                                 const EllipsoidPose<T> &B)
+{
+  return ellipsoid_contact(ellipsoid_frame(A), ellipsoid_frame(B));
 }
 
 }    // namespace polydem

@@ -33,6 +33,12 @@
 namespace polydem {
 
 enum EllipsoidOverlap : int { OVERLAP_CENTRE = 0, OVERLAP_CHORD = 1 };
+
+// the tangential spring and dashpot of the linear law by default:
+// k_t / k_n = 2/7, gamma_t / gamma_n = 1/2 (pair_style ellipsoid's
+// 'tangential', and pair_style polyhedron's ellipsoid pairs)
+constexpr double ELLIPSOID_KT_RATIO = 2.0 / 7.0;
+constexpr double ELLIPSOID_GT_RATIO = 0.5;
 // pair_style ellipsoid keyword 'damping': the mass in gamma_n
 enum EllipsoidDampingMass : int { DAMPING_REDUCED = 0, DAMPING_CONTACT = 1 };
 

@@ -9,6 +9,7 @@
 #include "pair.h"
 #include "ellipsoid_gas.h"
 #include "polydem_ellipsoid_force.h"
+#include "polydem_pair_counts.h"
 #include "polydem_shape_template.h"
 
 #include <gtest/gtest.h>
@@ -299,6 +300,56 @@ TEST(PairEllipsoid, ElasticGasConservesEnergyAndMomentum)
   EXPECT_LT(b.max_dp, 1e-12);
 }
 
+// Two ellipsoids of unequal semi-axes under pair_style polyhedron (issue 29:
+// every shape meets every shape) meet by pair_style ellipsoid's algebraic
+// contact and linear law, with the pair's 'ellipsoid k_n': a frictional,
+// dissipative gas of 64 prolate ellipsoids runs the same trajectory under
+// either style, bit for bit (the same kernel, law and history convention;
+// pair_style polyhedron's E and nu do not enter these pairs).
+TEST(PairEllipsoid, PolyhedronStyleRunsEllipsoidPairsAlike)
+{
+  const std::string data = ::testing::TempDir() + "polydem_ellipsoid_alike.data";
+  polydem_test::GasSpec g;
+  g.n_side = 4;
+  g.phi = 0.2;
+  g.box = 0.5;
+  g.vrms = 3.0;
+  polydem_test::write_gas(data, g);
+  const double b = g.b(), kn = 1e6;
+  const double m = 2000.0 * 4.0 / 3.0 * M_PI * g.xi * b * b * b;
+  const double dt = M_PI * std::sqrt(0.5 * m / kn) / 50.0;
+  auto run = [&](const std::vector<std::string> &pair) {
+    Lmp l;
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
+            "comm_modify vel yes",
+            "polyhedron_shape e ellipsoid " + num(g.xi * b) + " " + num(b) + " " + num(b),
+            "read_data " + data});
+    l.cmds(pair);
+    l.cmds({"neighbor " + num(0.2 * b) + " bin", "fix 1 all nve/polyhedron",
+            "timestep " + num(dt), "run 1500"});
+    int dim = 0;
+    const double contacts = ((double *) l.lmp->force->pair->extract("counters", dim))
+        [std::string(l.lmp->force->pair_style) == "ellipsoid" ? 3 : (int) polydem::PP_CONTACTS];
+    return std::make_pair(l.local_state(), contacts);
+  };
+  const auto ell = run({"pair_style ellipsoid", "pair_coeff * * " + num(kn) + " 0.8 0.4"});
+  const auto pol =
+      run({"pair_style polyhedron", "pair_coeff * * 1e9 0.3 0.8 0.4 ellipsoid " + num(kn)});
+  std::printf("64 ellipsoids, 1500 steps: %.0f contact-steps under pair_style ellipsoid, %.0f "
+              "under pair_style polyhedron\n", ell.second, pol.second);
+  EXPECT_GT(ell.second, 500.0);    // contact-steps: collisions did happen
+  EXPECT_EQ(ell.second, pol.second);
+  ASSERT_EQ(ell.first.size(), pol.first.size());
+  for (const auto &kv : ell.first) {
+    const auto &q = pol.first.at(kv.first);
+    for (int k = 0; k < 3; k++) {
+      EXPECT_EQ(kv.second.x[k], q.x[k]) << "atom " << kv.first;
+      EXPECT_EQ(kv.second.v[k], q.v[k]) << "atom " << kv.first;
+      EXPECT_EQ(kv.second.L[k], q.L[k]) << "atom " << kv.first;
+    }
+  }
+}
+
 // Bad input: clear errors naming the command and the bad value.
 TEST(PairEllipsoid, BadInput)
 {
@@ -336,6 +387,19 @@ TEST(PairEllipsoid, BadInput)
   l.cmds({"polyhedron_set atom 2 shape e", "run 0", "pair_style polyhedron",
           "pair_coeff * * 1e7 0.3 0.9 0.0"});
   EXPECT_NE(l.error_of("run 0").find("shape 'e' is an ellipsoid with unequal semi-axes"),
+            std::string::npos);
+  EXPECT_NE(l.error_of("run 0").find("types 1 and 1 lack: add 'ellipsoid k_n'"),
+            std::string::npos);
+  // the stiffness of ellipsoid pairs (pair_style polyhedron only)
+  EXPECT_NE(l.error_of("pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid 0")
+                .find("ellipsoid stiffness k_n must be > 0, got '0'"),
+            std::string::npos);
+  EXPECT_NE(l.error_of("pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid").find("'ellipsoid' needs a value"),
+            std::string::npos);
+  l.cmds({"pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid 1e6", "run 0"});
+  l.cmds({"pair_style ellipsoid"});
+  EXPECT_NE(l.error_of("pair_coeff * * 1e6 0.9 ellipsoid 1e6")
+                .find("'ellipsoid k_n' is a keyword of pair_style polyhedron"),
             std::string::npos);
 }
 

@@ -614,6 +614,9 @@ TEST(Insert, BadInputIsRefusedClearly)
     l.cmds({"comm_modify vel yes", f + "10 1 density 1 region box shape e 1 scale 0.001 per 1",
             "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.5 0.5"});
     EXPECT_TRUE(has(l.error_of("run 0"), "shape 'e' is an ellipsoid with unequal semi-axes"));
+    // with the stiffness of ellipsoid pairs they go in (issue 29)
+    l.cmds({"pair_coeff * * 1e7 0.3 0.5 0.5 ellipsoid 1e3", "timestep 1e-6", "run 3"});
+    EXPECT_GE(l.lmp->atom->natoms, 1);    // one per insertion event ("per 1")
   }
   {
     // and the other way round (the pair styles refuse, through ParticleSource)

@@ -224,6 +224,123 @@ TEST(ContactPipeline, EllipsoidPairIsTheComposition)
   for (double x : h) EXPECT_EQ(x, 0.0);
 }
 
+// Two ellipsoids of unequal semi-axes under pair polyhedron's entry point
+// meet by the algebraic contact: the same force, torques, energy and history
+// as ellipsoid_pair_contact, bit for bit. As a part of a composite (offset
+// and turned in its body), the force and the torques about the bodies'
+// centres are minus the gradient of the energy 1/2 k_n delta^2 (central
+// differences of the bodies' poses, to 1e-6 of the largest).
+TEST(ContactPipeline, EllipsoidPairsOfPairPolyhedronAreAlgebraic)
+{
+  const Vec3<double> ax = make_vec3(0.6, 0.4, 0.3);
+  ShapeView<double> egg;
+  egg.axes[0] = ax.x;
+  egg.axes[1] = ax.y;
+  egg.axes[2] = ax.z;
+  egg.radius = ax.x;    // bounding radius (the composite's part pairs by bounding spheres)
+  for (bool friction : {true, false}) {
+    Table tab(false);
+    tab.t.nhist = CONTACT_HIST;
+    if (!friction)
+      for (auto &e : tab.e) e.mu = 0.0;
+    Atoms2 at(0.5, 1.0, 0.8);
+    const auto atoms = host_atoms(&at);
+    const auto A = gather_polyhedron_body(atoms, 0, egg), B = gather_polyhedron_body(atoms, 1, egg);
+    OverlapWorkspace<double, 64> ws;
+    double h[CONTACT_HIST] = {1e-3, -2e-3, 5e-4, 0, 0}, h0[CONTACT_HIST];
+    for (int k = 0; k < CONTACT_HIST; k++) h0[k] = h[k];
+    double cnt[PP_NCOUNT] = {}, ecnt[EP_NCOUNT] = {};
+    const auto r = polyhedron_pair_contact(A, B, tab.t, 1e-4, true, friction ? h : nullptr, ws, cnt);
+    ASSERT_EQ(r.contact, 1);
+    const auto e = ellipsoid_pair_contact(gather_ellipsoid_body(atoms, 0, ax),
+                                          gather_ellipsoid_body(atoms, 1, ax), tab.t, 1e-4, true,
+                                          friction ? h0 : nullptr, 1.0, ecnt);
+    expect_same(r.cf, e.cf);
+    for (int k = 0; k < CONTACT_HIST; k++) EXPECT_EQ(h[k], h0[k]) << k;
+    EXPECT_EQ(cnt[PP_CONTACTS], 1.0);
+    EXPECT_EQ(r.geo.volume, e.geo.volume);
+  }
+
+  // the egg as the one part of a composite, off its centre and turned
+  ShapePart<double> part;
+  part.view = &egg;
+  const double px[3] = {0.25, -0.1, 0.15};
+  const Quat<double> pq = qnormalize(make_quat(0.8, 0.3, -0.2, 0.4));
+  const Mat3<double> pR = quat_to_mat(pq);
+  for (int i = 0; i < 3; i++) {
+    part.x[i] = px[i];
+    for (int j = 0; j < 3; j++) part.R[i][j] = pR.m[i][j];
+  }
+  part.q[0] = pq.w;
+  part.q[1] = pq.x;
+  part.q[2] = pq.y;
+  part.q[3] = pq.z;
+  ShapeView<double> comp;
+  comp.nparts = 1;
+  comp.parts = &part;
+  comp.radius = 0.3 + ax.x;
+  Table tab(false);
+  tab.t.nhist = CONTACT_HIST;
+  tab.t.nslot = 1;    // composites keep keyed part contacts
+  for (auto &x : tab.e) x.mu = 0.0;
+  const Pose<double> pa0{make_vec3(0.0, 0.0, 0.0), qnormalize(make_quat(0.9, 0.1, -0.3, 0.2)), 1.0};
+  const Pose<double> pb0{make_vec3(0.75, 0.05, 0.1), qnormalize(make_quat(0.7, -0.2, 0.4, 0.5)),
+                         0.8};
+  auto body = [&](const ShapeView<double> &v, const Pose<double> &p, int type, long tag) {
+    PolyhedronBody<double> b;
+    b.shape = make_posed(v, p);
+    b.v = b.w = make_vec3(0.0, 0.0, 0.0);
+    b.m = 2.0;
+    b.type = type;
+    b.tag = tag;
+    return b;
+  };
+  OverlapWorkspace<double, 64> ws;
+  auto contact = [&](const Pose<double> &pa, const Pose<double> &pb) {
+    double hist[1 + CONTACT_HIST] = {}, cnt[PP_NCOUNT] = {};
+    return polyhedron_pair_contact(body(comp, pa, 1, 12), body(egg, pb, 2, 7), tab.t, 1e-4, false,
+                                   hist, ws, cnt);
+  };
+  const auto r = contact(pa0, pb0);
+  ASSERT_EQ(r.contact, 1);
+  ASSERT_GT(r.cf.energy, 0.0);
+  const double d = 1e-6;
+  double gx[3], gtA[3], gtB[3], fmax = 0.0, tmax = 0.0;
+  for (int k = 0; k < 3; k++) {
+    Pose<double> p = pa0, m = pa0;
+    (&p.x.x)[k] += d;
+    (&m.x.x)[k] -= d;
+    gx[k] = (contact(p, pb0).cf.energy - contact(m, pb0).cf.energy) / (2 * d);
+    // small rotations about lab axis k of body A, then of body B, about their centres
+    double w[3] = {0, 0, 0};
+    w[k] = 0.5 * d;
+    const Quat<double> qp = make_quat(std::sqrt(1 - w[k] * w[k]), w[0], w[1], w[2]);
+    const Quat<double> qm = qconj(qp);
+    Pose<double> ap = pa0, am = pa0, bp = pb0, bm = pb0;
+    ap.q = qmul(qp, pa0.q);
+    am.q = qmul(qm, pa0.q);
+    bp.q = qmul(qp, pb0.q);
+    bm.q = qmul(qm, pb0.q);
+    gtA[k] = (contact(ap, pb0).cf.energy - contact(am, pb0).cf.energy) / (2 * d);
+    gtB[k] = (contact(pa0, bp).cf.energy - contact(pa0, bm).cf.energy) / (2 * d);
+  }
+  const double F[3] = {r.cf.F_A.x, r.cf.F_A.y, r.cf.F_A.z};
+  const double tA[3] = {r.cf.tau_A.x, r.cf.tau_A.y, r.cf.tau_A.z};
+  const double tB[3] = {r.cf.tau_B.x, r.cf.tau_B.y, r.cf.tau_B.z};
+  for (int k = 0; k < 3; k++) {
+    fmax = std::fmax(fmax, std::fabs(F[k]));
+    tmax = std::fmax(tmax, std::fmax(std::fabs(tA[k]), std::fabs(tB[k])));
+  }
+  for (int k = 0; k < 3; k++) {
+    EXPECT_NEAR(F[k], -gx[k], 1e-6 * fmax) << k;
+    EXPECT_NEAR(tA[k], -gtA[k], 1e-6 * tmax) << k;
+    EXPECT_NEAR(tB[k], -gtB[k], 1e-6 * tmax) << k;
+  }
+  std::printf("composite's egg part on an egg: F %.6g %.6g %.6g, tau_A %.6g %.6g %.6g (energy "
+              "gradient by central differences agrees)\n",
+              F[0], F[1], F[2], tA[0], tA[1], tA[2]);
+}
+
 TEST(ContactPipeline, WallBodyIsTheComposition)
 {
   // a flat square z = 0, two triangles

@@ -194,6 +194,18 @@ TEST(MpiRanks, SpheresOneVsTwoRanksAgree)
                        "group odd variable odd", "polyhedron_set group odd shape ball"});
 }
 
+// every third particle an ellipsoid of unequal semi-axes and every third a
+// sphere (issue 29): the ellipsoid pairs' algebraic contacts cross the
+// subdomain boundary with their friction histories
+TEST(MpiRanks, EllipsoidsOneVsTwoRanksAgree)
+{
+  contacts_one_vs_two({"polyhedron_shape ball ellipsoid 0.8 0.8 0.8",
+                       "polyhedron_shape egg ellipsoid 0.9 0.7 0.55", "variable m0 atom id%3==0",
+                       "group m0 variable m0", "variable m1 atom id%3==1", "group m1 variable m1",
+                       "polyhedron_set group m0 shape ball", "polyhedron_set group m1 shape egg",
+                       "pair_coeff * * 1.0e4 0.3 0.8 0.5 ellipsoid 5000"});
+}
+
 // every third particle a composite (issue 29): two cubes and a sphere, whose
 // part contacts cross the subdomain boundary with their keyed histories
 TEST(MpiRanks, CompositesOneVsTwoRanksAgree)

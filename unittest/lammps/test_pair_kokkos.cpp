@@ -264,6 +264,31 @@ TEST(PairKokkos, SpheresAmongPolyhedraMatchPlain)
   EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
 }
 
+// ellipsoids of unequal semi-axes and spheres among the polyhedra (issue
+// 29): ellipsoid pairs by the algebraic contact (pair_coeff ... ellipsoid
+// k_n; the unlike type pair with a k_n of its own), the rest by their
+// overlap volume, alike in both styles
+TEST(PairKokkos, EllipsoidsAmongPolyhedraMatchPlain)
+{
+  Lmp plain, kk(KK);
+  for (Lmp *l : {&plain, &kk}) {
+    l->cmds(setup());
+    l->cmds({"polyhedron_shape ball ellipsoid 0.47 0.47 0.47",
+             "polyhedron_shape egg ellipsoid 0.55 0.42 0.36",
+             "polyhedron_set group g1 shape egg density 1.0",
+             "polyhedron_set group g2 shape ball density 1.0",
+             "pair_coeff * * 1.0e4 0.3 0.7 0.5 ellipsoid 4000",
+             "pair_coeff 1 2 0.8 0.3 ellipsoid 3000"});
+  }
+  plain.cmd("run 100");
+  kk.cmd("run 100");
+  compare(plain, kk, "ellipsoids, run 100", true);
+  int dim;
+  const double *cnt = (const double *) plain.lmp->force->pair->extract("counters", dim);
+  ASSERT_NE(cnt, nullptr);
+  EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
+}
+
 // a third of the grains composites (issue 29): two cubes and a sphere, part
 // contacts with keyed histories, the parts' views on the device
 TEST(PairKokkos, CompositesMatchPlain)

@@ -487,3 +487,61 @@ TEST(WallEllipsoid, SphereByVolumeUnderPairPolyhedron)
   EXPECT_LT(dc, 1e-4);
   EXPECT_LT(da, 1e-6);
 }
+
+// Under pair_style polyhedron (issue 29: every shape meets every shape) an
+// ellipsoid of unequal semi-axes takes the wall with pair_style ellipsoid's
+// linear law and the like pair's 'ellipsoid k_n', in the same group as
+// polyhedra and spheres: a tilted, spinning ellipsoid dropped obliquely on a
+// floor with friction follows, bit for bit, its path under pair_style
+// ellipsoid with the same k_n, e and mu (a cube and a sphere fall beside it
+// under pair_style polyhedron, apart from it). A type of such ellipsoids
+// without k_n is an error naming it.
+TEST(WallEllipsoid, UnequalAxesUnderPairPolyhedronAsUnderPairEllipsoid)
+{
+  const std::string stl = tmpdir() + "/ell_mixed_floor.stl";
+  write_ascii(stl, flat(-0.05, 0.05, -0.05, 0.05, 0.0, 3, 3));
+  auto run = [&](bool poly) {
+    Lmp l;
+    l.cmds(box(0.1, "0.01 0.006 0.004"));
+    l.cmds({"create_atoms 1 single 0.003 -0.002 0.012",
+            "polyhedron_set atom 1 density 2000 quat 1 2 0.5 35 omega 20 -40 10"});
+    if (poly)
+      l.cmds({"polyhedron_shape c " + polydem_test::potentials() + "/cube.shape",
+              "polyhedron_shape ball ellipsoid 0.005 0.005 0.005",
+              "create_atoms 1 single -0.035 0.035 0.012", "create_atoms 1 single 0.035 0.035 0.012",
+              "polyhedron_set atom 2 shape c scale 0.008 density 2000",
+              "polyhedron_set atom 3 shape ball density 2000"});
+    l.cmds({"velocity all set 0.2 0 -0.5", "neighbor 0.001 bin",
+            poly ? "pair_style polyhedron" : "pair_style ellipsoid",
+            poly ? "pair_coeff * * 1e7 0.3 0.6 0.4 ellipsoid 1e4" : "pair_coeff * * 1e4 0.6 0.4",
+            "fix nve all nve/polyhedron", "fix w all wall/mesh " + stl, "timestep 2e-6"});
+    double touched = 0.0;
+    for (int k = 0; k < 200; k++) {
+      l.cmd("run 100");
+      touched = std::fmax(touched, fvec(l, "w", 6));
+    }
+    EXPECT_GT(touched, 0.0);
+    return l.local_state();
+  };
+  const auto ell = run(false), pol = run(true);
+  const auto &a = ell.at(1), &b = pol.at(1);
+  std::printf("[ ell wall ] under pair ellipsoid: z %.6g vx %.6g wy %.6g; under pair polyhedron: "
+              "z %.6g vx %.6g wy %.6g; v_z after the bounce: cube %.4g, sphere %.4g\n",
+              a.x[2], a.v[0], a.w[1], b.x[2], b.v[0], b.w[1], pol.at(2).v[2], pol.at(3).v[2]);
+  for (int k = 0; k < 3; k++) {
+    EXPECT_EQ(a.x[k], b.x[k]) << k;
+    EXPECT_EQ(a.v[k], b.v[k]) << k;
+    EXPECT_EQ(a.L[k], b.L[k]) << k;
+  }
+  // the ellipsoid, the cube and the sphere bounced off the floor
+  for (long id : {1, 2, 3}) EXPECT_GT(pol.at(id).v[2], 0.0) << id;
+
+  Lmp l;
+  l.cmds(box(0.1, "0.01 0.006 0.004"));
+  l.cmds({"create_atoms 1 single 0.003 -0.002 0.012", "polyhedron_set atom 1 density 2000",
+          "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.6 0.4", "fix w all wall/mesh " + stl});
+  EXPECT_NE(l.error_of("run 0").find("particle type 1 has ellipsoids of unequal semi-axes, which "
+                                     "meet the wall by the linear law of pair_style ellipsoid: "
+                                     "add 'ellipsoid k_n' to pair_coeff 1 1"),
+            std::string::npos);
+}
