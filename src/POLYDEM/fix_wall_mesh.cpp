@@ -509,7 +509,7 @@ void FixWallMesh::compute_forces(bool update)
       nl.gap = &near_gap[(size_t) near_cap * i];
       pn = &nl;
     }
-    // the contact (polydem_contact_pipeline.h; a composite's parts one by
+    // the contact (polydem_wall_pipeline.h; a composite's parts one by
     // one), tally, then scatter
     auto tally = [&](const polydem::WallBody<double> &bb,
                      const polydem::WallContactResult<double> &rr,

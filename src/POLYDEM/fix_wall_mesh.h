@@ -18,7 +18,7 @@ FixStyle(wall/mesh,FixWallMesh);
 #include "fix.h"
 #include "poly_roles.h"
 
-#include "polydem_contact_pipeline.h"
+#include "polydem_wall_pipeline.h"
 #include "polydem_insert.h"
 #include "polydem_wall_mesh.h"
 

@@ -93,7 +93,7 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
       nl.cap = near_cap;
       pn = &nl;
     }
-    // the contact (polydem_contact_pipeline.h; a composite's parts one by
+    // the contact (polydem_wall_pipeline.h; a composite's parts one by
     // one; the history row in place), tally, then scatter
     polydem::WallPatches<double> P;
     auto tally = [&](const polydem::WallBody<double> &bb,

@@ -3,7 +3,7 @@
    (position, velocities, mass, scale, type, shape, tag, mask, orientation)
    and writes (force, torque): one set for pair polyhedron/kk, pair
    ellipsoid/kk and fix wall/mesh/kk. A kernel functor derives from it, so
-   that it is the `Atoms` of polydem_contact_pipeline.h's gather_* (the
+   that it is the `Atoms` of polydem_body_gather.h's gather_* (the
    functor itself is passed as *this).
 ------------------------------------------------------------------------- */
 

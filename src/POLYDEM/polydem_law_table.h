@@ -5,7 +5,7 @@
    coefficients are mixed (init) and copied as it is to the device by the
    /kk style (polydem_law_table_kokkos.h), its entry array pointing into
    host or device memory. The entry points of polydem_contact_pipeline.h
-   make each contact's ContactLaw (polydem_contact_law.h) from it.
+   and polydem_wall_pipeline.h make each contact's ContactLaw (polydem_contact_law.h) from it.
    No LAMMPS includes; host and device.
 ------------------------------------------------------------------------- */
 

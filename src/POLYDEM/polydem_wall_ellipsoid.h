@@ -67,34 +67,6 @@ template <typename T> struct WallEllipsoid {
   Vec3<T> ax;    // semi-axes [length]
 };
 
-// Closest point of triangle (a, b, c) to p by its Voronoi regions (as
-// point_triangle_dist2); face = 1 if it is inside the triangle
-template <typename T>
-POLYDEM_FN Vec3<T> triangle_closest_point(const Vec3<T> &p, const Vec3<T> &a, const Vec3<T> &b,
-                                          const Vec3<T> &c, int &face)
-{
-  face = 0;
-  const Vec3<T> ab = b - a, ac = c - a, ap = p - a;
-  const T d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= T(0) && d2 <= T(0)) return a;
-  const Vec3<T> bp = p - b;
-  const T d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= T(0) && d4 <= d3) return b;
-  const T vc = d1 * d4 - d3 * d2;
-  if (vc <= T(0) && d1 >= T(0) && d3 <= T(0)) return a + (d1 / (d1 - d3)) * ab;
-  const Vec3<T> cp = p - c;
-  const T d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= T(0) && d5 <= d6) return c;
-  const T vb = d5 * d2 - d1 * d6;
-  if (vb <= T(0) && d2 >= T(0) && d6 <= T(0)) return a + (d2 / (d2 - d6)) * ac;
-  const T va = d3 * d6 - d5 * d4;
-  if (va <= T(0) && (d4 - d3) >= T(0) && (d5 - d6) >= T(0))
-    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  face = 1;
-  const T den = T(1) / (va + vb + vc);
-  return a + (vb * den) * ab + (vc * den) * ac;
-}
-
 // Support of the ellipsoid along n (unit): sigma(n) = |A R^T n|; Av = A^2 R^T n
 // (body frame), so that M n = R Av
 template <typename T>

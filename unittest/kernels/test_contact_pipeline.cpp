@@ -1,4 +1,4 @@
-// The per-contact entry points (polydem_contact_pipeline.h) against the
+// The per-contact entry points (polydem_contact_pipeline.h, polydem_wall_pipeline.h) against the
 // composition of the kernels they run: each entry point gives, bit for bit,
 // the force, torques, energy and history of GJK -> overlap -> feng_law ->
 // pair_contact_step (polyhedra), ellipsoid_contact -> ellipsoid_geometry ->
@@ -7,6 +7,7 @@
 // taken from a LawTable; a pair out of contact clears its history slot;
 // counters land in the caller's array; the gathers read host arrays.
 #include "polydem_contact_pipeline.h"
+#include "polydem_wall_pipeline.h"
 #include "polydem_damping.h"
 #include "polydem_stl.h"
 #include "test_shapes.h"
