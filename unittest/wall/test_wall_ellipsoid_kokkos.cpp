@@ -70,3 +70,21 @@ TEST(WallEllipsoidKokkos, SpheresByVolumeKkEqualsPlain)
     EXPECT_GE(p.contacts, 30.0);
   }
 }
+
+// ellipsoids of unequal semi-axes under pair_style polyhedron (issue 29):
+// their pairs by the algebraic contact, the wall by the linear law, both
+// with pair_coeff's 'ellipsoid k_n', alike in the plain and /kk styles
+TEST(WallEllipsoidKokkos, UnequalAxesUnderPairPolyhedronKkEqualsPlain)
+{
+  const std::string box = tmpdir() + "/ellp_kk_box.stl";
+  write_binary(box, closed_box(EB, 4));
+  KkScene sc = scene();
+  for (auto &c : sc.setup) {
+    if (c.rfind("pair_style", 0) == 0) c = "pair_style polyhedron";
+    if (c.rfind("pair_coeff", 0) == 0) c = "pair_coeff * * 1e6 0.3 0.6 0.3 ellipsoid 5e4";
+  }
+  const std::string args = box + " friction 0.5 restitution 0.5 move translate 0.05 0 0";
+  const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);
+  kk_compare(sc, p, k, "ellipsoids under pair polyhedron");
+  EXPECT_GE(p.contacts, 30.0);
+}
