@@ -329,7 +329,9 @@ algebraic_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
 // contact of its own, with its history in the slot keyed 1 + (part of the
 // lower-tag body) x MAX_COMPOSITE_PARTS + (part of the other); the forces
 // and torques are summed on the bodies. The result's geometry is that of
-// the deepest part contact with the summed volume and area.
+// the deepest part contact with the summed volume and area (of the part
+// contacts by overlap volume; if there are none, the deepest algebraic one's,
+// its overlap length over its smallest semi-axis in vmin).
 template <typename T, int MF, typename C>
 POLYDEM_FN PairContactResult<T>
 composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
@@ -342,7 +344,8 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   const int nb = view_is_composite(*B.shape.view) ? B.shape.view->nparts : 1;
   const bool a_low = A.tag < B.tag;
   const int stride = 1 + tab.nhist;
-  T deepest = T(-1), volume = T(0), area = T(0);
+  T deepest = T(-1), volume = T(0), area = T(0), deepest_alg = T(-1);
+  bool by_volume = false;    // a part contact by overlap volume (else algebraic only)
   // the part pairs in the lower tag's order, whichever body is A: slots are
   // taken in the same order on every rank (and given up alike when they run out)
   for (int idx = 0; idx < na * nb; ++idx) {
@@ -395,6 +398,18 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
         r.cf.ft += c.cf.ft;
       }
       r.contact = 1;
+      if (algebraic) {
+        // an overlap length, not a volume: the record's geometry only if
+        // no part contact has a volume (then the deepest, over its semi-axis)
+        if (!by_volume && c.geo.volume / c.vmin > deepest_alg) {
+          deepest_alg = c.geo.volume / c.vmin;
+          r.geo = c.geo;
+          r.vmin = c.vmin;
+          r.cf.rate = c.cf.rate;
+        }
+        continue;
+      }
+      by_volume = true;
       volume += c.geo.volume;
       area += c.geo.area;
       if (c.geo.volume > deepest) {
@@ -404,7 +419,7 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
       }
     }
   }
-  if (r.contact) {
+  if (r.contact && by_volume) {
     r.geo.volume = volume;
     r.geo.area = area;
     const T Vi = posed_volume(A.shape), Vj = posed_volume(B.shape);

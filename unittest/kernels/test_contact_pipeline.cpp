@@ -305,6 +305,13 @@ TEST(ContactPipeline, EllipsoidPairsOfPairPolyhedronAreAlgebraic)
   const auto r = contact(pa0, pb0);
   ASSERT_EQ(r.contact, 1);
   ASSERT_GT(r.cf.energy, 0.0);
+  // the record's overlap is the algebraic contact's length over the smallest
+  // semi-axis (0.8 x 0.3), not mixed with a volume
+  EXPECT_EQ(r.vmin, 0.8 * 0.3);
+  EXPECT_GT(r.geo.volume, 0.0);
+  EXPECT_LT(r.geo.volume, r.vmin);
+  EXPECT_NEAR(r.cf.energy, 0.5 * tab.e[1 * 3 + 2].kn * r.geo.volume * r.geo.volume,
+              1e-12 * r.cf.energy);
   const double d = 1e-6;
   double gx[3], gtA[3], gtB[3], fmax = 0.0, tmax = 0.0;
   for (int k = 0; k < 3; k++) {
