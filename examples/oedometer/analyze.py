@@ -4,9 +4,11 @@
 sigma_v = (|F_lid| + |F_floor|) / (2 A) (frictionless walls: the weight goes
 to the floor), the mean horizontal stress sigma_h = (normal force on the
 tube) / (2 pi R h), h the lid's height, and K0 = sigma_h / sigma_v; writes
-oedometer.png.
-    /usr/bin/python3 analyze.py"""
+PREFIX.png (PREFIX: that of the run's files, PREFIX_lid.txt and
+PREFIX_wall.txt; default oedometer).
+    /usr/bin/python3 analyze.py [PREFIX]"""
 import math
+import sys
 
 import matplotlib
 
@@ -30,7 +32,10 @@ def tube_areas(path="tube.stl"):
     return np.array(tris)
 
 
-def wall_snapshots(path="oedometer_wall.txt"):
+PREFIX = sys.argv[1] if len(sys.argv) > 1 else "oedometer"
+
+
+def wall_snapshots(path=PREFIX + "_wall.txt"):
     snaps, lines = {}, open(path).read().split("\n")
     k = 0
     while k < len(lines):
@@ -44,7 +49,7 @@ def wall_snapshots(path="oedometer_wall.txt"):
     return snaps
 
 
-lid = np.loadtxt("oedometer_lid.txt")
+lid = np.loadtxt(PREFIX + "_lid.txt")
 step, t, load, Flid, Ffloor, zlid = lid[:, 0], lid[:, 1], lid[:, 2], lid[:, 3], lid[:, 4], lid[:, 5]
 areas = tube_areas()
 walls = wall_snapshots()
@@ -84,4 +89,4 @@ a2.set_ylabel(r"mean horizontal stress $\sigma_h$ (kPa)")
 a2.set_title("oedometric stress path")
 a2.legend()
 fig.tight_layout()
-fig.savefig("oedometer.png", dpi=110)
+fig.savefig(PREFIX + ".png", dpi=110)
