@@ -252,6 +252,12 @@ void PairPolyhedron::init_style()
         const int lo = std::min(i, j), hi = std::max(i, j);
         const bool given = pairset[lo][hi] ? ellipsoid_kn[lo][hi] > 0.0
                                            : ellipsoid_kn[lo][lo] > 0.0 && ellipsoid_kn[hi][hi] > 0.0;
+        const double coh = pairset[lo][hi] ? cohesion[lo][hi]
+                                           : sqrt(cohesion[lo][lo] * cohesion[hi][hi]);
+        if (coh > 0.0 && (i <= j || !ell_type[ntp + j]) && comm->me == 0)
+          error->warning(FLERR, "pair_style polyhedron: the cohesion of types {} and {} does "
+                         "not act between two ellipsoids of which one has unequal semi-axes "
+                         "(their algebraic contact has no adhesive stress)", lo, hi);
         if (!given)
           error->all(FLERR, "pair_style polyhedron: shape '{}' is an ellipsoid with unequal "
                      "semi-axes; two ellipsoids meet by overlap volume only if both are spheres "

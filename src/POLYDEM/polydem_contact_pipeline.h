@@ -277,7 +277,7 @@ POLYDEM_FN bool algebraic_pair(const PosedShape<T> &a, const PosedShape<T> &b)
 // (OVERLAP_CENTRE), the dashpot of the reduced mass; the torques about the
 // bodies' centres. h: the contact's tab.nhist values or null. vmin is the
 // smallest semi-axis (the overlap is a length). No liquid bridge (counted
-// as PP_NOBRIDGE where the pair has one).
+// as PP_NOBRIDGE where the pair has one) and no dry cohesion.
 template <typename T, typename C>
 POLYDEM_FN PairContactResult<T>
 algebraic_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
@@ -318,6 +318,9 @@ algebraic_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     count[PP_NOBRIDGE] += C(1);
     law.bridge.volume = T(0);
   }
+  // the pair's cohesion k_c is the volume law's adhesive stress, not the
+  // linear law's surface energy: none here (pair polyhedron warns at init)
+  law.cohesion = T(0);
   r.cf = pair_contact_step(r.geo, law, kin, h, tab.nhist,
                            T(contact_history_sign(A.tag, B.tag)), update);
   if (r.geo.volume > tab.overlap_warn * amin) count[PP_BIGOVERLAP] += C(1);
