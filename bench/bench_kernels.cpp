@@ -130,25 +130,11 @@ PairSet *make_pairs(Shape s, int n)
   return ps;
 }
 
-PairSet &dodeca_pairs()
+// the 512 pairs of a shape, made on first use and shared by the benchmarks that
+// take them; seeded = false: the same pairs (same random stream) without the seed
+template <Shape (*shape)(bool), bool seeded> PairSet &pairs()
 {
-  static PairSet *p = make_pairs(dodecahedron(true), 512);
-  return *p;
-}
-PairSet &cyl_pairs()
-{
-  static PairSet *p = make_pairs(cylinder(true), 512);
-  return *p;
-}
-// the same pairs (same random stream) without the seed
-PairSet &dodeca_pairs_tetra()
-{
-  static PairSet *p = make_pairs(dodecahedron(false), 512);
-  return *p;
-}
-PairSet &cyl_pairs_tetra()
-{
-  static PairSet *p = make_pairs(cylinder(false), 512);
+  static PairSet *p = make_pairs(shape(seeded), 512);
   return *p;
 }
 
@@ -348,16 +334,16 @@ BENCHMARK_CAPTURE(clip_triangle, dodecahedron_large_tri, make_tris(dodecahedron(
 BENCHMARK_CAPTURE(clip_triangle, cylinder42_small_tri, make_tris(cylinder(true), 0.1, 512));
 BENCHMARK_CAPTURE(clip_triangle, cylinder42_large_tri, make_tris(cylinder(true), 1.0, 512));
 
-BENCHMARK_CAPTURE(gjk_only, dodecahedron, dodeca_pairs());
-BENCHMARK_CAPTURE(overlap_ws12, dodecahedron, dodeca_pairs());
-BENCHMARK_CAPTURE(overlap_wsmax, dodecahedron, dodeca_pairs());
-BENCHMARK_CAPTURE(gjk_overlap_ws12, dodecahedron, dodeca_pairs());
-BENCHMARK_CAPTURE(overlap_ws12, dodecahedron_tetra_start, dodeca_pairs_tetra());
-BENCHMARK_CAPTURE(gjk_only, cylinder42, cyl_pairs());
-BENCHMARK_CAPTURE(overlap_ws22, cylinder42, cyl_pairs());
-BENCHMARK_CAPTURE(overlap_wsmax, cylinder42, cyl_pairs());
-BENCHMARK_CAPTURE(gjk_overlap_ws22, cylinder42, cyl_pairs());
-BENCHMARK_CAPTURE(overlap_ws22, cylinder42_tetra_start, cyl_pairs_tetra());
+BENCHMARK_CAPTURE(gjk_only, dodecahedron, pairs<dodecahedron, true>());
+BENCHMARK_CAPTURE(overlap_ws12, dodecahedron, pairs<dodecahedron, true>());
+BENCHMARK_CAPTURE(overlap_wsmax, dodecahedron, pairs<dodecahedron, true>());
+BENCHMARK_CAPTURE(gjk_overlap_ws12, dodecahedron, pairs<dodecahedron, true>());
+BENCHMARK_CAPTURE(overlap_ws12, dodecahedron_tetra_start, pairs<dodecahedron, false>());
+BENCHMARK_CAPTURE(gjk_only, cylinder42, pairs<cylinder, true>());
+BENCHMARK_CAPTURE(overlap_ws22, cylinder42, pairs<cylinder, true>());
+BENCHMARK_CAPTURE(overlap_wsmax, cylinder42, pairs<cylinder, true>());
+BENCHMARK_CAPTURE(gjk_overlap_ws22, cylinder42, pairs<cylinder, true>());
+BENCHMARK_CAPTURE(overlap_ws22, cylinder42_tetra_start, pairs<cylinder, false>());
 
 // Fixed work for instruction counts (repeatable where wall time is not):
 //   valgrind --tool=callgrind --toggle-collect='*fixed_loop*' bench_kernels --fixed 4
@@ -379,7 +365,7 @@ int main(int argc, char **argv)
 {
   if (argc == 3 && std::string(argv[1]) == "--fixed") {
     const int reps = std::atoi(argv[2]);
-    PairSet &d = dodeca_pairs(), &c = cyl_pairs();
+    PairSet &d = pairs<dodecahedron, true>(), &c = pairs<cylinder, true>();
     std::printf("dodecahedron %.17g\ncylinder42 %.17g\n", fixed_loop(d, reps), fixed_loop(c, reps));
     return 0;
   }

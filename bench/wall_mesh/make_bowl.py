@@ -18,4 +18,4 @@ for j in range(n + 1):
     for i in range(n + 1):
         x, y = i * h, j * h
         P[i, j] = (x, y, Rc - math.sqrt(Rc * Rc - (x - L / 2) ** 2 - (y - L / 2) ** 2))
-write_stl(out, grid_triangles(P, n), b"POLYDEM bench bowl")
+write_stl(out, grid_triangles(P, n, n), b"POLYDEM bench bowl")

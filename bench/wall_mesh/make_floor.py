@@ -4,17 +4,10 @@ triangles with alternating diagonals and jittered interior vertices (fixed
 seed; by up to 0.2 of a cell, so that no triangle folds over: 0.3, used
 before 2026-11-22 10:00, folded 7 triangles of the 150k mesh).
 Usage: make_floor.py out.stl n [L]"""
-import random, struct, sys
+import os, random, struct, sys
 
-
-def grid_triangles(P, n):
-    """Two triangles per cell of the (n+1) x (n+1) vertex grid P, alternating diagonals."""
-    tris = []
-    for j in range(n):
-        for i in range(n):
-            a, b, c, d = P[i, j], P[i + 1, j], P[i, j + 1], P[i + 1, j + 1]
-            tris += [(a, b, d), (a, d, c)] if (i + j) % 2 == 0 else [(a, b, c), (b, d, c)]
-    return tris
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from stl_mesh import grid_triangles  # noqa: E402  (make_bowl.py imports it from here)
 
 
 def write_stl(out, tris, header):
@@ -40,7 +33,7 @@ def main():
             if 0 < i < n: x += 0.2 * h * rng.uniform(-1, 1)
             if 0 < j < n: y += 0.2 * h * rng.uniform(-1, 1)
             P[i, j] = (x, y, 0.0)
-    write_stl(out, grid_triangles(P, n), b"POLYDEM bench floor")
+    write_stl(out, grid_triangles(P, n, n), b"POLYDEM bench floor")
 
 
 if __name__ == "__main__":

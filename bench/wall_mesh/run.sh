@@ -18,6 +18,18 @@ cd "$(dirname "$0")"
 [ -f bowl150k.stl ] || python3 make_bowl.py bowl150k.stl 274 0.3 5.0
 [ -f silo10k.stl ] || python3 make_silo.py silo10k.stl 80 40 22
 [ -f silo150k.stl ] || python3 make_silo.py silo150k.stl 300 150 100
+# summary LABEL FIX LOG: one line from a run's log: the triangles read and used
+# (after coplanar merging), wall and CPU time per particle-step, and the share
+# of the time in Modify (FIX: "fix" or "fixes", the words before it)
+summary() {
+  awk -v m="$1" -v fix="$2" '/^Loop time/ {loop = $4; steps = $9; atoms = $12}
+       /CPU use/ {cpu = $1 + 0}
+       /^Modify/ {mod = $NF}
+       /triangles read/ {tri = $7}
+       /coplanar regions/ {after = $10}
+       END {printf "%-32s %7d triangles (%d used): %.2f us/particle-step wall, %.2f us CPU (%.0f%% CPU), %s %.1f%%\n",
+            m, tri, after ? after : tri, 1e6 * loop / (steps * atoms), 1e6 * loop * cpu / 100 / (steps * atoms), cpu, fix, mod}' "$3"
+}
 for r in $(seq "$reps"); do
   for c in "floor10k 1e-9 128" "floor150k 1e-9 128" "floor10k no 128" "floor150k no 128" \
            "bowl10k 1e-9 0" "bowl150k 1e-9 0" "bowl10k 1e-9 128" "bowl150k 1e-9 128"; do
@@ -27,13 +39,7 @@ for r in $(seq "$reps"); do
     [[ $m == bowl* ]] && lift=0.0140    # rim of the bowl 4.5 mm above its centre
     "$lmp" -in in.floor -var mesh $m.stl -var merge $merge -var cache $cache -var lift $lift \
       -var pot ../../potentials -log log.$m.$merge.c$cache -screen none
-    awk -v m="$m merge $merge cache $cache" '/^Loop time/ {loop = $4; steps = $9; atoms = $12}
-                 /CPU use/ {cpu = $1 + 0}
-                 /^Modify/ {mod = $NF}
-                 /triangles read/ {tri = $7}
-                 /coplanar regions/ {after = $10}
-                 END {printf "%-32s %7d triangles (%d used): %.2f us/particle-step wall, %.2f us CPU (%.0f%% CPU), fix %.1f%%\n",
-                      m, tri, after ? after : tri, 1e6 * loop / (steps * atoms), 1e6 * loop * cpu / 100 / (steps * atoms), cpu, mod}' log.$m.$merge.c$cache
+    summary "$m merge $merge cache $cache" fix "log.$m.$merge.c$cache"
   done
 done
 # the seed's case: a silo (cylinder on a cone) holding about 700 particles that
@@ -42,12 +48,6 @@ done
 for r in $(seq "$reps"); do
   for m in silo10k silo150k; do
     "$lmp" -in in.silo -var mesh $m.stl -var pot ../../potentials -log log.$m -screen none
-    awk -v m="$m merge 1e-6 cache 128" '/^Loop time/ {loop = $4; steps = $9; atoms = $12}
-                 /CPU use/ {cpu = $1 + 0}
-                 /^Modify/ {mod = $NF}
-                 /triangles read/ {tri = $7}
-                 /coplanar regions/ {after = $10}
-                 END {printf "%-32s %7d triangles (%d used): %.2f us/particle-step wall, %.2f us CPU (%.0f%% CPU), fixes %.1f%%\n",
-                      m, tri, after ? after : tri, 1e6 * loop / (steps * atoms), 1e6 * loop * cpu / 100 / (steps * atoms), cpu, mod}' log.$m
+    summary "$m merge 1e-6 cache 128" fixes "log.$m"
   done
 done

@@ -24,16 +24,11 @@ set -euo pipefail
 # editing or checking out this file while it runs cannot derail the run
 {
 
-if [ $# -ne 1 ]; then
-  echo "usage: $0 CACHE_DIR" >&2
-  exit 2
-fi
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-mkdir -p "$1"
-cache=$(cd "$1" && pwd)
+# the argument (CACHE_DIR: cache) and the Kokkos source: here, tri_version,
+# patch_file, src (the patched packages/kokkos)
+# shellcheck source=SCRIPTDIR/kokkos-cache.sh
+. "$(dirname "${BASH_SOURCE[0]}")/kokkos-cache.sh" "$@"
 
-tri_version=13.2.0-4
-patch_file="$here/kokkos-cuda13.patch"
 jobs=${POLYDEM_JOBS:-2}
 arch=${POLYDEM_CUDA_ARCH:-80}
 case $arch in
@@ -44,7 +39,6 @@ case $arch in
   *) echo "build-kokkos-cuda: unsupported POLYDEM_CUDA_ARCH=$arch (70, 75, 80, 86)" >&2; exit 2 ;;
 esac
 
-src="$cache/kokkos-3.4.01-src"    # patched packages/kokkos
 build="$cache/kokkos-cuda-build"
 prefix="$cache/kokkos-cuda"
 stamp="$prefix/.polydem-stamp"

@@ -1,7 +1,8 @@
 # shellcheck shell=sh
 # Sourced by cmake/scripts/fetch-debian-source.sh and cmake/scripts/fetch-debian-deb.sh:
 # system_archive_uri prints the Debian archive URI of the system's own apt
-# sources, so that no package host is named in POLYDEM's code.
+# sources, so that no package host is named in POLYDEM's code; debian_mirror,
+# the archive the scripts fetch from.
 #
 # the archive URI the system's apt already uses for its main suite (the
 # suite named VERSION_CODENAME in /etc/os-release; else the first deb suite
@@ -35,3 +36,17 @@ $(cat /etc/apt/sources.list /etc/apt/sources.list.d/*.list 2> /dev/null | awk '
     END { if (hit) print hit; else if (first) print first }'
 }
 
+# debian_mirror NAME: the archive URI to fetch from, without a trailing slash:
+# POLYDEM_DEBIAN_MIRROR, else the system's own (system_archive_uri). Where
+# there is none, says so on stderr (NAME: the calling script) and returns 1.
+debian_mirror() {
+  mirror=${POLYDEM_DEBIAN_MIRROR:-}
+  if [ -z "$mirror" ]; then
+    mirror=$(system_archive_uri)
+    if [ -z "$mirror" ]; then
+      echo "$1: no Debian archive in the system's apt sources; set POLYDEM_DEBIAN_MIRROR" >&2
+      return 1
+    fi
+  fi
+  printf '%s\n' "${mirror%/}"
+}

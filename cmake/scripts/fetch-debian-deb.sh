@@ -27,16 +27,9 @@ destdir=$2
 shift 2
 pkgs="$*"    # Debian package names: no blanks
 
+# debian_mirror: POLYDEM_DEBIAN_MIRROR or the system's own archive URI
 . "$(dirname "$0")/debian-archive-uri.sh"
-mirror=${POLYDEM_DEBIAN_MIRROR:-}
-if [ -z "$mirror" ]; then
-  mirror=$(system_archive_uri)
-  if [ -z "$mirror" ]; then
-    echo "fetch-debian-deb: no Debian archive in the system's apt sources; set POLYDEM_DEBIAN_MIRROR" >&2
-    exit 1
-  fi
-fi
-mirror=${mirror%/}
+mirror=$(debian_mirror fetch-debian-deb) || exit 1
 keyring=/usr/share/keyrings/debian-archive-keyring.gpg
 
 mkdir -p "$destdir"

@@ -31,18 +31,9 @@ destdir=$3
 
 suite=${POLYDEM_DEBIAN_SUITE:-bookworm}
 
-# system_archive_uri: the archive URI of the system's own apt sources
+# debian_mirror: POLYDEM_DEBIAN_MIRROR or the system's own archive URI
 . "$(dirname "$0")/debian-archive-uri.sh"
-
-mirror=${POLYDEM_DEBIAN_MIRROR:-}
-if [ -z "$mirror" ]; then
-  mirror=$(system_archive_uri)
-  if [ -z "$mirror" ]; then
-    echo "fetch-debian-source: no Debian archive in the system's apt sources; set POLYDEM_DEBIAN_MIRROR" >&2
-    exit 1
-  fi
-fi
-mirror=${mirror%/}
+mirror=$(debian_mirror fetch-debian-source) || exit 1
 keyring=/usr/share/keyrings/debian-archive-keyring.gpg
 
 # upstream version: drop the epoch and the Debian revision

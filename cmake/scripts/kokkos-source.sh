@@ -11,17 +11,10 @@
 # Idempotent; concurrent runs serialise on CACHE_DIR/.kokkos-src.lock.
 set -euo pipefail
 {
-if [ $# -ne 1 ]; then
-  echo "usage: $0 CACHE_DIR" >&2
-  exit 2
-fi
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-mkdir -p "$1"
-cache=$(cd "$1" && pwd)
+# the argument (CACHE_DIR: cache), here, tri_version, patch_file, src
+# shellcheck source=SCRIPTDIR/kokkos-cache.sh
+. "$(dirname "${BASH_SOURCE[0]}")/kokkos-cache.sh" "$@"
 tri_pkg=trilinos
-tri_version=13.2.0-4
-patch_file="$here/kokkos-cuda13.patch"
-src="$cache/kokkos-3.4.01-src"
 log() { echo "kokkos-source: $*" >&2; }
 patch_sum=$(sha256sum "$patch_file" | cut -d' ' -f1)
 ready() { [ -f "$src/.polydem-patched" ] && [ "$(cat "$src/.polydem-patched")" = "$patch_sum" ]; }

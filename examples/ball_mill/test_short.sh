@@ -8,9 +8,8 @@
 #   - the power draw is within 50-100 mW (full run: 68-77 mW).
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
 cp "$here/drum.stl" .
 sed 's/^dump /# dump /' "$here/in.ball_mill" > in.short

@@ -6,9 +6,8 @@
 #   - 200 crosses placed, no warning, none lost (thermo_modify lost error).
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
 cp "$here/bar.shape" "$here/floor.stl" .
 sed 's/^dump /# dump /' "$here/in.composite_pack" > in.short

@@ -88,12 +88,18 @@ def analyze(path, d, R, nseg, dz=2.5e-4):
                 phi_top=vol / (A * htop), V=vol, zmin=zmin, rmax=rmax), zs, phi
 
 
+def add_container_args(ap, R):
+    """the container on the command line (this script's and fixed_bed/analyze_bed.py's),
+    as analyze takes it: its radius --R (default R) and --nseg, the segments of its mesh"""
+    ap.add_argument("--R", type=float, default=R)
+    ap.add_argument("--nseg", type=int, default=120)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("vtk")
     ap.add_argument("--d", type=float, required=True, help="circumscribed diameter (m)")
-    ap.add_argument("--R", type=float, default=0.05)
-    ap.add_argument("--nseg", type=int, default=120)
+    add_container_args(ap, 0.05)
     ap.add_argument("--profile", default=None)
     a = ap.parse_args()
     r, zs, phi = analyze(a.vtk, a.d, a.R, a.nseg)

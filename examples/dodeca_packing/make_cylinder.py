@@ -10,8 +10,11 @@ diameter D), z0 the bottom (default 0). 'floor' closes the bottom with a fan
 of nseg triangles (normal +z); 'open' gives a bare tube (the loading tube
 stacked above the container)."""
 import math
-import struct
+import os
 import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from stl_mesh import faces, write_stl  # noqa: E402
 
 
 def cylinder(D, H, n, floor, z0=0.0):
@@ -28,32 +31,10 @@ def cylinder(D, H, n, floor, z0=0.0):
     return tris
 
 
-def normal(t):
-    u = [t[1][i] - t[0][i] for i in range(3)]
-    v = [t[2][i] - t[0][i] for i in range(3)]
-    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-
-
 def check_inward(tris, z0, H):
     """every normal points into the cylinder: towards the axis (side) or up (floor)"""
     for t in tris:
-        c = [sum(p[i] for p in t) / 3 for i in range(3)]
-        n = normal(t)
-        inside = (-c[0], -c[1], z0 + H / 2 - c[2])
-        assert sum(n[i] * inside[i] for i in range(3)) > 0, t
-
-
-def write_stl(path, tris, title):
-    with open(path, "wb") as f:
-        f.write(title.encode().ljust(80, b" ")[:80])
-        f.write(struct.pack("<I", len(tris)))
-        for t in tris:
-            n = normal(t)
-            ln = math.sqrt(sum(x * x for x in n))
-            f.write(struct.pack("<3f", *(x / ln for x in n)))
-            for p in t:
-                f.write(struct.pack("<3f", *p))
-            f.write(b"\0\0")
+        assert faces(t, lambda c: (-c[0], -c[1], z0 + H / 2 - c[2])), t
 
 
 def main():

@@ -26,7 +26,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0] + "/../dodeca_packing")
-from analyze import analyze  # noqa: E402
+from analyze import add_container_args, analyze  # noqa: E402
 sys.path.insert(0, __file__.rsplit("/", 1)[0] + "/../../tools")
 from packing_grid import hulls, occupancy  # noqa: E402
 
@@ -53,8 +53,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("vtk")
     ap.add_argument("--vp", type=float, required=True, help="pellet volume (m^3) of the template")
-    ap.add_argument("--R", type=float, default=0.0125)
-    ap.add_argument("--nseg", type=int, default=120)
+    add_container_args(ap, 0.0125)
     ap.add_argument("--profile", default=None, help="write r, eps(r)")
     ap.add_argument("--axial", default=None, help="write z, phi(z)")
     a = ap.parse_args()

@@ -10,9 +10,8 @@
 #     deviations of the ensemble means (tolerances below).
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 line=$("$here/run_case.sh" "$1" "$scratch" catalyst_cylinder 1 1 -var n 100 -var tsettle 0.6)
 echo "$line"
 /usr/bin/python3 - "$line" <<'PY'

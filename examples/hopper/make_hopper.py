@@ -6,32 +6,21 @@
   floor.stl   a square tray of half width F at z = 0 with a rim of height H
               (normals inward and up)
 Usage: make_hopper.py [nseg]"""
-import math, struct, sys
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from stl_mesh import faces, write_stl  # noqa: E402
 
 n = int(sys.argv[1]) if len(sys.argv) > 1 else 48
 r0, z0, R, z1, z2, F, H = 0.016, 0.10, 0.05, 0.16, 0.24, 0.15, 0.02
 
 
-def nrm(t):
-    u = [t[1][i] - t[0][i] for i in range(3)]
-    v = [t[2][i] - t[0][i] for i in range(3)]
-    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
-
-
 def write(path, tris, check):
     for t in tris:
-        c = [sum(p[i] for p in t) / 3 for i in range(3)]
-        assert sum(a * b for a, b in zip(nrm(t), check(c))) > 0, (path, t)
-    with open(path, "wb") as f:
-        f.write(b"POLYDEM hopper example".ljust(80, b" "))
-        f.write(struct.pack("<I", len(tris)))
-        for t in tris:
-            nn = nrm(t)
-            l = math.sqrt(sum(x * x for x in nn))
-            f.write(struct.pack("<3f", *(x / l for x in nn)))
-            for p in t:
-                f.write(struct.pack("<3f", *p))
-            f.write(b"\0\0")
+        assert faces(t, check), (path, t)
+    write_stl(path, tris, "POLYDEM hopper example")
     print(path, len(tris), "triangles")
 
 

@@ -10,10 +10,9 @@
 #   - a coordination number (grain contacts per grain) between 3 and 6.
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
 lmp=$(realpath "$1")
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
 "$lmp" -in "$here/in.mixed" -var pot "$here/../../potentials" -var mesh "$here/../dodeca_packing" \
     -var out "$scratch/mixed" -log "$scratch/log" > "$scratch/screen" 2>&1

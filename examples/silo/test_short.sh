@@ -9,9 +9,8 @@
 #     (thermo f_silo[3] + f_lid[3] at the end against N m g).
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
 /usr/bin/python3 "$here/make_silo.py" silo.stl lid.stl
 "$1" -in "$here/in.silo" -screen none -log log.short -var pot "$here/../../potentials" -var mesh . \

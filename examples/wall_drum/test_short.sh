@@ -14,9 +14,8 @@
 #     0.25-0.75 revolution; the window moves it most).
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
 cp "$here/drum_big.stl" .
 "$1" -in "$here/in.drum_field" -screen none -log log.short -var pot "$here/../../potentials" \

@@ -2,7 +2,12 @@
 """Six ASCII STL walls of the same flat strip x in [0, 0.1], y in [-0.025, 0.025]
 (z = 0, facing +z), lambda = L_c / L_m = 0.5, 1, 2, 4, 8 (regular, alternating
 diagonals) and an irregular one (jittered vertices, lambda ~ 4). L_c = 0.025 m."""
+import os
 import random
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from stl_mesh import grid_triangles  # noqa: E402
 
 LC, X1, Y0, Y1 = 0.025, 0.1, -0.025, 0.025
 
@@ -25,12 +30,7 @@ def strip(lm, jitter=0.0, seed=1):
             if 0 < i < nx: x += jitter * X1 / nx * rng.uniform(-1, 1)
             if 0 < j < ny: y += jitter * (Y1 - Y0) / ny * rng.uniform(-1, 1)
             P[i, j] = (x, y)
-    tris = []
-    for j in range(ny):
-        for i in range(nx):
-            a, b, c, d = P[i, j], P[i + 1, j], P[i, j + 1], P[i + 1, j + 1]
-            tris += [(a, b, d), (a, d, c)] if (i + j) % 2 == 0 else [(a, b, c), (b, d, c)]
-    return tris
+    return grid_triangles(P, nx, ny)
 
 for lam in (0.5, 1, 2, 4, 8):
     t = strip(LC / lam)

@@ -6,9 +6,8 @@
 # but the lifted tube's (a new fix that finds the spheres pressing on it).
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
 cp "$here/in.heap" "$here/analyze.py" "$here/floor.stl" "$here/tube.stl" .
 for bo in 0 3; do

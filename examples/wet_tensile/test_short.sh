@@ -7,9 +7,8 @@
 # the tensile strength is 0.3-0.7 of it (the full case: 0.46-0.47).
 # Usage: test_short.sh LMP
 set -euo pipefail
-here=$(cd "$(dirname "$0")" && pwd)
-scratch=$(mktemp -d)
-trap 'rm -rf "$scratch"' EXIT
+# shellcheck source=SCRIPTDIR/../scratch.sh
+. "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
 "$1" -in "$here/in.pack" -var n 5 -var out packed.restart -screen none -log log.pack
 "$1" -in "$here/in.pull" -var strain 0.015 -screen none -log log.pull
