@@ -19,6 +19,19 @@
 
 namespace polydem_test {
 
+// the mass of an ellipsoid of semi-axes a, b, c at density rho
+inline double ellipsoid_mass(double rho, double a, double b, double c)
+{
+  return rho * 4.0 / 3.0 * M_PI * a * b * c;
+}
+
+// the duration of a binary collision of two grains of mass m on the linear
+// spring k_n (no damping): pi sqrt(m12 / k_n), m12 = m / 2
+inline double pair_contact_time(double m, double kn)
+{
+  return M_PI * std::sqrt(0.5 * m / kn);
+}
+
 struct GasSpec {
   int n_side = 8;          // N = n_side^3
   double xi = 2.0;         // elongation a/b
@@ -31,6 +44,21 @@ struct GasSpec {
   {
     const double n = (double) n_side * n_side * n_side;
     return std::cbrt(phi * box * box * box / (n * 4.0 / 3.0 * M_PI * xi));
+  }
+  // a grain's mass at density rho
+  double mass(double rho = 2000.0) const
+  {
+    const double bb = b();
+    return rho * 4.0 / 3.0 * M_PI * xi * bb * bb * bb;
+  }
+  // the first commands of a scene of this gas read from `data` (write_gas)
+  std::vector<std::string> scene(const std::string &data) const
+  {
+    const double bb = b();
+    return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
+            "comm_modify vel yes",
+            "polyhedron_shape e ellipsoid " + num(xi * bb) + " " + num(bb) + " " + num(bb),
+            "read_data " + data};
   }
 };
 

@@ -23,6 +23,7 @@
 
 using polydem_test::Lmp;
 using polydem_test::num;
+using polydem_test::pair_contact_time;
 
 namespace {
 
@@ -48,8 +49,8 @@ std::vector<std::string> setup(const std::string &overlap, const std::string &mu
   const std::string data =
       polydem_test::write_gas(::testing::TempDir() + "polydem_ellipsoid_kk.data", g);
   const double b = g.b();
-  const double m = 2000.0 * 4.0 / 3.0 * M_PI * g.xi * b * b * b;
-  const double tc = M_PI * std::sqrt(0.5 * m / 1e8);
+  const double m = g.mass();
+  const double tc = pair_contact_time(m, 1e8);
   return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
           "comm_modify vel yes", "newton off",
           "polyhedron_shape e ellipsoid " + num(g.xi * b) + " " + num(b) + " " + num(b),

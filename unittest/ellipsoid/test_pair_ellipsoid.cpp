@@ -19,6 +19,8 @@
 
 using polydem_test::Lmp;
 using polydem_test::num;
+using polydem_test::ellipsoid_mass;
+using polydem_test::pair_contact_time;
 
 namespace {
 
@@ -132,8 +134,8 @@ TEST(PairEllipsoid, RestitutionOfSpheres)
     Lmp l;
     l.cmds(box_cmds());
     const double r = 0.02, rho = 2000.0, kn = 1e6;
-    const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
-    const double tc = M_PI * std::sqrt(0.5 * m / kn);
+    const double m = ellipsoid_mass(rho, r, r, r);
+    const double tc = pair_contact_time(m, kn);
     l.cmds({"polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
             "create_atoms 1 single 0.45 0.5 0.5", "create_atoms 1 single 0.55 0.5 0.5",
             "polyhedron_set group all density " + num(rho),
@@ -165,8 +167,8 @@ double eccentric_restitution(const std::string &damping, double e)
   Lmp l;
   l.cmds(box_cmds());
   const double a = 0.03, b = 0.01, rho = 2000.0, kn = 1e6;
-  const double m = rho * 4.0 / 3.0 * M_PI * a * b * b;
-  const double tc = M_PI * std::sqrt(0.5 * m / kn);
+  const double m = ellipsoid_mass(rho, a, b, b);
+  const double tc = pair_contact_time(m, kn);
   l.cmds({"polyhedron_shape e ellipsoid " + num(a) + " " + num(b) + " " + num(b),
           "create_atoms 1 single 0.5 0.5 0.5", "create_atoms 1 single 0.519 0.52 0.5",
           "polyhedron_set group all density " + num(rho), "polyhedron_set atom 1 quat 0 0 1 90",
@@ -254,13 +256,11 @@ GasRun elastic_gas(const std::string &overlap, int refine)
   g.vrms = 5.0;
   polydem_test::write_gas(data, g);
   const double b = g.b(), kn = 1e8;
-  const double m = 2000.0 * 4.0 / 3.0 * M_PI * g.xi * b * b * b;
-  const double tc = M_PI * std::sqrt(0.5 * m / kn);
+  const double m = g.mass();
+  const double tc = pair_contact_time(m, kn);
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
-          "comm_modify vel yes",
-          "polyhedron_shape e ellipsoid " + num(g.xi * b) + " " + num(b) + " " + num(b),
-          "read_data " + data, "pair_style ellipsoid overlap " + overlap,
+  l.cmds(g.scene(data));
+  l.cmds({"pair_style ellipsoid overlap " + overlap,
           "pair_coeff * * " + num(kn) + " 1.0", "neighbor " + num(0.2 * b) + " bin",
           "fix 1 all nve/polyhedron", "compute kt all ke", "compute er all erotate/polyhedron",
           "thermo 100", "thermo_style custom step pe",
@@ -316,14 +316,11 @@ TEST(PairEllipsoid, PolyhedronStyleRunsEllipsoidPairsAlike)
   g.vrms = 3.0;
   polydem_test::write_gas(data, g);
   const double b = g.b(), kn = 1e6;
-  const double m = 2000.0 * 4.0 / 3.0 * M_PI * g.xi * b * b * b;
-  const double dt = M_PI * std::sqrt(0.5 * m / kn) / 50.0;
+  const double m = g.mass();
+  const double dt = pair_contact_time(m, kn) / 50.0;
   auto run = [&](const std::vector<std::string> &pair) {
     Lmp l;
-    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
-            "comm_modify vel yes",
-            "polyhedron_shape e ellipsoid " + num(g.xi * b) + " " + num(b) + " " + num(b),
-            "read_data " + data});
+    l.cmds(g.scene(data));
     l.cmds(pair);
     l.cmds({"neighbor " + num(0.2 * b) + " bin", "fix 1 all nve/polyhedron",
             "timestep " + num(dt), "run 1500"});
@@ -419,8 +416,8 @@ TEST(PairEllipsoid, FrictionSlidingImpactOfSpheres)
   Lmp l;
   l.cmds(box_cmds());
   const double r = 0.02, rho = 2000.0, kn = 1e6, mu = 0.1;
-  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
-  const double tc = M_PI * std::sqrt(0.5 * m / kn);
+  const double m = ellipsoid_mass(rho, r, r, r);
+  const double tc = pair_contact_time(m, kn);
   l.cmds({"polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
           "create_atoms 1 single 0.45 0.5 0.5", "create_atoms 1 single 0.55 0.5 0.5",
           "polyhedron_set group all density " + num(rho), "velocity all set 0 0 0",
@@ -453,7 +450,7 @@ TEST(PairEllipsoid, FrictionSlidingImpactOfSpheres)
 TEST(PairEllipsoid, RollingSphereOnASphereStopsAtTheClosedForm)
 {
   const double r = 0.01, RB = 50.0, rho = 2000.0, kn = 1e4, g = 9.81, v0 = 0.1;
-  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
+  const double m = ellipsoid_mass(rho, r, r, r);
   for (const std::string coeff : {"* * 1e4 0.5 0.5 rolling 0.1", "1 1 1e4 0.5 0.5 rolling 0.1|2 2 "
                                    "1e4 0.5 0.5 rolling 0.1"}) {
     Lmp l;
@@ -576,7 +573,7 @@ namespace {
 double cohesive_pair(double pull, double &delta)
 {
   const double r = 0.01, rho = 2000.0, kn = 1e4, Gamma = 0.2;
-  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r, tc = M_PI * std::sqrt(m / kn);
+  const double m = ellipsoid_mass(rho, r, r, r), tc = M_PI * std::sqrt(m / kn);
   Lmp l;
   l.cmds(box_cmds());
   l.cmds({"polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
@@ -630,8 +627,8 @@ std::map<long, Lmp::State> sliding_contact(const std::string &neigh)
   Lmp l;
   l.cmds(box_cmds());
   const double r = 0.02, rho = 2000.0, kn = 1e6;
-  const double m = rho * 4.0 / 3.0 * M_PI * r * r * r;
-  const double tc = M_PI * std::sqrt(0.5 * m / kn);
+  const double m = ellipsoid_mass(rho, r, r, r);
+  const double tc = pair_contact_time(m, kn);
   l.cmds({"atom_modify sort 1 0.2",
           "polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
           "create_atoms 1 single 0.381 0.4005 0.5", "create_atoms 1 single 0.4209 0.3995 0.5",
@@ -752,13 +749,11 @@ TEST(PairEllipsoid, HomogeneousCoolingShort)
   g.seed = 4928;
   polydem_test::write_gas(data, g);
   const double b = g.b(), kn = 1e8, en = 0.9;
-  const double m = 2000.0 * 4.0 / 3.0 * M_PI * g.xi * b * b * b;
-  const double dt = M_PI * std::sqrt(0.5 * m / kn) / 50.0;
+  const double m = g.mass();
+  const double dt = pair_contact_time(m, kn) / 50.0;
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
-          "comm_modify vel yes",
-          "polyhedron_shape e ellipsoid " + num(g.xi * b) + " " + num(b) + " " + num(b),
-          "read_data " + data, "pair_style ellipsoid damping contact",
+  l.cmds(g.scene(data));
+  l.cmds({"pair_style ellipsoid damping contact",
           "pair_coeff * * " + num(kn) + " 1.0",
           "neighbor " + num(b) + " bin", "fix 1 all nve/polyhedron",
           "compute er all erotate/polyhedron", "compute cp all pair ellipsoid",

@@ -555,65 +555,52 @@ TEST(Insert, RestartContinuesBitIdentical)
 // Acceptance 6: bad input gets a clear error naming the keyword.
 TEST(Insert, BadInputIsRefusedClearly)
 {
-  auto err = [](const std::vector<std::string> &pre, const std::string &fix) {
-    Lmp l;
-    l.cmds(pre);
-    return l.error_of(fix);
-  };
   const auto box = mixed_box();
   const std::string f = "fix ins all insert/polyhedron ";
-  auto has = [](const std::string &msg, const std::string &what) {
-    return msg.find(what) != std::string::npos;
+  // the command in a new instance of the scene `box`
+  auto refused = [&](const std::string &cmd, const std::string &what) {
+    Lmp l;
+    l.cmds(box);
+    l.expect_error(cmd, what);
   };
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 shape d 1 scale 0.001 per 1"), "'region' is required"));
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape x 1 scale 0.001 per 1"),
-                  "shape 'x' is not defined"));
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 0.5 scale 0.001 shape q 0.3 scale 0.001 "
-                               "per 1"),
-                  "sum to 0.8"));
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale -0.001 per 1"),
-                  "scale values must be finite and > 0"));
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale normal 1 0.01 2 3 per 1"),
-                  "probability"));
-  EXPECT_TRUE(has(err(box, f + "10 1 region box shape d 1 scale 0.001 shape q 0 scale 0.001 "
-                               "density 1 per 1"),
-                  "shape 'd' has no density"));
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale 0.001 density 1"),
-                  "needs one of the keywords rate"));
-  EXPECT_TRUE(has(err(box, f + "0 1 density 1 region box shape d 1 scale 0.001 per 1"),
-                  "needs a limit"));
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box mode pack fraction 1.5 shape d 1 scale 0.001 density 1"),
-                  "fraction must be in (0, 1)"));
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1 region box shape d 1 scale 0.001 per 1 colour red"),
-                  "unknown keyword 'colour'"));
-  EXPECT_TRUE(has(err(box, f + "10 0 density 1 region box shape d 1 scale 0.001 per 1"),
-                  "seed must be > 0"));
+  refused(f + "10 1 density 1 shape d 1 scale 0.001 per 1", "'region' is required");
+  refused(f + "10 1 density 1 region box shape x 1 scale 0.001 per 1", "shape 'x' is not defined");
+  refused(f + "10 1 density 1 region box shape d 0.5 scale 0.001 shape q 0.3 scale 0.001 per 1",
+          "sum to 0.8");
+  refused(f + "10 1 density 1 region box shape d 1 scale -0.001 per 1", "scale values must be finite and > 0");
+  refused(f + "10 1 density 1 region box shape d 1 scale normal 1 0.01 2 3 per 1", "probability");
+  refused(f + "10 1 region box shape d 1 scale 0.001 shape q 0 scale 0.001 density 1 per 1",
+          "shape 'd' has no density");
+  refused(f + "10 1 density 1 region box shape d 1 scale 0.001 density 1", "needs one of the keywords rate");
+  refused(f + "0 1 density 1 region box shape d 1 scale 0.001 per 1", "needs a limit");
+  refused(f + "10 1 density 1 region box mode pack fraction 1.5 shape d 1 scale 0.001 density 1", "fraction must be in (0, 1)");
+  refused(f + "10 1 density 1 region box shape d 1 scale 0.001 per 1 colour red", "unknown keyword 'colour'");
+  refused(f + "10 0 density 1 region box shape d 1 scale 0.001 per 1", "seed must be > 0");
   // numbers are read in full (LAMMPS's own reader takes "1e" as 1)
-  EXPECT_TRUE(has(err(box, f + "10 1 density 1e region box shape d 1 scale 0.001 per 1"),
-                  "'1e' is not a finite number"));
-  EXPECT_TRUE(has(err(box, "polyhedron_shape bad ellipsoid 1e 1 1"), "'1e' is not a finite number"));
-  EXPECT_TRUE(has(err(box, "polyhedron_shape bad ellipsoid 1.2.3 1 1"), "'1.2.3' is not a finite number"));
+  refused(f + "10 1 density 1e region box shape d 1 scale 0.001 per 1", "'1e' is not a finite number");
+  refused("polyhedron_shape bad ellipsoid 1e 1 1", "'1e' is not a finite number");
+  refused("polyhedron_shape bad ellipsoid 1.2.3 1 1", "'1.2.3' is not a finite number");
   // run-time checks: a missing or zero-volume region, an ellipsoid where
   // only polyhedra are allowed, a fraction the region cannot take
   {
     Lmp l;
     l.cmds(box);
     l.cmd(f + "10 1 density 1 region nowhere shape d 1 scale 0.001 per 1");
-    EXPECT_TRUE(has(l.error_of("run 0"), "region 'nowhere' does not exist"));
+    l.expect_error("run 0", "region 'nowhere' does not exist");
   }
   {
     Lmp l;
     l.cmds(box);
     l.cmds({"region flat block 0 0.06 0 0.06 0.01 0.01",
             f + "10 1 density 1 region flat shape d 1 scale 0.001 per 1"});
-    EXPECT_TRUE(has(l.error_of("run 0"), "zero volume"));
+    l.expect_error("run 0", "zero volume");
   }
   {
     Lmp l;
     l.cmds(box);
     l.cmds({"comm_modify vel yes", f + "10 1 density 1 region box shape e 1 scale 0.001 per 1",
             "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.5 0.5"});
-    EXPECT_TRUE(has(l.error_of("run 0"), "shape 'e' is an ellipsoid with unequal semi-axes"));
+    l.expect_error("run 0", "shape 'e' is an ellipsoid with unequal semi-axes");
     // with the stiffness of ellipsoid pairs they go in (issue 29)
     l.cmds({"pair_coeff * * 1e7 0.3 0.5 0.5 ellipsoid 1e3", "timestep 1e-6", "run 3"});
     EXPECT_GE(l.lmp->atom->natoms, 1);    // one per insertion event ("per 1")
@@ -624,7 +611,7 @@ TEST(Insert, BadInputIsRefusedClearly)
     l.cmds(box);
     l.cmds({"comm_modify vel yes", f + "10 1 density 1 region box shape d 1 scale 0.001 per 1",
             "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5"});
-    EXPECT_TRUE(has(l.error_of("run 0"), "shape 'd' is a polyhedron, but pair_style ellipsoid"));
+    l.expect_error("run 0", "shape 'd' is a polyhedron, but pair_style ellipsoid");
   }
   {
     // a target fraction beyond reach: a warning, and what was placed stays

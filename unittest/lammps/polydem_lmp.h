@@ -8,6 +8,8 @@
 #include "lammps.h"
 #include "library.h"
 
+#include <gtest/gtest.h>
+
 #include <mpi.h>
 
 #include <cmath>
@@ -37,6 +39,17 @@ inline std::string num(double x)
 }
 
 // the whole text of a file (a log), empty if it cannot be read
+// an empty unit box (SI units, atom_style polyhedron) with ntypes atom
+// types, then the commands `more`
+inline std::vector<std::string> unit_box(int ntypes, const std::vector<std::string> &more = {})
+{
+  std::vector<std::string> c = {"units si", "atom_style polyhedron",
+                                "region box block 0 1 0 1 0 1",
+                                "create_box " + std::to_string(ntypes) + " box"};
+  c.insert(c.end(), more.begin(), more.end());
+  return c;
+}
+
 inline std::string read_text(const std::string &path)
 {
   std::ifstream in(path);
@@ -103,6 +116,12 @@ class Lmp {
       return e.what();
     }
     return "";
+  }
+  // run a command that must fail with an error message naming `what`
+  void expect_error(const std::string &line, const std::string &what)
+  {
+    const std::string e = error_of(line);
+    EXPECT_NE(e.find(what), std::string::npos) << line << " -> " << e;
   }
   // thermo keyword, or "c_ID" for a compute's global scalar
   double thermo(const std::string &keyword)

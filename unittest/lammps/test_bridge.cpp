@@ -42,20 +42,31 @@ const double THETA = THETA_DEG * M_PI / 180.0;
 const double RSTAR = 2.0 * R1 * R2 / (R1 + R2);
 const double SC = (1.0 + 0.5 * THETA) * std::cbrt(VB);
 
-double willett(double s)
+// Willett et al.'s force at gap s for the radius R
+double willett_R(double s, double R)
 {
-  const double u = (s > 0.0 ? s : 0.0) * std::sqrt(RSTAR / VB);
-  return 2.0 * M_PI * RSTAR * GAMMA * std::cos(THETA) / (1.0 + 1.05 * u + 2.5 * u * u);
+  const double u = (s > 0.0 ? s : 0.0) * std::sqrt(R / VB);
+  return 2.0 * M_PI * R * GAMMA * std::cos(THETA) / (1.0 + 1.05 * u + 2.5 * u * u);
 }
 
 // -int_s^s_c F ds' by Simpson's rule
-double willett_energy(double s)
+double willett_R_energy(double s, double R)
 {
   const int n = 20000;
   const double h = (SC - s) / n;
-  double sum = willett(s) + willett(SC);
-  for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett(s + k * h);
+  double sum = willett_R(s, R) + willett_R(SC, R);
+  for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett_R(s + k * h, R);
   return -sum * h / 3.0;
+}
+
+// the two spheres' force and energy
+double willett(double s)
+{
+  return willett_R(s, RSTAR);
+}
+double willett_energy(double s)
+{
+  return willett_R_energy(s, RSTAR);
 }
 
 const std::string BRIDGE =
@@ -93,6 +104,72 @@ double two_body_energy(Lmp &l)
                                a->v[i][2] * a->v[i][2]);
   }
   return k;
+}
+
+// An impact that forms and ruptures a bridge, 100 steps at a time (at most
+// `chunks` times): from the step the bridge forms (the pair energy turns
+// negative) on, the largest deviation of energy() + pair energy from its
+// value then; stops once done(pair energy) after the formation
+struct BridgeEnergy {
+  bool formed = false;
+  double E_formed = 0.0, dev = 0.0;
+};
+template <class Energy, class Done>
+BridgeEnergy track_bridge_energy(Lmp &l, int chunks, Energy energy, Done done)
+{
+  BridgeEnergy r;
+  for (int k = 0; k < chunks; k++) {
+    l.cmd("run 100 pre no post no");
+    const double pe = l.lmp->force->pair->eng_vdwl, E = energy() + pe;
+    if (!r.formed && pe < 0.0) {
+      r.formed = true;
+      r.E_formed = E;
+    }
+    if (r.formed) r.dev = std::fmax(r.dev, std::fabs(E - r.E_formed));
+    if (r.formed && done(pe)) break;
+  }
+  return r;
+}
+
+// positions, velocities and spins of atoms 1 and 2
+void two_body_state(Lmp &l, double out[6][3])
+{
+  auto *a = l.lmp->atom;
+  for (int id : {1, 2}) {
+    const int i = a->map(id);
+    for (int d = 0; d < 3; d++) {
+      out[3 * (id - 1)][d] = a->x[i][d];
+      out[3 * (id - 1) + 1][d] = a->v[i][d];
+      out[3 * (id - 1) + 2][d] = a->omega[i][d];
+    }
+  }
+}
+
+// atom `id` launched at v down along z and 0.2 v along x, the other at
+// rest; then the commands `more`, and nve/polyhedron at the step dt
+void launch(Lmp &l, int id, double v, double dt, const std::vector<std::string> &more = {})
+{
+  l.cmds({"velocity all set 0 0 0", "set atom " + std::to_string(id) + " vz " + num(-v) +
+              " vx " + num(0.2 * v)});
+  l.cmds(more);
+  l.cmds({"fix 1 all nve/polyhedron", "timestep " + num(dt), "thermo 100", "run 0"});
+}
+
+// after `move` (beyond s_c): no force on local atom i's component k, no
+// pair energy
+void expect_no_bridge(Lmp &l, const std::string &move, int i, int k)
+{
+  l.cmd(move);
+  l.cmd("run 0");
+  EXPECT_EQ(l.lmp->atom->f[i][k], 0.0);
+  EXPECT_EQ(l.lmp->force->pair->eng_vdwl, 0.0);
+}
+
+// a new run from the restart file, 3000 steps on
+void run_from_restart(Lmp &l, const std::string &file)
+{
+  l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 3e-4 bin",
+          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
 }
 
 }    // namespace
@@ -158,20 +235,13 @@ TEST(Bridge, CollisionLosesTheBridgeEnergy)
   };
   const double K0 = kinetic();
   const double U0 = willett_energy(0.0);
-  double gap = 0.0, E_formed = 0.0, dev = 0.0;
-  bool formed = false;
-  for (int k = 0; k < 1000; k++) {
-    l.cmd("run 100 pre no post no");
-    const double E = kinetic() + l.lmp->force->pair->eng_vdwl;
-    if (!formed && l.lmp->force->pair->eng_vdwl < 0.0) {
-      formed = true;
-      E_formed = E;
-    }
-    if (formed) dev = std::fmax(dev, std::fabs(E - E_formed));
+  double gap = 0.0;
+  const BridgeEnergy b = track_bridge_energy(l, 1000, kinetic, [&](double) {
     gap = a->x[a->map(2)][0] - a->x[a->map(1)][0] - R1 - R2;
-    if (gap > 1.2 * SC) break;
-  }
-  ASSERT_TRUE(formed);
+    return gap > 1.2 * SC;
+  });
+  const double E_formed = b.E_formed, dev = b.dev;
+  ASSERT_TRUE(b.formed);
   ASSERT_GT(gap, SC) << "the spheres did not separate";
   const double K1 = kinetic();
   std::printf("[ bridge   ] collision: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, |U(0)| %.9e J "
@@ -208,8 +278,7 @@ void sphere_and_cube(Lmp &l, double x0, double y0, double z, double e, int order
 // Willett's force with the sphere-plane radius 2 r (the sphere on a face)
 double willett_plane(double s)
 {
-  const double R = 2.0 * R1, u = (s > 0.0 ? s : 0.0) * std::sqrt(R / VB);
-  return 2.0 * M_PI * R * GAMMA * std::cos(THETA) / (1.0 + 1.05 * u + 2.5 * u * u);
+  return willett_R(s, 2.0 * R1);
 }
 }    // namespace
 
@@ -251,10 +320,8 @@ TEST(Bridge, SphereOnAPolyhedronFollowsWillett)
                 "largest relative difference %.2g\n", order, worst);
     EXPECT_LT(worst, 1e-12);
     // beyond s_c: gone
-    l.cmd("set atom " + std::to_string(order == 1 ? 1 : 2) + " x 0 z " + num(h + R1 + 1.001 * SC));
-    l.cmd("run 0");
-    EXPECT_EQ(a->f[is][2], 0.0);
-    EXPECT_EQ(l.lmp->force->pair->eng_vdwl, 0.0);
+    expect_no_bridge(l, "set atom " + std::to_string(order == 1 ? 1 : 2) + " x 0 z " +
+                            num(h + R1 + 1.001 * SC), is, 2);
   }
 }
 
@@ -268,32 +335,18 @@ TEST(Bridge, SphereOnAPolyhedronKeepsTheEnergy)
   const double h = 0.5 * CUBE, v = 0.15, dt = 1e-7;
   Lmp l;
   sphere_and_cube(l, 0.5 * h, 0.2 * h, h + R1 + 5e-5, 1.0, 1);
-  l.cmds({"velocity all set 0 0 0", "set atom 1 vz " + num(-v) + " vx " + num(0.2 * v),
-          "fix 1 all nve/polyhedron", "timestep " + num(dt), "thermo 100", "run 0"});
+  launch(l, 1, v, dt);
   auto *a = l.lmp->atom;
   auto energy = [&]() { return two_body_energy(l); };
   const double K0 = energy();
-  const double U0 = -0.0 + [] {
-    const int n = 20000;
-    const double hh = SC / n;
-    double sum = willett_plane(0.0) + willett_plane(SC);
-    for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett_plane(k * hh);
-    return -sum * hh / 3.0;
-  }();
-  double E_formed = 0.0, dev = 0.0, gap = 0.0;
-  bool formed = false;
-  for (int k = 0; k < 2000; k++) {
-    l.cmd("run 100 pre no post no");
-    const double E = energy() + l.lmp->force->pair->eng_vdwl;
-    if (!formed && l.lmp->force->pair->eng_vdwl < 0.0) {
-      formed = true;
-      E_formed = E;
-    }
-    if (formed) dev = std::fmax(dev, std::fabs(E - E_formed));
+  const double U0 = willett_R_energy(0.0, 2.0 * R1);
+  double gap = 0.0;
+  const BridgeEnergy b = track_bridge_energy(l, 2000, energy, [&](double) {
     gap = a->x[a->map(1)][2] - a->x[a->map(2)][2] - h - R1;
-    if (formed && gap > 1.2 * SC) break;
-  }
-  ASSERT_TRUE(formed);
+    return gap > 1.2 * SC;
+  });
+  const double E_formed = b.E_formed, dev = b.dev;
+  ASSERT_TRUE(b.formed);
   ASSERT_GT(gap, SC) << "the sphere did not leave";
   const double K1 = energy();
   std::printf("[ bridge   ] sphere on a cube: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, |U(0)| %.9e J, "
@@ -327,8 +380,7 @@ TEST(Bridge, StretchedBridgeRestartsExactly)
     ref[1] = a->v[a->map(2)][0];
   }
   Lmp l;
-  l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 3e-4 bin",
-          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
+  run_from_restart(l, file);
   auto *a = l.lmp->atom;
   got[0] = a->x[a->map(1)][0];
   got[1] = a->v[a->map(2)][0];
@@ -344,22 +396,10 @@ TEST(Bridge, SphereCubeBridgeRestartsExactly)
   const std::string file = ::testing::TempDir() + "polydem_sphere_cube_bridge.bin";
   const double h = 0.5 * CUBE, v = 0.15;
   double ref[6][3];
-  auto state = [](Lmp &l, double out[6][3]) {
-    auto *a = l.lmp->atom;
-    for (int id : {1, 2}) {
-      const int i = a->map(id);
-      for (int d = 0; d < 3; d++) {
-        out[3 * (id - 1)][d] = a->x[i][d];
-        out[3 * (id - 1) + 1][d] = a->v[i][d];
-        out[3 * (id - 1) + 2][d] = a->omega[i][d];
-      }
-    }
-  };
   {
     Lmp l;
     sphere_and_cube(l, 0.5 * h, 0.2 * h, h + R1 + 5e-5, 0.7, 1);
-    l.cmds({"velocity all set 0 0 0", "set atom 1 vz " + num(-v) + " vx " + num(0.2 * v),
-            "fix 1 all nve/polyhedron", "timestep 1e-7", "run 0"});
+    launch(l, 1, v, 1e-7);
     auto *a = l.lmp->atom;
     bool formed = false;
     double gap = 0.0;
@@ -377,13 +417,12 @@ TEST(Bridge, SphereCubeBridgeRestartsExactly)
     ASSERT_LT(l.lmp->force->pair->eng_vdwl, 0.0);    // stretched, not ruptured
     EXPECT_NE(a->omega[a->map(2)][0], 0.0);
     l.cmds({"write_restart " + file, "run 3000"});
-    state(l, ref);
+    two_body_state(l, ref);
   }
   Lmp l;
-  l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 3e-4 bin",
-          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
+  run_from_restart(l, file);
   double got[6][3];
-  state(l, got);
+  two_body_state(l, got);
   for (int k = 0; k < 6; k++)
     for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
 }
@@ -392,19 +431,6 @@ TEST(Bridge, SphereCubeBridgeRestartsExactly)
 // Willett's force with the Derjaguin mean of their volume-equivalent radii,
 // across their distance along the line of their nearest points
 namespace {
-double willett_R(double s, double R)
-{
-  const double u = (s > 0.0 ? s : 0.0) * std::sqrt(R / VB);
-  return 2.0 * M_PI * R * GAMMA * std::cos(THETA) / (1.0 + 1.05 * u + 2.5 * u * u);
-}
-double willett_R_energy(double s, double R)
-{
-  const int n = 20000;
-  const double h = (SC - s) / n;
-  double sum = willett_R(s, R) + willett_R(SC, R);
-  for (int k = 1; k < n; k++) sum += (k % 2 ? 4.0 : 2.0) * willett_R(s + k * h, R);
-  return -sum * h / 3.0;
-}
 double equivalent_radius(double volume)
 {
   return std::cbrt(3.0 * volume / (4.0 * M_PI));
@@ -471,10 +497,7 @@ TEST(Bridge, TwoCubesFollowWillett)
   EXPECT_NEAR(a->torque[i1][1], h * Fw * (gx - gz) / d, 1e-12 * Fw * h);
   EXPECT_NEAR(a->torque[i2][1], h * Fw * (gx - gz) / d, 1e-12 * Fw * h);
   // beyond s_c: gone
-  l.cmd("set atom 2 x " + num(CUBE + 1.001 * SC) + " z 0");
-  l.cmd("run 0");
-  EXPECT_EQ(a->f[i1][0], 0.0);
-  EXPECT_EQ(l.lmp->force->pair->eng_vdwl, 0.0);
+  expect_no_bridge(l, "set atom 2 x " + num(CUBE + 1.001 * SC) + " z 0", i1, 0);
 }
 
 // An elastic oblique impact of a dodecahedron on a cube off its centre (e =
@@ -489,28 +512,18 @@ TEST(Bridge, TwoPolyhedraKeepTheEnergy)
   const double h = 0.5 * CUBE, v = 0.15, dt = 1e-7;
   Lmp l;
   cube_and_polyhedron(l, "dodecahedron.shape", 0.002, 0.4 * h, h + 0.0029, 1.0);
-  l.cmds({"velocity all set 0 0 0", "set atom 2 vz " + num(-v) + " vx " + num(0.2 * v),
-          "polyhedron_set atom 2 quat 0.3 0.5 0.8 40", "fix 1 all nve/polyhedron",
-          "timestep " + num(dt), "thermo 100", "run 0"});
+  launch(l, 2, v, dt, {"polyhedron_set atom 2 quat 0.3 0.5 0.8 40"});
   auto *a = l.lmp->atom;
   auto energy = [&]() { return two_body_energy(l); };
   const double K0 = energy();
-  double E_formed = 0.0, dev = 0.0, U0 = 0.0;
-  bool formed = false, gone = false;
-  for (int k = 0; k < 3000; k++) {
-    l.cmd("run 100 pre no post no");
-    const double pe = l.lmp->force->pair->eng_vdwl, E = energy() + pe;
-    if (!formed && pe < 0.0) {
-      formed = true;
-      E_formed = E;
-    }
-    if (formed) dev = std::fmax(dev, std::fabs(E - E_formed));
-    if (formed && pe == 0.0) {
-      gone = true;
-      break;
-    }
-  }
-  ASSERT_TRUE(formed);
+  double U0 = 0.0;
+  bool gone = false;
+  const BridgeEnergy b = track_bridge_energy(l, 3000, energy, [&](double pe) {
+    gone = pe == 0.0;
+    return gone;
+  });
+  const double E_formed = b.E_formed, dev = b.dev;
+  ASSERT_TRUE(b.formed);
   ASSERT_TRUE(gone) << "the bridge did not rupture";
   {
     const double R = 2.0 * equivalent_radius(CUBE * CUBE * CUBE) *
@@ -536,24 +549,11 @@ TEST(Bridge, TwoPolyhedraBridgeRestartsExactly)
 {
   const std::string file = ::testing::TempDir() + "polydem_poly_bridge.bin";
   const double h = 0.5 * CUBE, v = 0.15;
-  auto state = [](Lmp &l, double out[6][3]) {
-    auto *a = l.lmp->atom;
-    for (int id : {1, 2}) {
-      const int i = a->map(id);
-      for (int d = 0; d < 3; d++) {
-        out[3 * (id - 1)][d] = a->x[i][d];
-        out[3 * (id - 1) + 1][d] = a->v[i][d];
-        out[3 * (id - 1) + 2][d] = a->omega[i][d];
-      }
-    }
-  };
   double ref[6][3], got[6][3];
   {
     Lmp l;
     cube_and_polyhedron(l, "dodecahedron.shape", 0.002, 0.4 * h, h + 0.0029, 0.7);
-    l.cmds({"velocity all set 0 0 0", "set atom 2 vz " + num(-v) + " vx " + num(0.2 * v),
-            "polyhedron_set atom 2 quat 0.3 0.5 0.8 40", "fix 1 all nve/polyhedron",
-            "timestep 1e-7", "run 0"});
+    launch(l, 2, v, 1e-7, {"polyhedron_set atom 2 quat 0.3 0.5 0.8 40"});
     // the pair energy: U(0) on touching, up with the elastic energy in
     // contact, down to about U(0) as they part, then up towards 0 across the
     // gap: stretched once it is back at half its lowest value after contact
@@ -568,12 +568,11 @@ TEST(Bridge, TwoPolyhedraBridgeRestartsExactly)
     }
     ASSERT_TRUE(stretched) << "no stretched bridge";
     l.cmds({"write_restart " + file, "run 3000"});
-    state(l, ref);
+    two_body_state(l, ref);
   }
   Lmp l;
-  l.cmds({"read_restart " + file, "comm_modify vel yes", "neighbor 3e-4 bin",
-          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
-  state(l, got);
+  run_from_restart(l, file);
+  two_body_state(l, got);
   for (int k = 0; k < 6; k++)
     for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
 }
@@ -587,19 +586,12 @@ TEST(Bridge, Errors)
     EXPECT_NE(e.find("beyond the neighbor skin"), std::string::npos) << e;
   }
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
-          "create_box 1 box", "pair_style polyhedron"});
-  auto has = [&](const std::string &cmd, const std::string &what) {
-    const std::string e = l.error_of(cmd);
-    EXPECT_NE(e.find(what), std::string::npos) << cmd << " -> " << e;
-  };
-  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07", "needs three values");
-  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07 95", "contact angle theta must be in [0, 90)");
-  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 0 0.07 10", "liquid volume V_b must be > 0");
-  has("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 -1 10", "surface tension gamma must be > 0");
+  l.cmds(polydem_test::unit_box(1, {"pair_style polyhedron"}));
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07", "needs three values");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07 95", "contact angle theta must be in [0, 90)");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 0 0.07 10", "liquid volume V_b must be > 0");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 -1 10", "surface tension gamma must be > 0");
   Lmp e;
-  e.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
-          "create_box 1 box", "pair_style ellipsoid"});
-  const std::string m = e.error_of("pair_coeff * * 1e4 0.9 0.5 bridge 1e-11 0.07 10");
-  EXPECT_NE(m.find("part of pair_style polyhedron"), std::string::npos) << m;
+  e.cmds(polydem_test::unit_box(1, {"pair_style ellipsoid"}));
+  e.expect_error("pair_coeff * * 1e4 0.9 0.5 bridge 1e-11 0.07 10", "part of pair_style polyhedron");
 }

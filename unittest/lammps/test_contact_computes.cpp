@@ -311,17 +311,13 @@ TEST(ContactComputes, StaleStepIsAnError)
 TEST(ContactComputes, BadInput)
 {
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
-          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
-          "create_atoms 1 single 0.5 0.5 0.5", "comm_modify vel yes",
-          "polyhedron_set atom 1 scale 0.01", "fix 1 all nve/polyhedron"});
-  auto has = [&](const std::string &cmd, const std::string &what) {
-    const std::string e = l.error_of(cmd);
-    EXPECT_NE(e.find(what), std::string::npos) << cmd << " -> " << e;
-  };
-  has("compute a all contact/polyhedron/local", "expected at least one keyword");
-  has("compute a all contact/polyhedron/local id1 bogus", "unknown keyword 'bogus'");
-  has("compute a all contact/polyhedron 1", "expected no arguments");
+  l.cmds(polydem_test::unit_box(1, {"polyhedron_shape c " + potentials() + "/cube.shape",
+                                     "create_atoms 1 single 0.5 0.5 0.5", "comm_modify vel yes",
+                                     "polyhedron_set atom 1 scale 0.01",
+                                     "fix 1 all nve/polyhedron"}));
+  l.expect_error("compute a all contact/polyhedron/local", "expected at least one keyword");
+  l.expect_error("compute a all contact/polyhedron/local id1 bogus", "unknown keyword 'bogus'");
+  l.expect_error("compute a all contact/polyhedron 1", "expected no arguments");
   l.cmds({"compute b all contact/polyhedron", "pair_style zero 0.1", "pair_coeff * *"});
-  has("run 0", "requires pair_style polyhedron");
+  l.expect_error("run 0", "requires pair_style polyhedron");
 }

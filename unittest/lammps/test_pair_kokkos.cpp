@@ -201,6 +201,20 @@ void compare(Lmp &plain, Lmp &kk, const char *when, bool positions, double loose
   }
 }
 
+// the scene of setup() and `extra` in both styles, 100 steps on, compared
+// (positions included)
+void expect_run_alike(const std::vector<std::string> &extra, const char *when)
+{
+  Lmp plain, kk(KK);
+  for (Lmp *l : {&plain, &kk}) {
+    l->cmds(setup());
+    l->cmds(extra);
+  }
+  plain.cmd("run 100");
+  kk.cmd("run 100");
+  compare(plain, kk, when, true);
+}
+
 }    // namespace
 
 TEST(PairKokkos, DensePackingMatchesPlain)
@@ -209,20 +223,17 @@ TEST(PairKokkos, DensePackingMatchesPlain)
   plain.cmds(setup());
   kk.cmds(setup());
   EXPECT_EQ(std::string(kk.lmp->force->pair_style), "polyhedron/kk");
-  plain.cmd("run 0");
-  kk.cmd("run 0");
-  compare(plain, kk, "run 0", true);
+  auto both = [&](const std::string &run, const char *when) {
+    plain.cmd(run);
+    kk.cmd(run);
+    compare(plain, kk, when, true);
+  };
+  both("run 0", "run 0");
   // the history crosses a run boundary (post_run -> setup_post_neighbor)
-  plain.cmd("run 5");
-  kk.cmd("run 5");
-  compare(plain, kk, "run 5", true);
-  plain.cmd("run 0");
-  kk.cmd("run 0");
-  compare(plain, kk, "run 5 + run 0", true);
+  both("run 5", "run 5");
+  both("run 0", "run 5 + run 0");
   // and reneighborings inside the run (skin 0.01: every few tens of steps)
-  plain.cmd("run 100");
-  kk.cmd("run 100");
-  compare(plain, kk, "run 100", true);
+  both("run 100", "run 100");
   EXPECT_GE(kk.lmp->neighbor->ncalls, 2) << "no reneighboring during the run";
   if (me() == 0)
     std::printf("[run 100] neighbor list builds: plain %d kk %d\n", plain.lmp->neighbor->ncalls,
@@ -234,34 +245,17 @@ TEST(PairKokkos, DensePackingMatchesPlain)
 // reneighborings alike
 TEST(PairKokkos, RollingResistanceMatchesPlain)
 {
-  Lmp plain, kk(KK);
-  for (Lmp *l : {&plain, &kk}) {
-    l->cmds(setup());
-    l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 rolling 0.2 cohesion 50");
-  }
-  plain.cmd("run 100");
-  kk.cmd("run 100");
-  compare(plain, kk, "rolling, run 100", true);
+  expect_run_alike({"pair_coeff * * 1.0e4 0.3 0.7 0.5 rolling 0.2 cohesion 50"},
+                   "rolling, run 100");
 }
 
 // a quarter of the grains spheres (issue 29): sphere-polyhedron and
 // sphere-sphere contacts by their overlap volume, alike in both styles
 TEST(PairKokkos, SpheresAmongPolyhedraMatchPlain)
 {
-  Lmp plain, kk(KK);
-  for (Lmp *l : {&plain, &kk}) {
-    l->cmds(setup());
-    l->cmds({"polyhedron_shape ball ellipsoid 0.47 0.47 0.47",
-             "polyhedron_set group g1 shape ball density 1.0"});
-  }
-  plain.cmd("run 100");
-  kk.cmd("run 100");
-  compare(plain, kk, "spheres, run 100", true);
-  auto *p = plain.lmp->force->pair;
-  int dim;
-  const double *cnt = (const double *) p->extract("counters", dim);
-  ASSERT_NE(cnt, nullptr);
-  EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
+  expect_run_alike({"polyhedron_shape ball ellipsoid 0.47 0.47 0.47",
+                    "polyhedron_set group g1 shape ball density 1.0"},
+                   "spheres, run 100");
 }
 
 // ellipsoids of unequal semi-axes and spheres among the polyhedra (issue
@@ -270,44 +264,24 @@ TEST(PairKokkos, SpheresAmongPolyhedraMatchPlain)
 // overlap volume, alike in both styles
 TEST(PairKokkos, EllipsoidsAmongPolyhedraMatchPlain)
 {
-  Lmp plain, kk(KK);
-  for (Lmp *l : {&plain, &kk}) {
-    l->cmds(setup());
-    l->cmds({"polyhedron_shape ball ellipsoid 0.47 0.47 0.47",
-             "polyhedron_shape egg ellipsoid 0.55 0.42 0.36",
-             "polyhedron_set group g1 shape egg density 1.0",
-             "polyhedron_set group g2 shape ball density 1.0",
-             "pair_coeff * * 1.0e4 0.3 0.7 0.5 ellipsoid 4000",
-             "pair_coeff 1 2 0.8 0.3 ellipsoid 3000"});
-  }
-  plain.cmd("run 100");
-  kk.cmd("run 100");
-  compare(plain, kk, "ellipsoids, run 100", true);
-  int dim;
-  const double *cnt = (const double *) plain.lmp->force->pair->extract("counters", dim);
-  ASSERT_NE(cnt, nullptr);
-  EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
+  expect_run_alike({"polyhedron_shape ball ellipsoid 0.47 0.47 0.47",
+                    "polyhedron_shape egg ellipsoid 0.55 0.42 0.36",
+                    "polyhedron_set group g1 shape egg density 1.0",
+                    "polyhedron_set group g2 shape ball density 1.0",
+                    "pair_coeff * * 1.0e4 0.3 0.7 0.5 ellipsoid 4000",
+                    "pair_coeff 1 2 0.8 0.3 ellipsoid 3000"},
+                   "ellipsoids, run 100");
 }
 
 // a third of the grains composites (issue 29): two cubes and a sphere, part
 // contacts with keyed histories, the parts' views on the device
 TEST(PairKokkos, CompositesMatchPlain)
 {
-  Lmp plain, kk(KK);
-  for (Lmp *l : {&plain, &kk}) {
-    l->cmds(setup());
-    l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
-             "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 quat 0.92 "
-             "0.38 0 0 part ball 0 1.3 0",
-             "polyhedron_set group g1 shape dumb scale 0.4 density 1.0"});
-  }
-  plain.cmd("run 100");
-  kk.cmd("run 100");
-  compare(plain, kk, "composites, run 100", true);
-  int dim;
-  const double *cnt = (const double *) plain.lmp->force->pair->extract("counters", dim);
-  ASSERT_NE(cnt, nullptr);
-  EXPECT_GT(cnt[polydem::PP_CONTACTS], 0.0);
+  expect_run_alike({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
+                    "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 quat "
+                    "0.92 0.38 0 0 part ball 0 1.3 0",
+                    "polyhedron_set group g1 shape dumb scale 0.4 density 1.0"},
+                   "composites, run 100");
 }
 
 // all grains spheres (then a quarter spheres among polyhedra: sphere-

@@ -455,26 +455,21 @@ TEST(PairPolyhedron, RestartKeepsContactHistory)
 TEST(PairPolyhedron, BadCoefficients)
 {
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
-          "create_box 2 box", "pair_style polyhedron"});
-  auto has = [&](const std::string &cmd, const std::string &what) {
-    const std::string e = l.error_of(cmd);
-    EXPECT_NE(e.find(what), std::string::npos) << cmd << " -> " << e;
-  };
-  has("pair_coeff * * 1e7 0.3 0.9", "expected 'I J E nu e mu'");
-  has("pair_coeff * * 1e7 0.3 0.9 0.5 7", "expected 'I J E nu e mu'");
-  has("pair_coeff * * -1e7 0.3 0.9 0.5", "Young's modulus E must be > 0");
-  has("pair_coeff * * 0 0.3 0.9 0.5", "Young's modulus E must be > 0");
-  has("pair_coeff * * 1e7 0.5 0.9 0.5", "Poisson's ratio must be in (-1, 0.5)");
-  has("pair_coeff * * 1e7 -1.0 0.9 0.5", "Poisson's ratio must be in (-1, 0.5)");
-  has("pair_coeff * * 1e7 0.3 0.0 0.5", "restitution e must be in (0, 1]");
-  has("pair_coeff * * 1e7 0.3 1.1 0.5", "restitution e must be in (0, 1]");
-  has("pair_coeff * * 1e7 0.3 0.9 -0.1", "friction mu must be >= 0");
-  has("pair_coeff 1 1 0.9 0.5", "needs its material");
-  has("pair_style polyhedron overlap/warn 2", "overlap/warn must be in (0, 1]");
-  has("pair_style polyhedron bogus 1", "unknown keyword 'bogus'");
-  has("pair_style polyhedron core 1.5", "core must be in [0, 1)");
-  has("pair_style polyhedron core -1", "core must be in [0, 1)");
+  l.cmds(polydem_test::unit_box(2, {"pair_style polyhedron"}));
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9", "expected 'I J E nu e mu'");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 7", "expected 'I J E nu e mu'");
+  l.expect_error("pair_coeff * * -1e7 0.3 0.9 0.5", "Young's modulus E must be > 0");
+  l.expect_error("pair_coeff * * 0 0.3 0.9 0.5", "Young's modulus E must be > 0");
+  l.expect_error("pair_coeff * * 1e7 0.5 0.9 0.5", "Poisson's ratio must be in (-1, 0.5)");
+  l.expect_error("pair_coeff * * 1e7 -1.0 0.9 0.5", "Poisson's ratio must be in (-1, 0.5)");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.0 0.5", "restitution e must be in (0, 1]");
+  l.expect_error("pair_coeff * * 1e7 0.3 1.1 0.5", "restitution e must be in (0, 1]");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 -0.1", "friction mu must be >= 0");
+  l.expect_error("pair_coeff 1 1 0.9 0.5", "needs its material");
+  l.expect_error("pair_style polyhedron overlap/warn 2", "overlap/warn must be in (0, 1]");
+  l.expect_error("pair_style polyhedron bogus 1", "unknown keyword 'bogus'");
+  l.expect_error("pair_style polyhedron core 1.5", "core must be in [0, 1)");
+  l.expect_error("pair_style polyhedron core -1", "core must be in [0, 1)");
   {
     Lmp a;
     a.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",

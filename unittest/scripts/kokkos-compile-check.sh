@@ -74,22 +74,21 @@ for f in "${core[@]}"; do rm -f "$coredir/$f.o"; done
 t1=$(date +%s)
 make -C "$build/lammps" -k -j"$jobs" "${targets[@]}" > "$build/polydem-kk-compile.log" 2>&1 || true
 failed=()
-for f in "${files[@]}"; do
-  if [ -f "$objdir/$f.o" ]; then
-    log "ok      $f"
-  else
-    log "FAILED  $f"
-    failed+=("$f")
-  fi
-done
-for f in "${core[@]}"; do
-  if [ -f "$coredir/$f.o" ]; then
-    log "ok      $f (LAMMPS's, instantiates the styles)"
-  else
-    log "FAILED  $f (LAMMPS's, instantiates the styles)"
-    failed+=("$f")
-  fi
-done
+# check_objects DIR NOTE FILE...: each FILE's object in DIR, or FILE in failed
+check_objects() {
+  local dir=$1 note=$2 f
+  shift 2
+  for f in "$@"; do
+    if [ -f "$dir/$f.o" ]; then
+      log "ok      $f$note"
+    else
+      log "FAILED  $f$note"
+      failed+=("$f")
+    fi
+  done
+}
+check_objects "$objdir" "" "${files[@]}"
+check_objects "$coredir" " (LAMMPS's, instantiates the styles)" "${core[@]}"
 if [ ${#failed[@]} -gt 0 ]; then
   grep -E 'error' "$build/polydem-kk-compile.log" | head -n 60 | sed 's/^/    /' >&2
   log "compiler output: $build/polydem-kk-compile.log"

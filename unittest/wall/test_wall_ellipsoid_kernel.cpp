@@ -183,6 +183,23 @@ Gradient depth_gradient(const Vec3<double> &c, const Quat<double> &q, const Vec3
   return out;
 }
 
+// the half-width of the ellipsoid of semi-axes ax turned by R along the lab
+// direction n (unit): |diag(ax) R^T n|
+double support_halfwidth(const Vec3<double> &ax, const Mat3<double> &R, const Vec3<double> &n)
+{
+  const Vec3<double> nb = matTvec(R, n);
+  return norm(make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z));
+}
+
+// the border tests' scene: an ellipsoid turned by R over an open square
+// plate (10 cm, z = 0), its half-width sig along z
+struct TiltedOverPlate {
+  Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
+  Mesh<double> m{wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2)};
+  Mat3<double> R = quat_to_mat(qnormalize(make_quat(0.9, 0.2, -0.3, 0.25)));
+  double sig = support_halfwidth(ax, R, make_vec3(0.0, 0.0, 1.0));
+};
+
 }    // namespace
 
 TEST(WallEllipsoidKernel, PlaneIsTheSupportDepthDouble) { plane_case<double>(1e-13); }
@@ -202,8 +219,7 @@ TEST(WallEllipsoidKernel, GradientOfTheOverlap)
   for (int trial = 0; trial < 20; trial++) {
     const Quat<double> q = random_quat(rng);
     const Mat3<double> R = quat_to_mat(q);
-    const Vec3<double> nb = matTvec(R, nw);
-    const double sig = norm(make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z));
+    const double sig = support_halfwidth(ax, R, nw);
     const Vec3<double> c = matvec(Rw, make_vec3(0.006 * trial - 0.06, 0.02, 0.0)) +
         0.8 * sig * nw;
     WallPatches<double> P;
@@ -263,11 +279,7 @@ TEST(WallEllipsoidKernel, GradientAtBorders)
 // continuously.
 TEST(WallEllipsoidKernel, ContinuousAcrossTheBorder)
 {
-  const Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
-  const Mesh<double> m(wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
-  const Mat3<double> R = quat_to_mat(qnormalize(make_quat(0.9, 0.2, -0.3, 0.25)));
-  const Vec3<double> nb = matTvec(R, make_vec3(0.0, 0.0, 1.0));
-  const double sig = norm(make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z));
+  const auto &[ax, m, R, sig] = TiltedOverPlate();
   double dprev = -1.0, jump = 0.0, njump = 0.0;
   Vec3<double> nprev = make_vec3(0.0, 0.0, 0.0);
   int regions[3] = {0, 0, 0};    // face, border, none
@@ -304,11 +316,7 @@ TEST(WallEllipsoidKernel, ContinuousAcrossTheBorder)
 // into the wall from the front (the particle is pushed back, not through).
 TEST(WallEllipsoidKernel, KeptSideBehindThePlane)
 {
-  const Vec3<double> ax = make_vec3(0.02, 0.012, 0.007);
-  const Mesh<double> m(wall_test::flat(-0.05, 0.05, -0.05, 0.05, 0.0, 2, 2));
-  const Mat3<double> R = quat_to_mat(qnormalize(make_quat(0.9, 0.2, -0.3, 0.25)));
-  const Vec3<double> nb = matTvec(R, make_vec3(0.0, 0.0, 1.0));
-  const double sig = norm(make_vec3(ax.x * nb.x, ax.y * nb.y, ax.z * nb.z));
+  const auto &[ax, m, R, sig] = TiltedOverPlate();
   WallSides<double> sides;
   sides.both = 1;
   sides.n = 1;

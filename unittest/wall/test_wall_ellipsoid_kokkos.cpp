@@ -22,12 +22,32 @@ KkScene scene()
           "neighbor 0.0006 bin", 150, "ell wall"};
 }
 
+// the closed box of the tests, written to tmpdir()/name
+std::string box_file(const std::string &name)
+{
+  const std::string box = tmpdir() + "/" + name;
+  write_binary(box, closed_box(EB, 4));
+  return box;
+}
+
+// scene() under pair_style polyhedron with the pair_coeff command `coeff`
+// and, where given, the template command `shape` in place of the ellipsoid's
+KkScene scene_under_pair_polyhedron(const std::string &coeff, const std::string &shape = "")
+{
+  KkScene sc = scene();
+  for (auto &c : sc.setup) {
+    if (!shape.empty() && c.rfind("polyhedron_shape e", 0) == 0) c = shape;
+    if (c.rfind("pair_style", 0) == 0) c = "pair_style polyhedron";
+    if (c.rfind("pair_coeff", 0) == 0) c = coeff;
+  }
+  return sc;
+}
+
 }    // namespace
 
 TEST(WallEllipsoidKokkos, KkEqualsPlain)
 {
-  const std::string box = tmpdir() + "/ell_kk_box.stl";
-  write_binary(box, closed_box(EB, 4));
+  const std::string box = box_file("ell_kk_box.stl");
   const std::string curved = tmpdir() + "/ell_kk_bowl.stl";
   write_binary(curved, bowl(0, EB, 0, EB, 0.0004, 0.1, 24));
   for (const std::string move :
@@ -54,14 +74,9 @@ TEST(WallEllipsoidKokkos, KkEqualsPlain)
 // liquid bridges on the walls (issue 30)
 TEST(WallEllipsoidKokkos, SpheresByVolumeKkEqualsPlain)
 {
-  const std::string box = tmpdir() + "/sph_kk_box.stl";
-  write_binary(box, closed_box(EB, 4));
-  KkScene sc = scene();
-  for (auto &c : sc.setup) {
-    if (c.rfind("polyhedron_shape e", 0) == 0) c = "polyhedron_shape e ellipsoid 0.7 0.7 0.7";
-    if (c.rfind("pair_style", 0) == 0) c = "pair_style polyhedron";
-    if (c.rfind("pair_coeff", 0) == 0) c = "pair_coeff * * 1e6 0.3 0.6 0.3";
-  }
+  const std::string box = box_file("sph_kk_box.stl");
+  const KkScene sc = scene_under_pair_polyhedron("pair_coeff * * 1e6 0.3 0.6 0.3",
+                                                 "polyhedron_shape e ellipsoid 0.7 0.7 0.7");
   // with liquid bridges on the walls (V_b 5e-12: s_c 0.19 mm, F(0) 4.6x a sphere's weight)
   for (const std::string kw : {"", " bridge 5e-12 0.072 10"}) {
     const std::string args = box + " friction 0.5 restitution 0.5 move translate 0.05 0 0" + kw;
@@ -76,13 +91,8 @@ TEST(WallEllipsoidKokkos, SpheresByVolumeKkEqualsPlain)
 // with pair_coeff's 'ellipsoid k_n', alike in the plain and /kk styles
 TEST(WallEllipsoidKokkos, UnequalAxesUnderPairPolyhedronKkEqualsPlain)
 {
-  const std::string box = tmpdir() + "/ellp_kk_box.stl";
-  write_binary(box, closed_box(EB, 4));
-  KkScene sc = scene();
-  for (auto &c : sc.setup) {
-    if (c.rfind("pair_style", 0) == 0) c = "pair_style polyhedron";
-    if (c.rfind("pair_coeff", 0) == 0) c = "pair_coeff * * 1e6 0.3 0.6 0.3 ellipsoid 5e4";
-  }
+  const std::string box = box_file("ellp_kk_box.stl");
+  const KkScene sc = scene_under_pair_polyhedron("pair_coeff * * 1e6 0.3 0.6 0.3 ellipsoid 5e4");
   const std::string args = box + " friction 0.5 restitution 0.5 move translate 0.05 0 0";
   const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);
   kk_compare(sc, p, k, "ellipsoids under pair polyhedron");
