@@ -54,29 +54,17 @@ PairEllipsoid::~PairEllipsoid()
 {
   if (copymode) return;
   delete[] pvector;
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
-    memory->destroy(kn);
-    memory->destroy(restitution);
-    memory->destroy(friction);
-  }
+  if (allocated) destroy_arrays(setflag, cutsq, kn, restitution, friction);
 }
 
 void PairEllipsoid::allocate()
 {
   allocated = 1;
-  const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  memory->create(kn, n + 1, n + 1, "pair:kn");
-  memory->create(restitution, n + 1, n + 1, "pair:restitution");
-  memory->create(friction, n + 1, n + 1, "pair:friction");
-  for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++) {
-      setflag[i][j] = 0;
-      kn[i][j] = restitution[i][j] = friction[i][j] = 0.0;
-    }
+  create_per_type_pair(setflag, "setflag");
+  create_per_type_pair(cutsq, "cutsq");
+  create_per_type_pair(kn, "kn");
+  create_per_type_pair(restitution, "restitution");
+  create_per_type_pair(friction, "friction");
   allocate_rolling();
 }
 
@@ -205,16 +193,11 @@ void PairEllipsoid::init_style()
   if (use_history) setup_history_fix();
 
   // the law table: settings now, the type pairs' entries in init_one
-  const int nt = atom->ntypes + 1;
-  law_entries.assign((size_t) nt * nt, polydem::LawEntry<double>());
-  laws = polydem::law_table(law_entries.data(), atom->ntypes, nt * nt);
+  begin_law_table(overlap_warn);
   laws.kt_ratio = kt_ratio;
   laws.gt_ratio = gt_ratio;
   laws.overlap = overlap;
   laws.damping_mass = damping_mass;
-  laws.overlap_warn = overlap_warn;
-  laws.roll_kr = roll_kr;
-  laws.roll_eta = roll_eta;
   laws.nhist = nhistory;
 
   check_timestep();

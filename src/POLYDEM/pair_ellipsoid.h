@@ -44,10 +44,6 @@ class PairEllipsoid : public PairPolydem {
  protected:
   double **kn, **restitution;    // per type pair
   double **friction;             // per type pair: Coulomb mu (0: frictionless)
-  // the law table (polydem_law_table.h) of the contacts: settings from
-  // init_style, each type pair's entry from init_one (mixed coefficients)
-  std::vector<polydem::LawEntry<double>> law_entries;
-  polydem::LawTable<double> laws;
   double kt_ratio, gt_ratio;     // k_t / k_n, gamma_t / gamma_n (keyword tangential)
   int use_history;               // some mu > 0: per-pair tangential history
   double overlap_warn;           // warn for delta > overlap_warn * smallest semi-axis

@@ -67,11 +67,7 @@ PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nh
 PairPolydem::~PairPolydem()
 {
   if (copymode) return;
-  memory->destroy(rolling);
-  memory->destroy(cohesion);
-  memory->destroy(bridge_vol);
-  memory->destroy(bridge_gamma);
-  memory->destroy(bridge_theta);
+  destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta);
   modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
 }
 
@@ -81,21 +77,24 @@ PairPolydem::~PairPolydem()
 
 void PairPolydem::allocate_rolling()
 {
-  const int n = atom->ntypes;
-  memory->destroy(rolling);
-  memory->destroy(cohesion);
-  memory->destroy(bridge_vol);
-  memory->destroy(bridge_gamma);
-  memory->destroy(bridge_theta);
-  memory->create(rolling, n + 1, n + 1, "pair:rolling");
-  memory->create(cohesion, n + 1, n + 1, "pair:cohesion");
-  memory->create(bridge_vol, n + 1, n + 1, "pair:bridge_vol");
-  memory->create(bridge_gamma, n + 1, n + 1, "pair:bridge_gamma");
-  memory->create(bridge_theta, n + 1, n + 1, "pair:bridge_theta");
-  for (int i = 0; i <= n; i++)
-    for (int j = 0; j <= n; j++)
-      rolling[i][j] = cohesion[i][j] = bridge_vol[i][j] = bridge_gamma[i][j] =
-          bridge_theta[i][j] = 0.0;
+  destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta);
+  create_per_type_pair(rolling, "rolling");
+  create_per_type_pair(cohesion, "cohesion");
+  create_per_type_pair(bridge_vol, "bridge_vol");
+  create_per_type_pair(bridge_gamma, "bridge_gamma");
+  create_per_type_pair(bridge_theta, "bridge_theta");
+}
+
+// the law table (polydem_law_table.h) with the settings both styles have;
+// its type pairs' entries zero until init_one fills them
+void PairPolydem::begin_law_table(double overlap_warn)
+{
+  const int nt = atom->ntypes + 1;
+  law_entries.assign((size_t) nt * nt, polydem::LawEntry<double>());
+  laws = polydem::law_table(law_entries.data(), atom->ntypes, nt * nt);
+  laws.overlap_warn = overlap_warn;
+  laws.roll_kr = roll_kr;
+  laws.roll_eta = roll_eta;
 }
 
 int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge,

@@ -10,12 +10,16 @@
 #ifndef LMP_PAIR_POLYDEM_H
 #define LMP_PAIR_POLYDEM_H
 
+#include "atom.h"
+#include "memory.h"
 #include "pair.h"
 #include "polydem_contact_law.h"
+#include "polydem_law_table.h"
 #include "polydem_lammps_compat.h"
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -79,6 +83,10 @@ class PairPolydem : public Pair {
   // pair_style polyhedron): volume (0: none), surface tension, contact angle [deg]
   double **bridge_vol, **bridge_gamma, **bridge_theta;
   double roll_kr, roll_eta;
+  // the law table (polydem_law_table.h) of the contacts: settings from
+  // init_style, each type pair's entry from init_one (mixed coefficients)
+  std::vector<polydem::LawEntry<double>> law_entries;
+  polydem::LawTable<double> laws;
   class PolyShapeLibrary *avec;
   class FixDummy *fix_dummy;
   class FixNeighHistory *fix_history;
@@ -91,6 +99,23 @@ class PairPolydem : public Pair {
 
   virtual void allocate() = 0;
   void allocate_rolling();
+  void begin_law_table(double overlap_warn);
+  // a per-type array of ntypes + 1 zeros (a style's allocate()), named pair:NAME
+  template <class T> void create_per_type(T *&a, const char *name)
+  {
+    memory->create(a, atom->ntypes + 1, (std::string("pair:") + name).c_str());
+    for (int i = 0; i <= atom->ntypes; i++) a[i] = T(0);
+  }
+  // a per-type-pair array of (ntypes + 1)^2 zeros, named pair:NAME
+  template <class T> void create_per_type_pair(T **&a, const char *name)
+  {
+    const int n = atom->ntypes + 1;
+    memory->create(a, n, n, (std::string("pair:") + name).c_str());
+    for (int i = 0; i < n; i++)
+      for (int j = 0; j < n; j++) a[i][j] = T(0);
+  }
+  // memory->destroy of each array
+  template <class... A> void destroy_arrays(A *&...a) { (memory->destroy(a), ...); }
   // pair_coeff's trailing keywords 'rolling mu_r' and 'cohesion c' (each
   // default 0), 'bridge V_b gamma theta' where bridge is given and
   // 'ellipsoid k_n' where ellipsoid_kn is (else errors): the count of the

@@ -54,17 +54,9 @@ PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
 PairPolyhedron::~PairPolyhedron()
 {
   if (copymode) return;
-  if (allocated) {
-    memory->destroy(setflag);
-    memory->destroy(cutsq);
-    memory->destroy(youngs);
-    memory->destroy(poisson);
-    memory->destroy(matset);
-    memory->destroy(restitution);
-    memory->destroy(friction);
-    memory->destroy(ellipsoid_kn);
-    memory->destroy(pairset);
-  }
+  if (allocated)
+    destroy_arrays(setflag, cutsq, youngs, poisson, matset, restitution, friction, ellipsoid_kn,
+                   pairset);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -72,24 +64,15 @@ PairPolyhedron::~PairPolyhedron()
 void PairPolyhedron::allocate()
 {
   allocated = 1;
-  const int n = atom->ntypes;
-  memory->create(setflag, n + 1, n + 1, "pair:setflag");
-  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
-  memory->create(youngs, n + 1, "pair:youngs");
-  memory->create(poisson, n + 1, "pair:poisson");
-  memory->create(matset, n + 1, "pair:matset");
-  memory->create(restitution, n + 1, n + 1, "pair:restitution");
-  memory->create(friction, n + 1, n + 1, "pair:friction");
-  memory->create(ellipsoid_kn, n + 1, n + 1, "pair:ellipsoid_kn");
-  memory->create(pairset, n + 1, n + 1, "pair:pairset");
-  for (int i = 0; i <= n; i++) {
-    youngs[i] = poisson[i] = 0.0;
-    matset[i] = 0;
-    for (int j = 0; j <= n; j++) {
-      setflag[i][j] = pairset[i][j] = 0;
-      restitution[i][j] = friction[i][j] = ellipsoid_kn[i][j] = 0.0;
-    }
-  }
+  create_per_type_pair(setflag, "setflag");
+  create_per_type_pair(cutsq, "cutsq");
+  create_per_type(youngs, "youngs");
+  create_per_type(poisson, "poisson");
+  create_per_type(matset, "matset");
+  create_per_type_pair(restitution, "restitution");
+  create_per_type_pair(friction, "friction");
+  create_per_type_pair(ellipsoid_kn, "ellipsoid_kn");
+  create_per_type_pair(pairset, "pairset");
   allocate_rolling();
 }
 
@@ -270,14 +253,9 @@ void PairPolyhedron::init_style()
   dt = update->dt;
 
   // the law table: settings now, the type pairs' entries in init_one
-  const int nt = atom->ntypes + 1;
-  law_entries.assign((size_t) nt * nt, polydem::LawEntry<double>());
-  laws = polydem::law_table(law_entries.data(), atom->ntypes, nt * nt);
+  begin_law_table(overlap_warn);
   laws.core = core;
   laws.twist = twist;
-  laws.overlap_warn = overlap_warn;
-  laws.roll_kr = roll_kr;
-  laws.roll_eta = roll_eta;
   // the algebraic contact of ellipsoid pairs: pair_style ellipsoid's defaults
   laws.kt_ratio = polydem::ELLIPSOID_KT_RATIO;
   laws.gt_ratio = polydem::ELLIPSOID_GT_RATIO;

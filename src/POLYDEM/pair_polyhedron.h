@@ -58,10 +58,6 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
   // per type pair: k_n of the algebraic contact of two ellipsoids of which
   // one has unequal semi-axes (pair_coeff ... ellipsoid k_n; 0: none given)
   double **ellipsoid_kn;
-  // the law table (polydem_law_table.h) of the contacts: settings from
-  // init_style, each type pair's entry from init_one (mixed coefficients)
-  std::vector<polydem::LawEntry<double>> law_entries;
-  polydem::LawTable<double> laws;
   int twist;                   // torsional friction of the contact area (polydem_contact_law.h)
   int **pairset;               // explicit e, mu for an unlike pair
   double overlap_warn;         // warn for V > overlap_warn * smaller particle volume

@@ -53,10 +53,7 @@ template <class DeviceType> struct PolyKK {
 template <class DeviceType> struct PolyCandidateFunctor {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
-  typename AT::t_x_array_randomread x;
-  typename AT::t_float_1d_randomread radius;
-  typename AT::t_int_1d_randomread ilist, numneigh;
-  typename AT::t_neighbors_2d neighbors;
+  polydem_kk::SizeListViews<DeviceType> nl;
   typename AT::t_int_2d firsttouch;
   typename AT::t_float_2d firstshear;
   Kokkos::View<int *, DeviceType> count, offset;
@@ -69,15 +66,15 @@ template <class DeviceType> struct PolyCandidateFunctor {
 
   KOKKOS_INLINE_FUNCTION void operator()(const int ii) const
   {
-    const int i = ilist(ii);
-    const int jnum = numneigh(i);
-    const double xi = x(i, 0), yi = x(i, 1), zi = x(i, 2), ri = radius(i);
+    const int i = nl.ilist(ii);
+    const int jnum = nl.numneigh(i);
+    const double xi = nl.x(i, 0), yi = nl.x(i, 1), zi = nl.x(i, 2), ri = nl.radius(i);
     int n = 0;
     const int base = fill ? offset(ii) : 0;
     for (int jj = 0; jj < jnum; jj++) {
-      const int j = neighbors(i, jj) & NEIGHMASK;
-      const double delx = xi - x(j, 0), dely = yi - x(j, 1), delz = zi - x(j, 2);
-      const double radsum = ri + radius(j) + reach;
+      const int j = nl.neighbors(i, jj) & NEIGHMASK;
+      const double delx = xi - nl.x(j, 0), dely = yi - nl.x(j, 1), delz = zi - nl.x(j, 2);
+      const double radsum = ri + nl.radius(j) + reach;
       const double rsq = delx * delx + dely * dely + delz * delz;
       if (!fill && count_partners) {
         Kokkos::atomic_increment(&npartner(i));
@@ -271,11 +268,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
 
   PolyCandidateFunctor<DeviceType> cnt;
   cnt.fill = 0;
-  cnt.x = atomKK->k_x.view<DeviceType>();
-  cnt.radius = atomKK->k_radius.view<DeviceType>();
-  cnt.ilist = k_list->d_ilist;
-  cnt.numneigh = k_list->d_numneigh;
-  cnt.neighbors = k_list->d_neighbors;
+  cnt.nl.bind(k_list, atomKK);
   cnt.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
   cnt.firstshear = fix_historyKK->k_firstvalue.template view<DeviceType>();
   cnt.count = d_count;

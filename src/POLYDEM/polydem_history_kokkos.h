@@ -48,6 +48,25 @@ template <class DeviceType> struct HistoryMaxFunctor {
   KOKKOS_INLINE_FUNCTION void init(int &m) const { m = 0; }
 };
 
+// What a functor over a size neighbor list reads: the list, and the atoms'
+// positions and bounding radii on DeviceType (the caller syncs X_MASK |
+// RADIUS_MASK before bind)
+template <class DeviceType> struct SizeListViews {
+  typedef ArrayTypes<DeviceType> AT;
+  typename AT::t_x_array_randomread x;
+  typename AT::t_float_1d_randomread radius;
+  typename AT::t_int_1d_randomread ilist, numneigh;
+  typename AT::t_neighbors_2d neighbors;
+  void bind(NeighListKokkos<DeviceType> *list, AtomKokkos *akk)
+  {
+    x = akk->k_x.template view<DeviceType>();
+    radius = akk->k_radius.template view<DeviceType>();
+    ilist = list->d_ilist;
+    numneigh = list->d_numneigh;
+    neighbors = list->d_neighbors;
+  }
+};
+
 // Marks the pairs of a size neighbor list within their bounding radii plus
 // reach as history pairs (the bits LAMMPS's size lists set within the radii
 // alone), so that FixNeighHistoryKokkos keeps their flags and values: the
@@ -55,20 +74,18 @@ template <class DeviceType> struct HistoryMaxFunctor {
 // than some LAMMPS versions supported).
 template <class DeviceType> struct BridgeReachMarkFunctor {
   typedef DeviceType device_type;
-  typename ArrayTypes<DeviceType>::t_neighbors_2d neighbors;
-  typename ArrayTypes<DeviceType>::t_int_1d ilist, numneigh;
-  typename ArrayTypes<DeviceType>::t_x_array x;
-  typename ArrayTypes<DeviceType>::t_float_1d radius;
+  SizeListViews<DeviceType> nl;
   double reach;
   KOKKOS_INLINE_FUNCTION void operator()(const int ii) const
   {
-    const int i = ilist(ii);
-    const int n = numneigh(i);
+    const int i = nl.ilist(ii);
+    const int n = nl.numneigh(i);
     for (int jj = 0; jj < n; jj++) {
-      const int j = neighbors(i, jj) & NEIGHMASK;
-      const double dx = x(i, 0) - x(j, 0), dy = x(i, 1) - x(j, 1), dz = x(i, 2) - x(j, 2);
-      const double rs = radius(i) + radius(j) + reach;
-      if (dx * dx + dy * dy + dz * dz < rs * rs) neighbors(i, jj) = j | (3 << SBBITS);
+      const int j = nl.neighbors(i, jj) & NEIGHMASK;
+      const double dx = nl.x(i, 0) - nl.x(j, 0), dy = nl.x(i, 1) - nl.x(j, 1),
+                   dz = nl.x(i, 2) - nl.x(j, 2);
+      const double rs = nl.radius(i) + nl.radius(j) + reach;
+      if (dx * dx + dy * dy + dz * dz < rs * rs) nl.neighbors(i, jj) = j | (3 << SBBITS);
     }
   }
 };
@@ -137,11 +154,7 @@ class FixNeighHistoryPolyhedronKokkos :
       AtomKokkos *akk = (AtomKokkos *) this->atom;
       akk->sync(ExecutionSpaceFromDevice<DeviceType>::space, X_MASK | RADIUS_MASK);
       BridgeReachMarkFunctor<DeviceType> m;
-      m.neighbors = list->d_neighbors;
-      m.ilist = list->d_ilist;
-      m.numneigh = list->d_numneigh;
-      m.x = akk->k_x.template view<DeviceType>();
-      m.radius = akk->k_radius.template view<DeviceType>();
+      m.nl.bind(list, akk);
       m.reach = reach;
       Kokkos::parallel_for(list->inum, m);
     }

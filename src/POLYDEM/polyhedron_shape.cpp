@@ -50,15 +50,9 @@ void PolyhedronShape::command(int narg, char **arg)
     std::string err, record;
     auto t = polydem::shape_ellipsoid(ax[0], ax[1], ax[2], id, record, err);
     if (!t) error->all(FLERR, "polyhedron_shape: {}", err);
-    const auto v = t->view();
-    const int index = avec->add_shape(id, std::move(t), record);
-    if (comm->me == 0)
-      utils::logmesg(lmp,
-                     "polyhedron_shape {} (index {}): ellipsoid, semi-axes {:.10g} {:.10g} "
-                     "{:.10g}, volume {:.10g}, principal moments/density {:.10g} {:.10g} "
-                     "{:.10g}\n",
-                     id, index + 1, ax[0], ax[1], ax[2], v.volume, v.inertia[0], v.inertia[1],
-                     v.inertia[2]);
+    const std::string what = fmt::format("ellipsoid, semi-axes {:.10g} {:.10g} {:.10g}, volume "
+                                         "{:.10g}", ax[0], ax[1], ax[2], t->view().volume);
+    add(id, std::move(t), record, what);
     return;
   }
 
@@ -86,14 +80,24 @@ void PolyhedronShape::command(int narg, char **arg)
     if (comm->me == 0) error->warning(FLERR, "polyhedron_shape: {}", w);
 
   const auto v = t->view();
+  add(id, std::move(t), record,
+      fmt::format("{} vertices, {} faces, {} edges, volume {:.10g}, bounding radius {:.10g}",
+                  v.nverts, v.nfaces, v.nedges, v.volume, v.radius));
+}
+
+// registers the template t as shape `id` and logs its index, `what` (its
+// description) and its principal moments
+void PolyhedronShape::add(const std::string &id, std::unique_ptr<polydem::PolyShapeTemplate> t,
+                          const std::string &record, const std::string &what)
+{
+  const auto v = t->view();
+  auto avec = PolyShapeLibrary::of(lmp, "polyhedron_shape");
   const int index = avec->add_shape(id, std::move(t), record);
   if (comm->me == 0)
     utils::logmesg(lmp,
-                   "polyhedron_shape {} (index {}): {} vertices, {} faces, {} edges, "
-                   "volume {:.10g}, bounding radius {:.10g}, principal moments/density "
-                   "{:.10g} {:.10g} {:.10g}\n",
-                   id, index + 1, v.nverts, v.nfaces, v.nedges, v.volume, v.radius,
-                   v.inertia[0], v.inertia[1], v.inertia[2]);
+                   "polyhedron_shape {} (index {}): {}, principal moments/density {:.10g} "
+                   "{:.10g} {:.10g}\n",
+                   id, index + 1, what, v.inertia[0], v.inertia[1], v.inertia[2]);
 }
 
 /* ----------------------------------------------------------------------
@@ -167,23 +171,15 @@ void PolyhedronShape::add_composite(const std::string &id,
                                     std::unique_ptr<polydem::PolyShapeTemplate> t,
                                     const std::string &record, const std::string &how)
 {
-  auto avec = PolyShapeLibrary::of(lmp, "polyhedron_shape");
   for (const auto &w : t->warnings())
     if (comm->me == 0) error->warning(FLERR, "polyhedron_shape: {}", w);
   const auto v = t->view();
-  const double frac = t->union_fraction();
-  const int ninput = (int) t->input_parts().size();
-  const bool decomposed = t->decomposed();
   const auto c = t->input_centroid();
-  const int index = avec->add_shape(id, std::move(t), record);
-  if (comm->me == 0)
-    utils::logmesg(lmp,
-                   "polyhedron_shape {} (index {}): composite of {} parts{}, volume {:.10g} "
-                   "({:.10g} of the parts' sum), {} contact parts{}, centroid {:.10g} {:.10g} "
-                   "{:.10g}, bounding radius {:.10g}, principal moments/density {:.10g} "
-                   "{:.10g} {:.10g}\n",
-                   id, index + 1, ninput, how, v.volume, frac, v.nparts,
-                   decomposed ? " (the convex pieces of the overlapping parts' union)" : "",
-                   c[0], c[1], c[2], v.radius,
-                   v.inertia[0], v.inertia[1], v.inertia[2]);
+  const std::string what = fmt::format(
+      "composite of {} parts{}, volume {:.10g} ({:.10g} of the parts' sum), {} contact "
+      "parts{}, centroid {:.10g} {:.10g} {:.10g}, bounding radius {:.10g}",
+      t->input_parts().size(), how, v.volume, t->union_fraction(), v.nparts,
+      t->decomposed() ? " (the convex pieces of the overlapping parts' union)" : "", c[0], c[1],
+      c[2], v.radius);
+  add(id, std::move(t), record, what);
 }

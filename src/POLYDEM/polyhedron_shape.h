@@ -31,6 +31,8 @@ class PolyhedronShape : public Command {
 
  private:
   void composite(const std::string &id, int narg, char **arg);
+  void add(const std::string &id, std::unique_ptr<polydem::PolyShapeTemplate> t,
+           const std::string &record, const std::string &what);
   void add_composite(const std::string &id, std::unique_ptr<polydem::PolyShapeTemplate> t,
                      const std::string &record, const std::string &how);
 };

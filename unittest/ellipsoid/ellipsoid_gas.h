@@ -62,6 +62,19 @@ struct GasSpec {
   }
 };
 
+// a gas of n_side^3 grains at solid fraction phi in a cube of edge box,
+// velocity spread vrms, velocities from seed
+inline GasSpec gas(int n_side, double phi, double box, double vrms, unsigned seed = 1)
+{
+  GasSpec g;
+  g.n_side = n_side;
+  g.phi = phi;
+  g.box = box;
+  g.vrms = vrms;
+  g.seed = seed;
+  return g;
+}
+
 inline std::string write_gas(const std::string &file, const GasSpec &g)
 {
   int me = 0;

@@ -40,12 +40,7 @@ int me()
 // mu: "" (frictionless) or " 0.5" (pair_coeff friction, per-pair history)
 std::vector<std::string> setup(const std::string &overlap, const std::string &mu = "")
 {
-  polydem_test::GasSpec g;
-  g.n_side = 6;
-  g.phi = 0.1;
-  g.box = 0.75;
-  g.vrms = 5.0;
-  g.seed = 77;
+  const polydem_test::GasSpec g = polydem_test::gas(6, 0.1, 0.75, 5.0, 77);
   const std::string data =
       polydem_test::write_gas(::testing::TempDir() + "polydem_ellipsoid_kk.data", g);
   const double b = g.b();

@@ -81,10 +81,7 @@ TEST(EllipsoidTemplate, RestartIsExact)
  for (const std::string mu : {"", " 0.4"}) {
   const std::string file = ::testing::TempDir() + "polydem_ellipsoid.restart";
   const std::string data = ::testing::TempDir() + "polydem_ellipsoid_restart.data";
-  polydem_test::GasSpec g;
-  g.n_side = 3;
-  g.phi = 0.2;
-  g.vrms = 2.0;
+  const polydem_test::GasSpec g = polydem_test::gas(3, 0.2, 1.0, 2.0);
   polydem_test::write_gas(data, g);
   auto setup = [&](Lmp &l) {
     l.cmds({"pair_style ellipsoid", "pair_coeff * * 1e6 0.9" + mu, "neighbor 0.01 bin",
@@ -249,11 +246,8 @@ struct GasRun {
 GasRun elastic_gas(const std::string &overlap, int refine)
 {
   const std::string data = ::testing::TempDir() + "polydem_ellipsoid_gas.data";
-  polydem_test::GasSpec g;
-  g.n_side = 4;
-  g.phi = 0.1;    // lattice spacing > 2a: no initial overlaps
-  g.box = 0.5;
-  g.vrms = 5.0;
+  // phi 0.1: lattice spacing > 2a, no initial overlaps
+  const polydem_test::GasSpec g = polydem_test::gas(4, 0.1, 0.5, 5.0);
   polydem_test::write_gas(data, g);
   const double b = g.b(), kn = 1e8;
   const double m = g.mass();
@@ -309,11 +303,7 @@ TEST(PairEllipsoid, ElasticGasConservesEnergyAndMomentum)
 TEST(PairEllipsoid, PolyhedronStyleRunsEllipsoidPairsAlike)
 {
   const std::string data = ::testing::TempDir() + "polydem_ellipsoid_alike.data";
-  polydem_test::GasSpec g;
-  g.n_side = 4;
-  g.phi = 0.2;
-  g.box = 0.5;
-  g.vrms = 3.0;
+  const polydem_test::GasSpec g = polydem_test::gas(4, 0.2, 0.5, 3.0);
   polydem_test::write_gas(data, g);
   const double b = g.b(), kn = 1e6;
   const double m = g.mass();
@@ -741,12 +731,7 @@ TEST(PairEllipsoid, FrictionConservesMomentaAndDissipates)
 TEST(PairEllipsoid, HomogeneousCoolingShort)
 {
   const std::string data = ::testing::TempDir() + "polydem_ellipsoid_hcs.data";
-  polydem_test::GasSpec g;
-  g.n_side = 8;
-  g.phi = 0.058;
-  g.box = 1.0;
-  g.vrms = 8.0;
-  g.seed = 4928;
+  const polydem_test::GasSpec g = polydem_test::gas(8, 0.058, 1.0, 8.0, 4928);
   polydem_test::write_gas(data, g);
   const double b = g.b(), kn = 1e8, en = 0.9;
   const double m = g.mass();

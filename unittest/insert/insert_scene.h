@@ -47,20 +47,27 @@ inline std::string container_file()
   return f;
 }
 
+// the box around the container above and three templates: d (dodecahedron),
+// c (catalyst cylinder), q (cube)
+inline std::vector<std::string> container_box()
+{
+  return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.021 0.021 -0.021 0.021 -0.001 0.07",
+          "create_box 1 box", "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
+          "polyhedron_shape c " + potentials() + "/catalyst_cylinder.shape",
+          "polyhedron_shape q " + potentials() + "/cube.shape"};
+}
+
 // Polyhedra poured at a rate into the container above, with contacts and
 // the mesh wall (or, contacts false, neither)
 inline std::vector<std::string> pour_scene(const std::string &stl, bool contacts = true)
 {
-  std::vector<std::string> c = {
-      "units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-      "comm_modify vel yes", "region box block -0.021 0.021 -0.021 0.021 -0.001 0.07",
-      "create_box 1 box", "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
-      "polyhedron_shape c " + potentials() + "/catalyst_cylinder.shape",
-      "polyhedron_shape q " + potentials() + "/cube.shape",
+  std::vector<std::string> c = container_box();
+  c.insert(c.end(), {
       "region feed block -0.02 0.02 -0.02 0.02 0.01 0.05",
       "fix ins all insert/polyhedron 400 4711 region feed per 40 every 100 density 2500 "
       "shape d 0.4 scale uniform 0.0012 0.0016 shape c 0.3 scale 0.7 shape q 0.3 scale 0.0025 "
-      "vel uniform -0.05 0.05 -0.05 0.05 -0.5 -0.3 omega constant 0 0 3"};
+      "vel uniform -0.05 0.05 -0.05 0.05 -0.5 -0.3 omega constant 0 0 3"});
   if (contacts) c.insert(c.end(), {"pair_style polyhedron", "pair_coeff * * 1.0e7 0.3 0.5 0.5"});
   c.insert(c.end(), {"neighbor 0.001 bin", "neigh_modify every 1 delay 0 check yes",
                      "fix nve all nve/polyhedron", "fix g all gravity 9.81 vector 0 0 -1"});

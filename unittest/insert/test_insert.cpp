@@ -300,12 +300,8 @@ TEST(Insert, DenseRateFillOfAMeshContainer)
 {
   Lmp l;
   const std::string stl = container_file();
-  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-          "comm_modify vel yes", "region box block -0.021 0.021 -0.021 0.021 -0.001 0.07",
-          "create_box 1 box", "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
-          "polyhedron_shape c " + potentials() + "/catalyst_cylinder.shape",
-          "polyhedron_shape q " + potentials() + "/cube.shape",
-          "region feed block -0.0205 0.0205 -0.0205 0.0205 -0.0005 0.06",
+  l.cmds(container_box());
+  l.cmds({"region feed block -0.0205 0.0205 -0.0205 0.0205 -0.0005 0.06",
           "fix ins all insert/polyhedron 5000 31 region feed per 1250 every 100 density 2500 "
           "shape d 0.4 scale uniform 0.0006 0.0009 shape c 0.3 scale 0.3 shape q 0.3 scale 0.0014",
           "pair_style polyhedron", "pair_coeff * * 1.0e7 0.3 0.5 0.5", "neighbor 0.0005 bin",
@@ -374,29 +370,26 @@ TEST(Insert, MovingRegionsAreFollowed)
 // and a mass rate within 1 %.
 TEST(Insert, ScheduleCountsAndMassFlow)
 {
-  {
+  // the atoms after each of n insertions `every` steps of 1e-5 s apart by
+  // the fix command `ins` in mixed_box()
+  auto counts = [](const std::string &ins, int every, int n) {
     Lmp l;
     l.cmds(mixed_box());
-    l.cmds({"fix ins all insert/polyhedron 1000 5 region box per 7 every 20 density 1000 "
-            "all_in no shape d 1 scale 0.001",
-            "fix nve all nve/polyhedron", "timestep 1e-5"});
-    for (int k = 0; k < 5; k++) {
-      l.cmd(k == 0 ? "run 0" : "run 20");
-      EXPECT_EQ(l.lmp->atom->natoms, 7 * (k + 1));
+    l.cmds({ins, "fix nve all nve/polyhedron", "timestep 1e-5"});
+    std::vector<long long> c;
+    for (int k = 0; k < n; k++) {
+      l.cmd(k == 0 ? "run 0" : "run " + std::to_string(every));
+      c.push_back((long long) l.lmp->atom->natoms);
     }
-  }
-  {
-    // 3.3e4 particles/s, every 30 steps of 1e-5 s: 9.9 per insertion
-    Lmp l;
-    l.cmds(mixed_box());
-    l.cmds({"fix ins all insert/polyhedron 1000 5 region box rate 33000 every 30 density 1000 "
-            "all_in no shape d 1 scale 0.001",
-            "fix nve all nve/polyhedron", "timestep 1e-5"});
-    for (int k = 0; k < 6; k++) {
-      l.cmd(k == 0 ? "run 0" : "run 30");
-      EXPECT_EQ(l.lmp->atom->natoms, std::llround(33000 * (k + 1) * 30 * 1e-5));
-    }
-  }
+    return c;
+  };
+  const auto per = counts("fix ins all insert/polyhedron 1000 5 region box per 7 every 20 "
+                          "density 1000 all_in no shape d 1 scale 0.001", 20, 5);
+  for (int k = 0; k < 5; k++) EXPECT_EQ(per[k], 7 * (k + 1));
+  // 3.3e4 particles/s, every 30 steps of 1e-5 s: 9.9 per insertion
+  const auto rate = counts("fix ins all insert/polyhedron 1000 5 region box rate 33000 every 30 "
+                           "density 1000 all_in no shape d 1 scale 0.001", 30, 6);
+  for (int k = 0; k < 6; k++) EXPECT_EQ(rate[k], std::llround(33000 * (k + 1) * 30 * 1e-5));
   {
     // mass rate: 0.02 kg/s of a mixture with scale distributions
     Lmp l;

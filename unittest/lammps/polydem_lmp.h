@@ -50,6 +50,22 @@ inline std::vector<std::string> unit_box(int ntypes, const std::vector<std::stri
   return c;
 }
 
+// two frictionless elastic cubes of edge a (density 2000, E), the second
+// at (a - delta, dy, 0): a face-to-face overlap of a (a - dy) delta; the
+// commands up to the integrator (pair_style polyhedron core `core`)
+inline std::vector<std::string> cube_faces(double a, double delta, double dy, double E,
+                                           const std::string &core)
+{
+  return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
+          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
+          "create_atoms 1 single 0 0 0",
+          "create_atoms 1 single " + num(a - delta) + " " + num(dy) + " 0",
+          "polyhedron_set group all scale " + num(a) + " density 2000",
+          "pair_style polyhedron core " + core, "pair_coeff * * " + num(E) + " 0.3 1.0 0.0",
+          "neighbor 0.001 bin", "fix 1 all nve/polyhedron"};
+}
+
 inline std::string read_text(const std::string &path)
 {
   std::ifstream in(path);

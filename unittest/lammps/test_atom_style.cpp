@@ -106,6 +106,20 @@ VtkFile read_vtk(const std::string &path)
   return v;
 }
 
+// one grain of the template `id` (potentials/FILE) at `at` in the region
+// block `box` (xlo xhi ylo yhi zlo zhi), boundaries fixed
+std::vector<std::string> one_grain(const std::string &box, const std::string &id,
+                                   const std::string &file, const std::string &at)
+{
+  return {"units si",
+          "atom_style polyhedron",
+          "boundary f f f",
+          "region box block " + box,
+          "create_box 1 box",
+          "polyhedron_shape " + id + " " + potentials() + "/" + file,
+          "create_atoms 1 single " + at};
+}
+
 }    // namespace
 
 // Free fall under fix gravity: velocity Verlet is exact for a constant force,
@@ -113,12 +127,10 @@ VtkFile read_vtk(const std::string &path)
 TEST(AtomStyle, FreeFallMatchesAnalytic)
 {
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "boundary f f f",
-          "region box block -1 1 -1 1 -10 10", "create_box 1 box",
-          "polyhedron_shape d " + potentials() + "/dodecahedron.shape",
-          "create_atoms 1 single 0.1 0.2 5.0", "polyhedron_set atom 1 scale 0.01 density 2500",
-          "velocity all set 0.5 0 2.0", "fix 1 all nve/polyhedron",
-          "fix 2 all gravity 9.81 vector 0 0 -1", "timestep 1e-4", "run 10000"});
+  l.cmds(one_grain("-1 1 -1 1 -10 10", "d", "dodecahedron.shape", "0.1 0.2 5.0"));
+  l.cmds({"polyhedron_set atom 1 scale 0.01 density 2500", "velocity all set 0.5 0 2.0",
+          "fix 1 all nve/polyhedron", "fix 2 all gravity 9.81 vector 0 0 -1", "timestep 1e-4",
+          "run 10000"});
   auto s = l.local_state().at(1);
   const double t = 1.0;
   EXPECT_NEAR(s.x[2], 5.0 + 2.0 * t - 0.5 * 9.81 * t * t, 1e-12 * 5.0);
@@ -132,10 +144,8 @@ TEST(AtomStyle, FreeFallMatchesAnalytic)
 TEST(AtomStyle, TorqueFreeGrainFollowsKernel)
 {
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "boundary f f f",
-          "region box block -1 1 -1 1 -1 1", "create_box 1 box",
-          "polyhedron_shape c " + potentials() + "/mineral18.shape",
-          "create_atoms 1 single 0 0 0", "polyhedron_set atom 1 density 2500 quat 1 2 3 40",
+  l.cmds(one_grain("-1 1 -1 1 -1 1", "c", "mineral18.shape", "0 0 0"));
+  l.cmds({"polyhedron_set atom 1 density 2500 quat 1 2 3 40",
           "polyhedron_set atom 1 omega 0.5 30.0 0.4", "fix 1 all nve/polyhedron",
           "compute er all erotate/polyhedron", "thermo_style custom step c_er",
           "timestep 1e-4", "run 0"});
@@ -481,9 +491,7 @@ TEST(AtomStyle, TwoDimensionsRefused)
 TEST(AtomStyle, MassMustBeNormal)
 {
   auto one = [](Lmp &l) {
-    l.cmds({"units si", "atom_style polyhedron",
-            "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box",
-            "polyhedron_shape c " + potentials() + "/cube.shape", "create_atoms 1 single 0 0 0"});
+    l.cmds(one_grain("-0.05 0.05 -0.05 0.05 -0.05 0.05", "c", "cube.shape", "0 0 0"));
   };
   for (const char *kw : {"density 1e308", "scale 1e-300", "density 1e-320", "mass 1e-320",
                          "scale 1e-100 density 1"}) {

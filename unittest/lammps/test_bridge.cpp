@@ -131,6 +131,22 @@ BridgeEnergy track_bridge_energy(Lmp &l, int chunks, Energy energy, Done done)
   return r;
 }
 
+// the same until the bodies are 1.2 s_c apart: gap() their distance
+// across the bridge; the last gap in .gap
+struct BridgeEnergyApart : BridgeEnergy {
+  double gap = 0.0;
+};
+template <class Energy, class Gap>
+BridgeEnergyApart track_bridge_until_apart(Lmp &l, int chunks, Energy energy, Gap gap)
+{
+  BridgeEnergyApart r;
+  static_cast<BridgeEnergy &>(r) = track_bridge_energy(l, chunks, energy, [&](double) {
+    r.gap = gap();
+    return r.gap > 1.2 * SC;
+  });
+  return r;
+}
+
 // positions, velocities and spins of atoms 1 and 2
 void two_body_state(Lmp &l, double out[6][3])
 {
@@ -235,14 +251,11 @@ TEST(Bridge, CollisionLosesTheBridgeEnergy)
   };
   const double K0 = kinetic();
   const double U0 = willett_energy(0.0);
-  double gap = 0.0;
-  const BridgeEnergy b = track_bridge_energy(l, 1000, kinetic, [&](double) {
-    gap = a->x[a->map(2)][0] - a->x[a->map(1)][0] - R1 - R2;
-    return gap > 1.2 * SC;
-  });
+  const auto b = track_bridge_until_apart(
+      l, 1000, kinetic, [&] { return a->x[a->map(2)][0] - a->x[a->map(1)][0] - R1 - R2; });
   const double E_formed = b.E_formed, dev = b.dev;
   ASSERT_TRUE(b.formed);
-  ASSERT_GT(gap, SC) << "the spheres did not separate";
+  ASSERT_GT(b.gap, SC) << "the spheres did not separate";
   const double K1 = kinetic();
   std::printf("[ bridge   ] collision: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, |U(0)| %.9e J "
               "(ratio %.8f); energy from formation on constant to %.3g J\n", K0, K1, K0 - K1,
@@ -340,14 +353,11 @@ TEST(Bridge, SphereOnAPolyhedronKeepsTheEnergy)
   auto energy = [&]() { return two_body_energy(l); };
   const double K0 = energy();
   const double U0 = willett_R_energy(0.0, 2.0 * R1);
-  double gap = 0.0;
-  const BridgeEnergy b = track_bridge_energy(l, 2000, energy, [&](double) {
-    gap = a->x[a->map(1)][2] - a->x[a->map(2)][2] - h - R1;
-    return gap > 1.2 * SC;
-  });
+  const auto b = track_bridge_until_apart(
+      l, 2000, energy, [&] { return a->x[a->map(1)][2] - a->x[a->map(2)][2] - h - R1; });
   const double E_formed = b.E_formed, dev = b.dev;
   ASSERT_TRUE(b.formed);
-  ASSERT_GT(gap, SC) << "the sphere did not leave";
+  ASSERT_GT(b.gap, SC) << "the sphere did not leave";
   const double K1 = energy();
   std::printf("[ bridge   ] sphere on a cube: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, |U(0)| %.9e J, "
               "cube spin energy %.3g J; energy from formation on constant to %.3g J\n", K0, K1,

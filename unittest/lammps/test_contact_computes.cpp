@@ -87,14 +87,8 @@ void face_to_face(const std::vector<std::string> &extra)
 {
   const double a = 0.01, delta = 2e-4, dy = 3e-3, E = 5e7;
   Lmp l(extra);
-  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-          "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
-          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
-          "create_atoms 1 single 0 0 0",
-          "create_atoms 1 single " + num(a - delta) + " " + num(dy) + " 0",
-          "polyhedron_set group all scale " + num(a) + " density 2000",
-          "pair_style polyhedron core 0", "pair_coeff * * " + num(E) + " 0.3 1.0 0.0",
-          "neighbor 0.001 bin", "fix 1 all nve/polyhedron", "group one id 1",
+  l.cmds(polydem_test::cube_faces(a, delta, dy, E, "0"));
+  l.cmds({"group one id 1",
           std::string("compute cl all contact/polyhedron/local ") + COLUMNS,
           std::string("compute cl1 one contact/polyhedron/local ") + COLUMNS,
           "compute cs all contact/polyhedron", "compute cs1 one contact/polyhedron",

@@ -105,18 +105,26 @@ std::vector<double> gather(Lmp &l)
   return out;
 }
 
+// |a - b|^2 and |b|^2 of the 3-vectors at field offset off of record r
+std::pair<double, double> diff2_norm2(const std::vector<double> &a, const std::vector<double> &b,
+                                      size_t r, int off)
+{
+  double d2 = 0.0, b2 = 0.0;
+  for (int k = 0; k < 3; k++) {
+    const double d = a[r + off + k] - b[r + off + k];
+    d2 += d * d;
+    b2 += b[r + off + k] * b[r + off + k];
+  }
+  return {d2, b2};
+}
+
 // max over atoms of |a - b| (3-vector at field offset off) divided by the
 // largest |b| of that field over all atoms
 double normwise(const std::vector<double> &a, const std::vector<double> &b, int off)
 {
   double dmax = 0.0, bmax = 0.0;
   for (size_t r = 0; r < b.size(); r += REC) {
-    double d2 = 0.0, b2 = 0.0;
-    for (int k = 0; k < 3; k++) {
-      const double d = a[r + off + k] - b[r + off + k];
-      d2 += d * d;
-      b2 += b[r + off + k] * b[r + off + k];
-    }
+    const auto [d2, b2] = diff2_norm2(a, b, r, off);
     dmax = std::max(dmax, std::sqrt(d2));
     bmax = std::max(bmax, std::sqrt(b2));
   }
@@ -127,19 +135,11 @@ double normwise(const std::vector<double> &a, const std::vector<double> &b, int 
 double peratom(const std::vector<double> &a, const std::vector<double> &b, int off)
 {
   double bmax = 0.0;
-  for (size_t r = 0; r < b.size(); r += REC) {
-    double b2 = 0.0;
-    for (int k = 0; k < 3; k++) b2 += b[r + off + k] * b[r + off + k];
-    bmax = std::max(bmax, std::sqrt(b2));
-  }
+  for (size_t r = 0; r < b.size(); r += REC)
+    bmax = std::max(bmax, std::sqrt(diff2_norm2(a, b, r, off).second));
   double worst = 0.0;
   for (size_t r = 0; r < b.size(); r += REC) {
-    double d2 = 0.0, b2 = 0.0;
-    for (int k = 0; k < 3; k++) {
-      const double d = a[r + off + k] - b[r + off + k];
-      d2 += d * d;
-      b2 += b[r + off + k] * b[r + off + k];
-    }
+    const auto [d2, b2] = diff2_norm2(a, b, r, off);
     if (std::sqrt(b2) > 1e-6 * bmax) worst = std::max(worst, std::sqrt(d2 / b2));
   }
   return worst;

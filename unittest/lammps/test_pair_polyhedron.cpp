@@ -232,15 +232,8 @@ FaceCase face_to_face(double core)
 {
   const double a = 0.01, delta = 2e-4, dy = 3e-3, E = 5e7;
   Lmp l;
-  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-          "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
-          "create_box 1 box", "polyhedron_shape c " + potentials() + "/cube.shape",
-          "create_atoms 1 single 0 0 0",
-          "create_atoms 1 single " + num(a - delta) + " " + num(dy) + " 0",
-          "polyhedron_set group all scale " + num(a) + " density 2000",
-          "pair_style polyhedron core " + num(core), "pair_coeff * * " + num(E) + " 0.3 1.0 0.0",
-          "neighbor 0.001 bin", "fix 1 all nve/polyhedron", "thermo_style custom step pe",
-          "run 0"});
+  l.cmds(polydem_test::cube_faces(a, delta, dy, E, num(core)));
+  l.cmds({"thermo_style custom step pe", "run 0"});
   const double A = a * (a - dy), V = A * delta;
   const double R = a * std::cbrt(3.0 / (4.0 * M_PI)), K = 2.0 * E / R;
   const double V0 = core * a * a * a;
