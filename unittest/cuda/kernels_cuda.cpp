@@ -191,6 +191,18 @@ template <typename T, typename M> struct Templates {
   Kokkos::View<T *, M> verts, planes;
   Kokkos::View<int *, M> face_start, face_verts, edges, dual;
   Kokkos::View<ShapeView<T> *, M> views;
+  // the arrays of n templates of nv vertex and np plane values, nfs face
+  // starts, nfv face vertices, ne edge and nd dual/adjacency values (host)
+  void allocate(int n, size_t nv, size_t np, size_t nfs, size_t nfv, size_t ne, size_t nd)
+  {
+    verts = Kokkos::View<T *, M>("verts", nv);
+    planes = Kokkos::View<T *, M>("planes", np);
+    face_start = Kokkos::View<int *, M>("face_start", nfs);
+    face_verts = Kokkos::View<int *, M>("face_verts", nfv);
+    edges = Kokkos::View<int *, M>("edges", ne);
+    dual = Kokkos::View<int *, M>("dual", std::max<size_t>(nd, 1));
+    views = Kokkos::View<ShapeView<T> *, M>("views", n);
+  }
 };
 
 constexpr int MF = MAX_TEMPLATE_FACES, ME = 384;
@@ -215,20 +227,8 @@ template <typename T> struct DeviceTemplates {
       ne += 2 * s.nedges;
       nd += dual_seed_ints(s) + vertex_adjacency_ints(s);
     }
-    h.verts = Kokkos::View<T *, HostM>("verts", nv);
-    h.planes = Kokkos::View<T *, HostM>("planes", np);
-    h.face_start = Kokkos::View<int *, HostM>("face_start", nfs);
-    h.face_verts = Kokkos::View<int *, HostM>("face_verts", nfv);
-    h.edges = Kokkos::View<int *, HostM>("edges", ne);
-    h.dual = Kokkos::View<int *, HostM>("dual", std::max<size_t>(nd, 1));
-    h.views = Kokkos::View<ShapeView<T> *, HostM>("views", n);
-    d.verts = Kokkos::View<T *, Mem>("verts", nv);
-    d.planes = Kokkos::View<T *, Mem>("planes", np);
-    d.face_start = Kokkos::View<int *, Mem>("face_start", nfs);
-    d.face_verts = Kokkos::View<int *, Mem>("face_verts", nfv);
-    d.edges = Kokkos::View<int *, Mem>("edges", ne);
-    d.dual = Kokkos::View<int *, Mem>("dual", std::max<size_t>(nd, 1));
-    d.views = Kokkos::View<ShapeView<T> *, Mem>("views", n);
+    h.allocate(n, nv, np, nfs, nfv, ne, nd);
+    d.allocate(n, nv, np, nfs, nfv, ne, nd);
     auto dviews = Kokkos::create_mirror_view(d.views);
     size_t ov = 0, op = 0, ofs = 0, ofv = 0, oe = 0, od = 0;
     for (int i = 0; i < n; ++i) {

@@ -27,8 +27,7 @@ using polydem_test::pair_contact_time;
 
 namespace {
 
-const std::vector<std::string> KK =
-    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+const std::vector<std::string> KK = polydem_test::kk_styles();
 
 int me()
 {

@@ -35,6 +35,19 @@ std::vector<std::string> box_cmds()
           "comm_modify vel yes", "region box block 0 1 0 1 0 1", "create_box 1 box"};
 }
 
+// box_cmds() and two ellipsoids of semi-axes (a, b, c), template e, at x1
+// and x2 ("x y z"), density rho
+std::vector<std::string> two_ellipsoids(double a, double b, double c, const std::string &x1,
+                                        const std::string &x2, double rho)
+{
+  std::vector<std::string> cmds = box_cmds();
+  cmds.insert(cmds.end(),
+              {"polyhedron_shape e ellipsoid " + num(a) + " " + num(b) + " " + num(c),
+               "create_atoms 1 single " + x1, "create_atoms 1 single " + x2,
+               "polyhedron_set group all density " + num(rho)});
+  return cmds;
+}
+
 double total_energy(Lmp &l)
 {
   return l.thermo("c_kt") + l.thermo("c_er") + l.thermo("pe");
@@ -129,14 +142,11 @@ TEST(PairEllipsoid, RestitutionOfSpheres)
 {
   for (double e : {1.0, 0.9, 0.5}) {
     Lmp l;
-    l.cmds(box_cmds());
     const double r = 0.02, rho = 2000.0, kn = 1e6;
     const double m = ellipsoid_mass(rho, r, r, r);
     const double tc = pair_contact_time(m, kn);
-    l.cmds({"polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
-            "create_atoms 1 single 0.45 0.5 0.5", "create_atoms 1 single 0.55 0.5 0.5",
-            "polyhedron_set group all density " + num(rho),
-            "polyhedron_set atom 2 quat 1 2 3 40", "velocity all set 0 0 0",
+    l.cmds(two_ellipsoids(r, r, r, "0.45 0.5 0.5", "0.55 0.5 0.5", rho));
+    l.cmds({"polyhedron_set atom 2 quat 1 2 3 40", "velocity all set 0 0 0",
             "set atom 1 vx 1.0", "set atom 2 vx -1.0", "pair_style ellipsoid",
             "pair_coeff * * " + num(kn) + " " + num(e), "neighbor 0.005 bin",
             "fix 1 all nve/polyhedron", "timestep " + num(tc / 50.0), "run 3000"});
@@ -162,13 +172,11 @@ namespace {
 double eccentric_restitution(const std::string &damping, double e)
 {
   Lmp l;
-  l.cmds(box_cmds());
   const double a = 0.03, b = 0.01, rho = 2000.0, kn = 1e6;
   const double m = ellipsoid_mass(rho, a, b, b);
   const double tc = pair_contact_time(m, kn);
-  l.cmds({"polyhedron_shape e ellipsoid " + num(a) + " " + num(b) + " " + num(b),
-          "create_atoms 1 single 0.5 0.5 0.5", "create_atoms 1 single 0.519 0.52 0.5",
-          "polyhedron_set group all density " + num(rho), "polyhedron_set atom 1 quat 0 0 1 90",
+  l.cmds(two_ellipsoids(a, b, b, "0.5 0.5 0.5", "0.519 0.52 0.5", rho));
+  l.cmds({"polyhedron_set atom 1 quat 0 0 1 90",
           "polyhedron_set atom 2 quat 0 1 0 90", "velocity all set 0 0 0", "set atom 2 vx -1.0",
           "pair_style ellipsoid damping " + damping, "pair_coeff * * " + num(kn) + " " + num(e),
           "neighbor 0.005 bin", "fix 1 all nve/polyhedron", "thermo_style custom step pe",
@@ -342,52 +350,37 @@ TEST(PairEllipsoid, BadInput)
 {
   Lmp l;
   l.cmds(box_cmds());
-  EXPECT_NE(l.error_of("polyhedron_shape e ellipsoid 0.1 0 0.1").find("semi-axis b must be > 0"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("polyhedron_shape e ellipsoid 0.1 0.1 -2").find("semi-axis c must be > 0"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("polyhedron_shape e ellipsoid 0.1 0.1").find("expected 3 semi-axes"),
-            std::string::npos);
+  l.expect_error("polyhedron_shape e ellipsoid 0.1 0 0.1", "semi-axis b must be > 0");
+  l.expect_error("polyhedron_shape e ellipsoid 0.1 0.1 -2", "semi-axis c must be > 0");
+  l.expect_error("polyhedron_shape e ellipsoid 0.1 0.1", "expected 3 semi-axes");
   l.cmds({"polyhedron_shape e ellipsoid 0.03 0.02 0.02",
           "polyhedron_shape c " + polydem_test::potentials() + "/cube.shape",
           "create_atoms 1 single 0.5 0.5 0.5", "pair_style ellipsoid"});
-  EXPECT_NE(l.error_of("pair_coeff * * 1e6 0").find("restitution e must be in (0, 1]"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("pair_coeff * * 1e6 1.5").find("restitution e must be in (0, 1]"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("pair_coeff * * -1 0.5").find("stiffness kn must be > 0"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("pair_coeff * * 1e6").find("expected 'I J kn e [mu] [rolling mu_r] [cohesion Gamma]'"), std::string::npos);
-  EXPECT_NE(l.error_of("pair_coeff * * 1e6 0.9 -0.1").find("friction mu must be >= 0"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("pair_style ellipsoid tangential 0 0.5").find("tangential kt/kn must be > 0"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("pair_style ellipsoid tangential 0.3").find("tangential needs 2 values"),
-            std::string::npos);
+  l.expect_error("pair_coeff * * 1e6 0", "restitution e must be in (0, 1]");
+  l.expect_error("pair_coeff * * 1e6 1.5", "restitution e must be in (0, 1]");
+  l.expect_error("pair_coeff * * -1 0.5", "stiffness kn must be > 0");
+  l.expect_error("pair_coeff * * 1e6", "expected 'I J kn e [mu] [rolling mu_r] [cohesion Gamma]'");
+  l.expect_error("pair_coeff * * 1e6 0.9 -0.1", "friction mu must be >= 0");
+  l.expect_error("pair_style ellipsoid tangential 0 0.5", "tangential kt/kn must be > 0");
+  l.expect_error("pair_style ellipsoid tangential 0.3", "tangential needs 2 values");
   l.cmd("pair_style ellipsoid");
   l.cmds({"pair_coeff * * 1e6 0.9", "timestep 1e-5"});
   // an ellipsoid pair style with a polyhedron atom, and vice versa
   l.cmd("create_atoms 1 single 0.2 0.2 0.2");
   l.cmd("polyhedron_set atom 2 shape c");
-  EXPECT_NE(l.error_of("run 0").find("1 atoms have a polyhedron or composite shape (e.g. 'c')"),
-            std::string::npos);
+  l.expect_error("run 0", "1 atoms have a polyhedron or composite shape (e.g. 'c')");
   l.cmds({"polyhedron_set atom 2 shape e", "run 0", "pair_style polyhedron",
           "pair_coeff * * 1e7 0.3 0.9 0.0"});
-  EXPECT_NE(l.error_of("run 0").find("shape 'e' is an ellipsoid with unequal semi-axes"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("run 0").find("types 1 and 1 lack: add 'ellipsoid k_n'"),
-            std::string::npos);
+  l.expect_error("run 0", "shape 'e' is an ellipsoid with unequal semi-axes");
+  l.expect_error("run 0", "types 1 and 1 lack: add 'ellipsoid k_n'");
   // the stiffness of ellipsoid pairs (pair_style polyhedron only)
-  EXPECT_NE(l.error_of("pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid 0")
-                .find("ellipsoid stiffness k_n must be > 0, got '0'"),
-            std::string::npos);
-  EXPECT_NE(l.error_of("pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid").find("'ellipsoid' needs a value"),
-            std::string::npos);
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid 0",
+                 "ellipsoid stiffness k_n must be > 0, got '0'");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid", "'ellipsoid' needs a value");
   l.cmds({"pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid 1e6", "run 0"});
   l.cmds({"pair_style ellipsoid"});
-  EXPECT_NE(l.error_of("pair_coeff * * 1e6 0.9 ellipsoid 1e6")
-                .find("'ellipsoid k_n' is a keyword of pair_style polyhedron"),
-            std::string::npos);
+  l.expect_error("pair_coeff * * 1e6 0.9 ellipsoid 1e6",
+                 "'ellipsoid k_n' is a keyword of pair_style polyhedron");
 }
 
 // Friction (pair_coeff ... mu): two spheres (r = 2 cm) both spinning at
@@ -404,14 +397,11 @@ TEST(PairEllipsoid, BadInput)
 TEST(PairEllipsoid, FrictionSlidingImpactOfSpheres)
 {
   Lmp l;
-  l.cmds(box_cmds());
   const double r = 0.02, rho = 2000.0, kn = 1e6, mu = 0.1;
   const double m = ellipsoid_mass(rho, r, r, r);
   const double tc = pair_contact_time(m, kn);
-  l.cmds({"polyhedron_shape s ellipsoid " + num(r) + " " + num(r) + " " + num(r),
-          "create_atoms 1 single 0.45 0.5 0.5", "create_atoms 1 single 0.55 0.5 0.5",
-          "polyhedron_set group all density " + num(rho), "velocity all set 0 0 0",
-          "set atom 1 vx 1.0", "set atom 2 vx -1.0",
+  l.cmds(two_ellipsoids(r, r, r, "0.45 0.5 0.5", "0.55 0.5 0.5", rho));
+  l.cmds({"velocity all set 0 0 0", "set atom 1 vx 1.0", "set atom 2 vx -1.0",
           "set group all angmom 0 0 " + num(0.4 * m * r * r * 100.0), "pair_style ellipsoid",
           "pair_coeff * * " + num(kn) + " 1.0 " + num(mu), "neighbor 0.005 bin",
           "fix 1 all nve/polyhedron", "thermo_style custom step pe",

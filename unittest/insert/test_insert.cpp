@@ -170,6 +170,14 @@ std::vector<std::string> mixed_box(double side = 0.06)
           "polyhedron_shape e ellipsoid 1.0 0.6 0.4"};
 }
 
+// mixed_box() packed by the fix command `fix` (mode pack: all at run 0)
+void pack(Lmp &l, const std::string &fix)
+{
+  l.cmds(mixed_box());
+  l.cmd(fix);
+  l.cmd("run 0");
+}
+
 }    // namespace
 
 // Acceptance 1 (pack): 5,000 mixed dodecahedra, cylinders, cubes and
@@ -415,13 +423,11 @@ TEST(Insert, FractionsScalesAndOrientationsFollowTheRequest)
 {
   for (int mass = 0; mass < 2; mass++) {
     Lmp l;
-    l.cmds(mixed_box());
-    l.cmd(std::string("fix ins all insert/polyhedron 6000 77 region box mode pack density 2500 "
-                      "all_in no fractions ") +
-          (mass ? "mass" : "number") +
-          " shape d 0.5 scale uniform 0.0005 0.0007 shape q 0.3 scale 0.0008 "
-          "shape c 0.2 scale 0.12 density 1000");
-    l.cmd("run 0");
+    pack(l, std::string("fix ins all insert/polyhedron 6000 77 region box mode pack density 2500 "
+                        "all_in no fractions ") +
+                (mass ? "mass" : "number") +
+                " shape d 0.5 scale uniform 0.0005 0.0007 shape q 0.3 scale 0.0008 "
+                "shape c 0.2 scale 0.12 density 1000");
     ASSERT_EQ(l.lmp->atom->natoms, 6000);
     auto avec = PolyShapeLibrary::of(l.lmp, "test");
     const double f[3] = {0.5, 0.3, 0.2};
@@ -468,11 +474,9 @@ TEST(Insert, FixedAndAxisOrientations)
 {
   for (int axis = 0; axis < 2; axis++) {
     Lmp l;
-    l.cmds(mixed_box());
-    l.cmd(std::string("fix ins all insert/polyhedron 400 3 region box mode pack density 1000 "
-                      "all_in no shape c 1 scale 0.5 orient ") +
-          (axis ? "axis 1 0 0" : "fixed 1 0 0 30"));
-    l.cmd("run 0");
+    pack(l, std::string("fix ins all insert/polyhedron 400 3 region box mode pack density 1000 "
+                        "all_in no shape c 1 scale 0.5 orient ") +
+                (axis ? "axis 1 0 0" : "fixed 1 0 0 30"));
     auto avec = PolyShapeLibrary::of(l.lmp, "test");
     const auto q0 = avec->shape(1).input_orientation();    // file frame -> principal frame
     std::vector<double> ang;

@@ -105,7 +105,7 @@ TEST(InsertRanks, KokkosEqualsPlain)
       plain = gather_state(l, MPI_COMM_WORLD);
     }
     {
-      Lmp l(polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"}));
+      Lmp l(polydem_test::kk_styles());
       l.cmds(pour_scene(stl, contacts));
       l.cmd("run 900");
       kk = gather_state(l, MPI_COMM_WORLD);

@@ -25,7 +25,9 @@ namespace {
 struct Table {
   std::vector<LawEntry<double>> e;
   LawTable<double> t;
-  explicit Table(bool wall)
+  // nhist: history values per contact (0: the law table's default);
+  // friction false: mu = 0 on every pair
+  explicit Table(bool wall, int nhist = 0, bool friction = true)
   {
     const double E[3] = {0, 1e7, 3e7}, nu[3] = {0, 0.3, 0.2}, kn[3] = {0, 1e3, 2e3};
     const int n = wall ? 3 : 9;
@@ -47,6 +49,9 @@ struct Table {
     t.kt_ratio = 2.0 / 7.0;
     t.gt_ratio = 0.5;
     t.overlap_warn = 1e-9;    // every contact counts as a large overlap
+    if (nhist) t.nhist = nhist;
+    if (!friction)
+      for (auto &x : e) x.mu = 0.0;
   }
 };
 
@@ -173,12 +178,9 @@ TEST(ContactPipeline, EllipsoidPairIsTheComposition)
   for (int overlap : {OVERLAP_CENTRE, OVERLAP_CHORD})
     for (int mass : {DAMPING_REDUCED, DAMPING_CONTACT})
       for (bool friction : {true, false}) {
-        Table tab(false);
-        tab.t.nhist = ELLIPSOID_HIST;
+        Table tab(false, ELLIPSOID_HIST, friction);
         tab.t.overlap = overlap;
         tab.t.damping_mass = mass;
-        if (!friction)
-          for (auto &e : tab.e) e.mu = 0.0;
         Atoms2 at(0.5, 1.0, 0.8);
         const auto atoms = host_atoms(&at);
         const auto A = gather_ellipsoid_body(atoms, 0, ax), B = gather_ellipsoid_body(atoms, 1, ax);
@@ -213,8 +215,7 @@ TEST(ContactPipeline, EllipsoidPairIsTheComposition)
         EXPECT_EQ(cnt[EP_BIGOVERLAP], 1.0);
       }
   // apart: no contact, the history slot cleared
-  Table tab(false);
-  tab.t.nhist = ELLIPSOID_HIST;
+  Table tab(false, ELLIPSOID_HIST);
   Atoms2 at(5.0, 1.0, 1.0);
   const auto atoms = host_atoms(&at);
   double h[ELLIPSOID_HIST] = {1.0, 2.0, 3.0}, cnt[EP_NCOUNT] = {0, 0, 0, 0, 0};
@@ -240,10 +241,7 @@ TEST(ContactPipeline, EllipsoidPairsOfPairPolyhedronAreAlgebraic)
   egg.axes[2] = ax.z;
   egg.radius = ax.x;    // bounding radius (the composite's part pairs by bounding spheres)
   for (bool friction : {true, false}) {
-    Table tab(false);
-    tab.t.nhist = CONTACT_HIST;
-    if (!friction)
-      for (auto &e : tab.e) e.mu = 0.0;
+    Table tab(false, CONTACT_HIST, friction);
     Atoms2 at(0.5, 1.0, 0.8);
     const auto atoms = host_atoms(&at);
     const auto A = gather_polyhedron_body(atoms, 0, egg), B = gather_polyhedron_body(atoms, 1, egg);
@@ -280,8 +278,7 @@ TEST(ContactPipeline, EllipsoidPairsOfPairPolyhedronAreAlgebraic)
   comp.nparts = 1;
   comp.parts = &part;
   comp.radius = 0.3 + ax.x;
-  Table tab(false);
-  tab.t.nhist = CONTACT_HIST;
+  Table tab(false, CONTACT_HIST);
   tab.t.nslot = 1;    // composites keep keyed part contacts
   for (auto &x : tab.e) {
     x.mu = 0.0;

@@ -87,6 +87,13 @@ inline std::vector<std::string> kk(const std::vector<std::string> &rest)
   return a;
 }
 
+// the arguments that run the /kk styles (-sf kk) with newton off, as the
+// /kk pair styles need
+inline std::vector<std::string> kk_styles()
+{
+  return kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+}
+
 // no suffix, and /kk (with POLYDEM_KK_THREADS threads) where LAMMPS has KOKKOS
 inline std::vector<std::vector<std::string>> plain_and_kk()
 {

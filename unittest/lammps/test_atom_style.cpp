@@ -106,6 +106,13 @@ VtkFile read_vtk(const std::string &path)
   return v;
 }
 
+// the file tmpfile(name) of dump d, after undump d
+VtkFile undump_and_read(Lmp &l, const std::string &name)
+{
+  l.cmd("undump d");
+  return read_vtk(tmpfile(name));
+}
+
 // one grain of the template `id` (potentials/FILE) at `at` in the region
 // block `box` (xlo xhi ylo yhi zlo zhi), boundaries fixed
 std::vector<std::string> one_grain(const std::string &box, const std::string &id,
@@ -238,10 +245,8 @@ TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
   Lmp l;
   gas(l, 10);
   l.cmds({"dump d all polyhedron/vtk 10 " + vfile, "dump_modify d sort id", "run 10"});
-  l.cmd("undump d");
-  const std::string f10 = tmpfile("snap.10.vtk");
-  const VtkFile vtk = read_vtk(f10);
-  ASSERT_TRUE(vtk.ok) << f10;
+  const VtkFile vtk = undump_and_read(l, "snap.10.vtk");
+  ASSERT_TRUE(vtk.ok) << "snap.10.vtk";
   const long npoints = vtk.npoints, npolys = vtk.npolys;
   const auto &pts = vtk.points;
   // 5 cubes (8 vertices, 6 faces) + 5 dodecahedra (20 vertices, 12 faces)
@@ -261,7 +266,7 @@ TEST(AtomStyle, DumpVTKHasEveryPolyhedron)
     EXPECT_NEAR(rmax, kv.second.s * v.radius, 1e-7 * kv.second.s * v.radius);
     off += v.nverts;
   }
-  std::remove(f10.c_str());
+  std::remove(tmpfile("snap.10.vtk").c_str());
   std::remove(tmpfile("snap.0.vtk").c_str());
 }
 
@@ -281,7 +286,7 @@ TEST(AtomStyle, DumpVTKSingleFileHoldsTheLatestSnapshot)
         gas(l, 10);
         l.cmds({"dump d all polyhedron/vtk 10 " + name, "run 20"});
         const std::string e = l.error_of("dump_modify d append yes");
-        if (e.empty()) EXPECT_NE(l.error_of("run 0").find("append yes"), std::string::npos);
+        if (e.empty()) l.expect_error("run 0", "append yes");
       }
       const std::string text = read_text(name);
       size_t n = 0;
@@ -310,10 +315,8 @@ TEST(AtomStyle, DumpVTKDrawsEllipsoids)
           "create_atoms 1 single 0.6 0.5 0.5", "polyhedron_set group all density 1000",
           "polyhedron_set atom 2 quat 1 2 3 50", "polyhedron_set atom 2 scale 1.5",
           "dump d all polyhedron/vtk 1 " + vfile, "dump_modify d sort id", "run 0"});
-  l.cmd("undump d");
-  const std::string f0 = tmpfile("ell.0.vtk");
-  const VtkFile vtk = read_vtk(f0);
-  ASSERT_TRUE(vtk.ok) << f0;
+  const VtkFile vtk = undump_and_read(l, "ell.0.vtk");
+  ASSERT_TRUE(vtk.ok) << "ell.0.vtk";
   const long npoints = vtk.npoints, npolys = vtk.npolys;
   const auto &pts = vtk.points;
   EXPECT_EQ(npoints, 2 * 114);
@@ -335,7 +338,7 @@ TEST(AtomStyle, DumpVTKDrawsEllipsoids)
     off += 114;
   }
   EXPECT_LT(worst, 1e-6);
-  std::remove(f0.c_str());
+  std::remove(tmpfile("ell.0.vtk").c_str());
 }
 
 // Bad input gives a LAMMPS error naming the command and the bad word.
@@ -343,19 +346,17 @@ TEST(AtomStyle, BadInputErrors)
 {
   {
     Lmp l;
-    EXPECT_NE(l.error_of("atom_style polyhedron foo").find("Illegal atom_style polyhedron"),
-              std::string::npos);
+    l.expect_error("atom_style polyhedron foo", "Illegal atom_style polyhedron");
   }
   Lmp l;
   l.cmds({"units lj", "atom_style polyhedron", "region box block 0 10 0 10 0 10",
           "create_box 1 box"});
-  EXPECT_NE(l.error_of("create_atoms 1 single 1 1 1").find("polyhedron_shape"),
-            std::string::npos);
+  l.expect_error("create_atoms 1 single 1 1 1", "polyhedron_shape");
   std::string e = l.error_of("polyhedron_shape s /nonexistent/x.shape");
   EXPECT_NE(e.find("/nonexistent/x.shape"), std::string::npos) << e;
   e = l.error_of("polyhedron_shape s " + potentials() + "/cube.shape color red");
   EXPECT_NE(e.find("unknown keyword 'color'"), std::string::npos) << e;
-  EXPECT_NE(l.error_of("polyhedron_shape").find("polyhedron_shape"), std::string::npos);
+  l.expect_error("polyhedron_shape", "polyhedron_shape");
   {
     // a malformed shape file: the error names the command, the file and the line
     const std::string bad = tmpfile("bad.shape");

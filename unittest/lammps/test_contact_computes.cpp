@@ -23,8 +23,7 @@ using polydem_test::potentials;
 
 namespace {
 
-const std::vector<std::string> KK =
-    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+const std::vector<std::string> KK = polydem_test::kk_styles();
 
 // the columns requested from the local compute, in this order
 const char *COLUMNS = "id1 id2 vol volfrac area fx fy fz nx ny nz cx cy cz fn ft energy";

@@ -38,8 +38,7 @@ namespace {
 
 // newton off: FixNeighHistoryKokkos keeps no history for ghost partners under
 // newton on, so the /kk pair style requires it (the default on GPUs)
-const std::vector<std::string> KK =
-    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+const std::vector<std::string> KK = polydem_test::kk_styles();
 
 // sorting every 50 steps: atoms are permuted with their contact history.
 // 8 x 8 x 6 lattice sites (spacing 1): half cubes (edge 0.95: in-radius

@@ -534,7 +534,7 @@ TEST(PairPolyhedron, WriteRestartLeavesAPeriodicFrictionalRunUnchanged)
 {
   std::vector<std::vector<std::string>> runs = {{}};
   if (polydem_test::has_kokkos())
-    runs.push_back(polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"}));
+    runs.push_back(polydem_test::kk_styles());
   for (const std::vector<std::string> &extra : runs) {
     const std::string rfile = ::testing::TempDir() + "polydem_periodic_friction.restart";
     const std::vector<std::string> scene = {

@@ -37,8 +37,7 @@ using polydem_test::potentials;
 namespace {
 
 const std::string DIR = POLYDEM_TEST_DIR;
-const std::vector<std::string> KK =
-    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+const std::vector<std::string> KK = polydem_test::kk_styles();
 
 std::vector<std::string> setup(const std::string &coeff, const std::string &newton)
 {

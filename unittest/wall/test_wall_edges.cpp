@@ -107,7 +107,7 @@ TEST(WallEdges, ElasticImpactsKeepTheEnergy)
          c.name == "rod")) {
       double touched_kk;
       const double dev_kk =
-          energy_drift(c, polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"}),
+          energy_drift(c, polydem_test::kk_styles(),
                        touched_kk);
       EXPECT_EQ(touched_kk, touched) << c.name;
       EXPECT_NEAR(dev_kk, dev, 1e-9) << c.name;

@@ -540,8 +540,7 @@ TEST(WallEllipsoid, UnequalAxesUnderPairPolyhedronAsUnderPairEllipsoid)
   l.cmds(box(0.1, "0.01 0.006 0.004"));
   l.cmds({"create_atoms 1 single 0.003 -0.002 0.012", "polyhedron_set atom 1 density 2000",
           "pair_style polyhedron", "pair_coeff * * 1e7 0.3 0.6 0.4", "fix w all wall/mesh " + stl});
-  EXPECT_NE(l.error_of("run 0").find("particle type 1 has ellipsoids of unequal semi-axes, which "
+  l.expect_error("run 0", "particle type 1 has ellipsoids of unequal semi-axes, which "
                                      "meet the wall by the linear law of pair_style ellipsoid: "
-                                     "add 'ellipsoid k_n' to pair_coeff 1 1"),
-            std::string::npos);
+                                     "add 'ellipsoid k_n' to pair_coeff 1 1");
 }

@@ -13,8 +13,7 @@ using namespace wall_test;
 
 namespace {
 
-const std::vector<std::string> KK =
-    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+const std::vector<std::string> KK = polydem_test::kk_styles();
 
 KkScene scene()
 {

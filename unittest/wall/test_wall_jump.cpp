@@ -9,10 +9,7 @@
 
 #include <string>
 
-using polydem_test::Lmp;
-using polydem_test::num;
-using polydem_test::potentials;
-using polydem_test::read_text;
+using namespace polydem_test;
 using namespace wall_test;
 
 namespace {

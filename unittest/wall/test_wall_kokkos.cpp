@@ -12,8 +12,7 @@ using namespace wall_test;
 
 namespace {
 
-const std::vector<std::string> KK =
-    polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+const std::vector<std::string> KK = polydem_test::kk_styles();
 
 // 27 dodecahedra in a 6 cm box (wall_scene.h), 500 steps
 KkScene scene()

@@ -431,8 +431,8 @@ TEST(WallMesh, WiggleCarriesAStickingCube)
   // bad input
   Lmp b;
   b.cmds({"units si", "atom_style polyhedron", "region box block -1 1 -1 1 -1 1", "create_box 1 box"});
-  EXPECT_NE(b.error_of("fix w all wall/mesh " + stl + " move wiggle 1 0 0 0").find(
-                "move wiggle period must be > 0"), std::string::npos);
+  b.expect_error("fix w all wall/mesh " + stl + " move wiggle 1 0 0 0",
+                 "move wiggle period must be > 0");
 }
 
 namespace {
@@ -820,7 +820,7 @@ TEST(WallMesh, CompositesRestartExactly)
     for (int k = 0; k < 16; k++) late += " part cube " + std::to_string(2 * k) + " 0 0";
     EXPECT_EQ(l.error_of(late), "");
     l.cmds({"polyhedron_set atom 1 shape late"});
-    EXPECT_NE(l.error_of("run 1").find("defined after the fix"), std::string::npos);
+    l.expect_error("run 1", "defined after the fix");
   }
   {
     Lmp l;

@@ -271,10 +271,8 @@ TEST(WallServo, LidHoldsTheTargetForce)
           "timestep 5e-5", "run 600"});
   EXPECT_EQ(fvec(l, "lid", 8), ref[0]);
   EXPECT_EQ(l.lmp->atom->x[l.lmp->atom->map(5)][2], ref[1]);
-  EXPECT_NE(l.error_of("fix bad all wall/mesh " + tmpdir() + "/servo_lid.stl move servo 0 0 0 5 "
-                       "0.05 0.02")
-                .find("move servo direction must be non-zero"),
-            std::string::npos);
+  l.expect_error("fix bad all wall/mesh " + tmpdir() + "/servo_lid.stl move servo 0 0 0 5 "
+                       "0.05 0.02", "move servo direction must be non-zero");
 }
 
 // A load program: the target from an equal-style variable, evaluated every
@@ -299,7 +297,7 @@ TEST(WallServo, TargetFromAVariable)
   servo_scene(bad, 1.0);
   bad.cmds({"unfix lid", "fix lid all wall/mesh " + tmpdir() +
                              "/servo_lid.stl move servo 0 0 -1 v_nothing 0.05 0.02"});
-  EXPECT_NE(bad.error_of("run 0").find("variable 'nothing' does not exist"), std::string::npos);
+  bad.expect_error("run 0", "variable 'nothing' does not exist");
 }
 
 // Liquid bridges on a mesh (fix wall/mesh bridge, issue 30): a sphere (r =

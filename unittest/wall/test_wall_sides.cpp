@@ -18,10 +18,7 @@
 #include <cmath>
 #include <cstdio>
 
-using polydem_test::Lmp;
-using polydem_test::num;
-using polydem_test::potentials;
-using polydem_test::read_text;
+using namespace polydem_test;
 using namespace wall_test;
 
 namespace {
