@@ -92,6 +92,24 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
     auto need = [&](int n) {
       if (iarg + n >= narg) error->all(FLERR, "{}: keyword '{}' needs {} value(s)", me, kw, n);
     };
+    // the keyword's one value, a number > 0 (>= 0 where zero_ok)
+    auto positive = [&](bool zero_ok = false) {
+      need(1);
+      const double v = num(iarg + 1);
+      if (!(zero_ok ? v >= 0.0 : v > 0.0))
+        error->all(FLERR, "{}: {} must be {} 0, got {}", me, kw, zero_ok ? ">=" : ">",
+                   arg[iarg + 1]);
+      iarg += 2;
+      return v;
+    };
+    // the keyword's one value, a whole number > 0
+    auto count = [&]() {
+      need(1);
+      const int v = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (v <= 0) error->all(FLERR, "{}: {} must be > 0, got {}", me, kw, arg[iarg + 1]);
+      iarg += 2;
+      return v;
+    };
     if (kw == "region") {
       need(1);
       idregion = arg[iarg + 1];
@@ -129,10 +147,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       massfrac = polydem_parse::choice(FLERR, lmp, me, "fractions", arg[iarg + 1], "mass", "number");
       iarg += 2;
     } else if (kw == "density") {
-      need(1);
-      density = num(iarg + 1);
-      if (!(density > 0.0)) error->all(FLERR, "{}: density must be > 0, got {}", me, arg[iarg + 1]);
-      iarg += 2;
+      density = positive();
     } else if (kw == "mode") {
       need(1);
       if (strcmp(arg[iarg + 1], "rate") == 0)
@@ -143,10 +158,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "{}: mode must be 'rate' or 'pack', got '{}'", me, arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "every") {
-      need(1);
-      every = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (every <= 0) error->all(FLERR, "{}: every must be > 0, got {}", me, arg[iarg + 1]);
-      iarg += 2;
+      every = count();
     } else if (kw == "rate" || kw == "rate/mass" || kw == "per") {
       need(1);
       if (have_rate) error->all(FLERR, "{}: give only one of rate, rate/mass and per", me);
@@ -158,10 +170,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "{}: per needs a whole number of particles, got {}", me, arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "mass/total") {
-      need(1);
-      masstotal = num(iarg + 1);
-      if (!(masstotal > 0.0)) error->all(FLERR, "{}: mass/total must be > 0", me);
-      iarg += 2;
+      masstotal = positive();
     } else if (kw == "fraction") {
       need(1);
       phi_target = num(iarg + 1);
@@ -169,15 +178,9 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
         error->all(FLERR, "{}: fraction must be in (0, 1), got {}", me, arg[iarg + 1]);
       iarg += 2;
     } else if (kw == "attempts") {
-      need(1);
-      attempts = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (attempts <= 0) error->all(FLERR, "{}: attempts must be > 0, got {}", me, arg[iarg + 1]);
-      iarg += 2;
+      attempts = count();
     } else if (kw == "misses") {
-      need(1);
-      misses = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
-      if (misses <= 0) error->all(FLERR, "{}: misses must be > 0, got {}", me, arg[iarg + 1]);
-      iarg += 2;
+      misses = count();
     } else if (kw == "orient") {
       need(1);
       const std::string st = arg[iarg + 1];
@@ -225,10 +228,7 @@ FixInsertPolyhedron::FixInsertPolyhedron(LAMMPS *lmp, int narg, char **arg) :
       allin = polydem_parse::choice(FLERR, lmp, me, "all_in", arg[iarg + 1], "yes", "no");
       iarg += 2;
     } else if (kw == "gap") {
-      need(1);
-      gap = num(iarg + 1);
-      if (!(gap >= 0.0)) error->all(FLERR, "{}: gap must be >= 0, got {}", me, arg[iarg + 1]);
-      iarg += 2;
+      gap = positive(true);
     } else
       error->all(FLERR, "{}: unknown keyword '{}'", me, kw);
     // the keyword's values as given (a shape by its ID): restart compares them

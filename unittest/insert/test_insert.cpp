@@ -573,6 +573,14 @@ TEST(Insert, BadInputIsRefusedClearly)
   refused(f + "10 1 density 1 region box mode pack fraction 1.5 shape d 1 scale 0.001 density 1", "fraction must be in (0, 1)");
   refused(f + "10 1 density 1 region box shape d 1 scale 0.001 per 1 colour red", "unknown keyword 'colour'");
   refused(f + "10 0 density 1 region box shape d 1 scale 0.001 per 1", "seed must be > 0");
+  // one value > 0 (gap: >= 0), named with what was given
+  const std::string d1 = "10 1 region box shape d 1 scale 0.001 ";
+  refused(f + d1 + "per 1 density 0", "density must be > 0, got 0");
+  refused(f + d1 + "per 1 density 1 every 0", "every must be > 0, got 0");
+  refused(f + d1 + "per 1 density 1 gap -1", "gap must be >= 0, got -1");
+  refused(f + d1 + "rate/mass 1 mass/total 0 density 1", "mass/total must be > 0, got 0");
+  refused(f + d1 + "density 1 mode pack attempts 0", "attempts must be > 0, got 0");
+  refused(f + d1 + "density 1 mode pack misses -2", "misses must be > 0, got -2");
   // numbers are read in full (LAMMPS's own reader takes "1e" as 1)
   refused(f + "10 1 density 1e region box shape d 1 scale 0.001 per 1", "'1e' is not a finite number");
   refused("polyhedron_shape bad ellipsoid 1e 1 1", "'1e' is not a finite number");
