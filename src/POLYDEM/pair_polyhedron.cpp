@@ -241,13 +241,22 @@ void PairPolyhedron::init_style()
           error->warning(FLERR, "pair_style polyhedron: the cohesion of types {} and {} does "
                          "not act between two ellipsoids of which one has unequal semi-axes "
                          "(their algebraic contact has no adhesive stress)", lo, hi);
-        if (!given)
+        if (!given) {
+          // where the stiffness goes: the like pair's line, the unlike pair's own line,
+          // or both types' lines (mixed) unless the unlike pair gets one of its own
+          const std::string where = lo == hi ? fmt::format("pair_coeff {} {}", lo, lo)
+              : pairset[lo][hi]
+              ? fmt::format("their own pair_coeff {} {}", lo, hi)
+              : fmt::format("pair_coeff {} {} and pair_coeff {} {} (mixed by the geometric "
+                            "mean), or to a pair_coeff {} {} of their own",
+                            lo, lo, hi, hi, lo, hi);
           error->all(FLERR, "pair_style polyhedron: shape '{}' is an ellipsoid with unequal "
                      "semi-axes; two ellipsoids meet by overlap volume only if both are spheres "
                      "(equal semi-axes), others by the algebraic contact of pair_style "
                      "ellipsoid, whose normal stiffness types {} and {} lack: add 'ellipsoid "
-                     "k_n' to their pair_coeff (or to each type's own)",
-                     avec->shape_id(first_shape[i]), lo, hi);
+                     "k_n' to {}",
+                     avec->shape_id(first_shape[i]), lo, hi, where);
+        }
       }
 
   dt = update->dt;

@@ -383,6 +383,34 @@ TEST(PairEllipsoid, BadInput)
                  "'ellipsoid k_n' is a keyword of pair_style polyhedron");
 }
 
+// Two types of ellipsoids under pair_style polyhedron: the error for a
+// missing 'ellipsoid k_n' says which pair_coeff line it goes on (the unlike
+// pair's own line when it has one, else both types' lines)
+TEST(PairEllipsoid, MissingStiffnessNamesItsLine)
+{
+  auto scene = [](Lmp &l) {
+    l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
+            "comm_modify vel yes", "region box block 0 1 0 1 0 1", "create_box 2 box",
+            "polyhedron_shape e ellipsoid 0.03 0.02 0.01", "create_atoms 1 single 0.3 0.3 0.3",
+            "create_atoms 2 single 0.6 0.6 0.6", "polyhedron_set group all density 1000",
+            "pair_style polyhedron", "timestep 1e-5"});
+  };
+  {
+    Lmp l;
+    scene(l);
+    l.cmds({"pair_coeff * * 1e7 0.3 0.9 0.0 ellipsoid 1e6", "pair_coeff 1 2 0.9 0.0"});
+    l.expect_error("run 0",
+                   "types 1 and 2 lack: add 'ellipsoid k_n' to their own pair_coeff 1 2");
+    l.cmds({"pair_coeff 1 2 0.9 0.0 ellipsoid 2e6", "run 0"});
+  }
+  Lmp l;
+  scene(l);
+  l.cmds({"pair_coeff 1 1 1e7 0.3 0.9 0.0 ellipsoid 1e6", "pair_coeff 2 2 1e7 0.3 0.9 0.0"});
+  l.expect_error("run 0", "types 1 and 2 lack: add 'ellipsoid k_n' to pair_coeff 1 1 and "
+                          "pair_coeff 2 2 (mixed by the geometric mean), or to a pair_coeff 1 2");
+  l.cmds({"pair_coeff 2 2 1e7 0.3 0.9 0.0 ellipsoid 3e6", "run 0"});
+}
+
 // Friction (pair_coeff ... mu): two spheres (r = 2 cm) both spinning at
 // omega_z = 100 rad/s collide head-on along x at 2 m/s closing speed: the
 // contact points slip at 2 omega r = 4 m/s along y. Elastic normal contact
