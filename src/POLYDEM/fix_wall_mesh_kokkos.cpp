@@ -160,6 +160,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
   upload(d_start, geom.grid.start, "wall/mesh/kk:start");
   upload(d_items, geom.grid.items, "wall/mesh/kk:items");
   upload(d_tbin, geom.grid.tbin, "wall/mesh/kk:tbin");
+  upload(d_sphere, geom.grid.sphere, "wall/mesh/kk:sphere");
   upload(d_region, geom.regions, "wall/mesh/kk:region");
 
   // the law table (FixWallMesh::init) on the device
@@ -245,6 +246,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.sc.grid.plane = d_plane.data();
   k.sc.grid.box = d_box.data();
   k.sc.grid.tbin = d_tbin.data();
+  k.sc.grid.sphere = d_sphere.data();
   k.sc.grid.region = d_region.data();
   k.dt = update->dt;
   k.update = stepping ? 1 : 0;

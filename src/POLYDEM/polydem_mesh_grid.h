@@ -30,6 +30,7 @@ template <typename T> struct MeshGridView {
   const T *box;         // 6 per triangle: min xyz, max xyz
   const int *tbin;      // 3 per triangle: its first bin (i, j, k)
   const int *region = nullptr;    // per triangle: smooth region (mesh_regions, polydem_stl.h), or none
+  const T *sphere = nullptr;      // 4 per triangle: a bounding sphere (centre, radius), or none
 };
 
 // bin index of coordinate x along direction d, clamped to [0, n-1]; the
@@ -91,12 +92,21 @@ POLYDEM_FN T point_triangle_dist2(const Vec3<T> &p, const Vec3<T> &a, const Vec3
   return norm2(ap - (vb * den) * ab - (vc * den) * ac);
 }
 
-// Does the sphere (c, r) reach triangle t? Plane and box first (cheap),
-// then the exact distance to the triangle, so that on a fine or curved mesh
-// only the triangles under the sphere's cap reach the clipping kernel.
+// Does the sphere (c, r) reach triangle t? The triangle's bounding sphere,
+// plane and box first (cheap), then the exact distance to the triangle, so
+// that on a fine or curved mesh only the triangles under the sphere's cap
+// reach the clipping kernel. The bounding-sphere reject has a margin of
+// 1e-9 (r + R) over the exact test's round-off, so it only drops triangles
+// the exact test drops: the answer does not depend on g.sphere being set.
 template <typename T>
 POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c, T r)
 {
+  if (g.sphere) {
+    const T *s = g.sphere + 4 * t;
+    const T dx = c.x - s[0], dy = c.y - s[1], dz = c.z - s[2];
+    const T rr = (r + s[3]) * T(1 + 1e-9);
+    if (!(dx * dx + dy * dy + dz * dz < rr * rr)) return false;
+  }
   const T *pl = g.plane + 4 * t, *b = g.box + 6 * t;
   const T d = pl[0] * c.x + pl[1] * c.y + pl[2] * c.z - pl[3];
   if (!(d < r) || !(d > -r)) return false;

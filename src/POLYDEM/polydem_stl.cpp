@@ -321,6 +321,7 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
   g.plane.resize(4 * (size_t) nt);
   g.box.resize(6 * (size_t) nt);
   g.tbin.resize(3 * (size_t) nt);
+  g.sphere.resize(4 * (size_t) nt);
   for (int t = 0; t < nt; t++) {
     const double *p = tri.data() + 9 * (size_t) t;
     const double e1[3] = {p[3] - p[0], p[4] - p[1], p[5] - p[2]};
@@ -335,6 +336,15 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
       g.box[6 * t + d] = std::min(p[d], std::min(p[3 + d], p[6 + d]));
       g.box[6 * t + 3 + d] = std::max(p[d], std::max(p[3 + d], p[6 + d]));
     }
+    // bounding sphere: the centroid and its largest distance to a vertex
+    double *sp = &g.sphere[4 * (size_t) t], r2 = 0.0;
+    for (int d = 0; d < 3; d++) sp[d] = (p[d] + p[3 + d] + p[6 + d]) / 3.0;
+    for (int v = 0; v < 3; v++) {
+      double q = 0.0;
+      for (int d = 0; d < 3; d++) q += (p[3 * v + d] - sp[d]) * (p[3 * v + d] - sp[d]);
+      r2 = std::max(r2, q);
+    }
+    sp[3] = std::sqrt(r2);
   }
   v.plane = g.plane.data();
   v.box = g.box.data();

@@ -92,6 +92,7 @@ struct MeshGrid {
   std::vector<double> plane;    // 4 per triangle: unit normal, offset
   std::vector<double> box;      // 6 per triangle: bounding box
   std::vector<int> tbin;        // 3 per triangle: first bin
+  std::vector<double> sphere;   // 4 per triangle: centroid, largest vertex distance from it
 };
 
 // h: requested bin edge; enlarged (x 1.25 at a time) until there are at most

@@ -128,6 +128,7 @@ MeshGridView<double> WallMesh::grid_view() const
   g.box = grid.box.data();
   g.tbin = grid.tbin.data();
   g.region = regions.data();
+  g.sphere = grid.sphere.data();
   return g;
 }
 

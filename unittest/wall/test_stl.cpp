@@ -246,6 +246,82 @@ TEST(MeshGrid, CandidatesEqualBruteForce)
   }
 }
 
+// The triangles' bounding spheres (MeshGrid::sphere) only speed up the near
+// test: with them and without, mesh_tri_near answers the same, also for
+// spheres whose surface passes within round-off of a triangle (r set to the
+// exact distance times 1 -+ 1e-15) and for triangles far from the origin.
+TEST(MeshGrid, BoundingSpheresKeepTheNearTest)
+{
+  for (double off : {0.0, 1.0e3}) {
+    Tris t = flat(-1, 1, -1, 1, 0, 7, 5, true, 0.35, 3);
+    for (size_t k = 0; k < t.size(); k++) t[k] += off;
+    const MeshGrid g = build_mesh_grid(t, 0.3);
+    ASSERT_EQ(g.sphere.size(), 4 * (t.size() / 9));
+    MeshGridView<double> v{t.data(), (int) (t.size() / 9), {g.lo[0], g.lo[1], g.lo[2]}, g.h,
+                           {g.n[0], g.n[1], g.n[2]}, g.start.data(), g.items.data(),
+                           g.plane.data(), g.box.data(), g.tbin.data()};
+    MeshGridView<double> vs = v;
+    vs.sphere = g.sphere.data();
+    // every vertex within its triangle's sphere
+    for (int k = 0; k < v.ntri; k++)
+      for (int c = 0; c < 3; c++) {
+        double d2 = 0.0;
+        for (int d = 0; d < 3; d++)
+          d2 += std::pow(t[9 * k + 3 * c + d] - g.sphere[4 * k + d], 2);
+        EXPECT_LE(std::sqrt(d2), g.sphere[4 * k + 3] * (1 + 1e-15)) << "triangle " << k;
+      }
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.3, 1.3);
+    int near = 0, far = 0;
+    for (int trial = 0; trial < 400; trial++) {
+      const Vec3<double> c = make_vec3(off + u(rng), off + u(rng), off + 0.5 * u(rng));
+      const double r = 0.02 + 0.4 * std::fabs(u(rng));
+      for (int k = 0; k < v.ntri; k++) {
+        const bool a = mesh_tri_near(v, k, c, r), b = mesh_tri_near(vs, k, c, r);
+        ASSERT_EQ(a, b) << "off " << off << " trial " << trial << " triangle " << k;
+        (a ? near : far)++;
+        // at the boundary: the exact distance, a hair inside and outside
+        const double *q = &t[9 * k];
+        const double d = std::sqrt(point_triangle_dist2(c, make_vec3(q[0], q[1], q[2]),
+                                                        make_vec3(q[3], q[4], q[5]),
+                                                        make_vec3(q[6], q[7], q[8])));
+        for (double f : {1.0 - 1e-15, 1.0, 1.0 + 1e-15})
+          ASSERT_EQ(mesh_tri_near(v, k, c, d * f), mesh_tri_near(vs, k, c, d * f))
+              << "off " << off << " trial " << trial << " triangle " << k << " f " << f;
+      }
+    }
+    EXPECT_GT(near, 1000);    // both answers met often
+    EXPECT_GT(far, 1000);
+    // the tight case of the bounding sphere: c on the ray from the centroid
+    // through the farthest vertex, beyond it, where the distance to the
+    // triangle is |c - centroid| - R; spheres reaching the vertex by
+    // 1e-15 of r or missing it by as much
+    int tight = 0;
+    for (int k = 0; k < v.ntri; k++) {
+      const double *sp = &g.sphere[4 * k];
+      int far_v = 0;
+      double best = -1.0;
+      for (int c = 0; c < 3; c++) {
+        double d2 = 0.0;
+        for (int d = 0; d < 3; d++) d2 += std::pow(t[9 * k + 3 * c + d] - sp[d], 2);
+        if (d2 > best) best = d2, far_v = c;
+      }
+      const Vec3<double> vx = make_vec3(t[9 * k + 3 * far_v], t[9 * k + 3 * far_v + 1],
+                                        t[9 * k + 3 * far_v + 2]);
+      const Vec3<double> dir = (1.0 / std::sqrt(best)) * (vx - make_vec3(sp[0], sp[1], sp[2]));
+      for (double L : {0.01, 0.3, 2.0}) {
+        const Vec3<double> c = vx + L * dir;
+        for (double f : {1.0 - 1e-15, 1.0, 1.0 + 1e-15, 1.0 + 1e-13}) {
+          const bool a = mesh_tri_near(v, k, c, L * f);
+          ASSERT_EQ(a, mesh_tri_near(vs, k, c, L * f)) << "tight, triangle " << k << " L " << L << " f " << f;
+          tight += a;
+        }
+      }
+    }
+    EXPECT_GT(tight, v.ntri);    // the exact test reaches the vertex in some of them
+  }
+}
+
 TEST(MeshGrid, BinCountCapped)
 {
   const Tris t = flat(0, 100, 0, 100, 0, 2, 2);
