@@ -57,10 +57,12 @@ struct WallWorkspace {
   ClipWorkspace<T, MF, ME> clip;
   T verts[3 * MAX_TEMPLATE_VERTS];
   T dist[MAX_TEMPLATE_VERTS];    // signed distances to the current plane
+  int behind[MAX_TEMPLATE_VERTS], nbehind;    // the vertices behind it (dist < 0), in order
   T pc[4], pbox[6];              // that plane (as stored), the box of the part behind it
   T po[4];                       // that plane as the particle meets it (pside x pc)
   int pvalid, pany, pside;       // cache valid; a vertex behind it; side (+1 front, -1 back)
   int pclaimed;                  // a kept contact chose pside (else the centroid did)
+  int vlow;                      // the particle's vertex lowest along the last plane's normal
   // candidates of one particle, and the coplanar-group coverage test
   static constexpr int MAXH = 4 * MAX_TEMPLATE_VERTS + 8;
   int cand[WALL_MAX_CAND];

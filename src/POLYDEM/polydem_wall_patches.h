@@ -47,21 +47,34 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         ws->pbox[k] = T(1e300);
         ws->pbox[3 + k] = T(-1e300);
       }
+      if (sv.vadj) {
+        // The vertex lowest along the normal, by a climb over the template's
+        // edges from the last plane's: if it lies in front of the plane by
+        // more than the round-off of these distances, so does every vertex,
+        // the part behind is empty (separated() needs no dist[]), and the
+        // scan below would find none either.
+        ws->vlow = support_index_points(ws->verts, sv.nverts, sv.vadj,
+                                        make_vec3(-pl[0], -pl[1], -pl[2]), ws->vlow);
+        const Vec3<T> v = wall_vert(ws->vlow);
+        const T h = pl[0] * v.x + pl[1] * v.y + pl[2] * v.z - pl[3];
+        const T scale = posed_radius(*a) + fabs(pl[3]) + fabs(a->x.x) + fabs(a->x.y) + fabs(a->x.z);
+        if (h > T(1e-12) * scale) return;
+      }
+      ws->nbehind = 0;
       for (int i = 0; i < sv.nverts; ++i) {
         const Vec3<T> v = wall_vert(i);
         ws->dist[i] = pl[0] * v.x + pl[1] * v.y + pl[2] * v.z - pl[3];
         if (ws->dist[i] < T(0)) {
           ws->pany = 1;
+          ws->behind[ws->nbehind++] = i;
           grow_box(v - ws->dist[i] * make_vec3(pl[0], pl[1], pl[2]));    // onto the plane
         }
       }
-      for (int k = 0; k < sv.nedges && ws->pany; ++k) {
-        const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
-        const T di = ws->dist[i], dj = ws->dist[j];
-        if ((di < T(0)) == (dj < T(0))) continue;
-        const Vec3<T> vi = wall_vert(i);
-        grow_box(vi + (di / (di - dj)) * (wall_vert(j) - vi));
-      }
+      if (ws->pany)
+        for_each_crossing([&](const Vec3<T> &p) {
+          grow_box(p);
+          return true;
+        });
       // the triangle's prism meets the behind part only where the triangle
       // meets its projection: compare boxes in the plane, with a margin for
       // round-off across the plane [length]
@@ -73,10 +86,40 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     }
   }
 
+  // f(p) for the point p where each edge of the particle crosses the plane of
+  // plane_of (one end behind it, the other not), each computed from the
+  // edge's lower-numbered end as in the template's edge list (i < j): the
+  // edges of the vertices behind where the template has its adjacency, else
+  // a scan of all edges; f returns false to stop
+  template <typename F> POLYDEM_FN void for_each_crossing(F f) const
+  {
+    const ShapeView<T> &sv = *a->view;
+    if (sv.vadj) {
+      for (int b = 0; b < ws->nbehind; ++b) {
+        const int u = ws->behind[b];
+        for (int k = sv.vadj[u]; k < sv.vadj[u + 1]; ++k) {
+          const int w = sv.vadj[k];
+          if (ws->dist[w] < T(0)) continue;
+          const int i = u < w ? u : w, j = u < w ? w : u;
+          const T di = ws->dist[i], dj = ws->dist[j];
+          const Vec3<T> vi = wall_vert(i);
+          if (!f(vi + (di / (di - dj)) * (wall_vert(j) - vi))) return;
+        }
+      }
+      return;
+    }
+    for (int k = 0; k < sv.nedges; ++k) {
+      const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+      const T di = ws->dist[i], dj = ws->dist[j];
+      if ((di < T(0)) == (dj < T(0))) continue;
+      const Vec3<T> vi = wall_vert(i);
+      if (!f(vi + (di / (di - dj)) * (wall_vert(j) - vi))) return;
+    }
+  }
+
   // tri: triangle t as met (plane_of(t) first)
   POLYDEM_FN bool separated(int t, const Triangle<T> &tri) const
   {
-    const ShapeView<T> &sv = *a->view;
     if (!ws->pany) return true;
     const T *b = g->box + 6 * t;
     for (int k = 0; k < 3; ++k)
@@ -86,16 +129,13 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     for (int e = 0; e < 3; ++e) {
       const Vec3<T> o = tri.v[e], side = cross(tri.v[(e + 1) % 3] - o, nr);    // outward
       bool out = true;
-      for (int i = 0; i < sv.nverts && out; ++i)
-        if (ws->dist[i] < T(0)) out = dot(side, wall_vert(i) - o) > T(0);
-      for (int k = 0; k < sv.nedges && out; ++k) {
-        const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
-        const T di = ws->dist[i], dj = ws->dist[j];
-        if ((di < T(0)) == (dj < T(0))) continue;
-        const Vec3<T> vi = wall_vert(i);
-        const Vec3<T> p = vi + (di / (di - dj)) * (wall_vert(j) - vi);
-        out = dot(side, p - o) > T(0);
-      }
+      for (int k = 0; k < ws->nbehind && out; ++k)
+        out = dot(side, wall_vert(ws->behind[k]) - o) > T(0);
+      if (out)
+        for_each_crossing([&](const Vec3<T> &p) {
+          out = dot(side, p - o) > T(0);
+          return out;
+        });
       if (out) return true;
     }
     return false;
@@ -576,6 +616,7 @@ POLYDEM_FN void wall_patches(const PosedShape<T> &a, const MeshGridView<T> &g, T
   acc.sides = sides;
   ws.ncand = 0;
   ws.pvalid = 0;
+  ws.vlow = 0;
   ws.nrec = 0;
   if (!(near && near->cap > 0 && wall_near_visit(a, g, ws, *near, acc)))
     mesh_for_each_near(g, a.x, posed_radius(a), acc);
