@@ -5,8 +5,10 @@ sigma_v = (|F_lid| + |F_floor|) / (2 A) (frictionless walls: the weight goes
 to the floor), the mean horizontal stress sigma_h = (normal force on the
 tube) / (2 pi R h), h the lid's height, and K0 = sigma_h / sigma_v; writes
 PREFIX.png (PREFIX: that of the run's files, PREFIX_lid.txt and
-PREFIX_wall.txt; default oedometer).
-    /usr/bin/python3 analyze.py [PREFIX]"""
+PREFIX_wall.txt; default oedometer). The hold of each load step is read from
+the load's staircase (in.oedometer's -var hold). PHI (degrees, optional):
+the bed's own angle of repose (analyze_repose.py), drawn as Jaky's line.
+    /usr/bin/python3 analyze.py [PREFIX [PHI]]"""
 import math
 import sys
 
@@ -16,7 +18,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-R, HOLD, START, DT = 0.03, 12500, 50000, 1.6e-5
+R, START, DT = 0.03, 50000, 1.6e-5
 A = math.pi * R**2
 
 
@@ -33,6 +35,7 @@ def tube_areas(path="tube.stl"):
 
 
 PREFIX = sys.argv[1] if len(sys.argv) > 1 else "oedometer"
+PHI = float(sys.argv[2]) if len(sys.argv) > 2 else None
 
 
 def wall_snapshots(path=PREFIX + "_wall.txt"):
@@ -51,6 +54,7 @@ def wall_snapshots(path=PREFIX + "_wall.txt"):
 
 lid = np.loadtxt(PREFIX + "_lid.txt")
 step, t, load, Flid, Ffloor, zlid = lid[:, 0], lid[:, 1], lid[:, 2], lid[:, 3], lid[:, 4], lid[:, 5]
+HOLD = int(step[np.nonzero(np.diff(load))[0][0] + 1]) - START    # the first rise of the load
 areas = tube_areas()
 walls = wall_snapshots()
 rows = []
@@ -84,6 +88,10 @@ a2.plot(sv, sh, "o-", label="POLYDEM (mean over the bed)")
 for phi in (20, 30):
     k0 = 1 - math.sin(math.radians(phi))
     a2.plot([0, sv.max() * 1.1], [0, k0 * sv.max() * 1.1], ":", label=f"Jaky, phi = {phi} deg (K0 = {k0:.2f})")
+if PHI is not None:
+    k0 = 1 - math.sin(math.radians(PHI))
+    a2.plot([0, sv.max() * 1.1], [0, k0 * sv.max() * 1.1], "--", color="k",
+            label=f"Jaky, the bed's angle of repose {PHI:g} deg (K0 = {k0:.2f})")
 a2.set_xlabel(r"mean vertical stress $\sigma_v$ (kPa)")
 a2.set_ylabel(r"mean horizontal stress $\sigma_h$ (kPa)")
 a2.set_title("oedometric stress path")
