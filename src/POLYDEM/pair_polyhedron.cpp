@@ -484,8 +484,8 @@ void PairPolyhedron::report_counters()
                         "part contacts of composites beyond the pair's history slots (friction "
                         "without history)",
                         "contact-steps under a liquid bridge law of grains that get no bridge "
-                        "(bridges act between spheres and convex polyhedra, not on unequal "
-                        "ellipsoids or composites' parts)"};
+                        "(bridges act between spheres and convex polyhedra, also as parts of "
+                        "composites, not on ellipsoids of unequal semi-axes)"};
   PairPolydem::report_counters(what, polydem::PP_CONTACTS);
 }
 

@@ -126,8 +126,9 @@ POLYDEM_FN OverlapResult<T> convex_overlap(const PosedShape<T> &A, const PosedSh
 // The contact of convex shapes a (of body A) and b (of body B) with overlap
 // ov: the law of their volumes, the bodies' kinematics about their centres,
 // the history h (nhist values, or null), counted. bridges: a liquid bridge
-// law acts (two spheres, a sphere and a polyhedron, two polyhedra); false for the parts of
-// composites, whose bridges are not kept across a gap (counted as PP_NOBRIDGE).
+// law acts (two spheres, a sphere and a polyhedron, two polyhedra, also as
+// parts of composites, whose slots keep the bridge across the gap:
+// composite_pair_contact); false: none (counted as PP_NOBRIDGE).
 template <typename T, typename C>
 POLYDEM_FN PairContactResult<T>
 convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
@@ -327,6 +328,23 @@ algebraic_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   return r;
 }
 
+// the force, torques, energy and force magnitudes of a part contact added
+// to the composite pair's result (the first sets them)
+template <typename T>
+POLYDEM_FN void add_part_force(PairContactResult<T> &r, const ContactForce<T> &cf)
+{
+  if (!r.contact) {
+    r.cf = cf;
+    return;
+  }
+  r.cf.F_A += cf.F_A;
+  r.cf.tau_A += cf.tau_A;
+  r.cf.tau_B += cf.tau_B;
+  r.cf.energy += cf.energy;
+  r.cf.fn += cf.fn;
+  r.cf.ft += cf.ft;
+}
+
 // A pair of which one or both are composites, in a table with part slots
 // (tab.nslot > 0): every pair of parts whose bounding spheres meet is a
 // contact of its own, with its history in the slot keyed 1 + (part of the
@@ -334,7 +352,9 @@ algebraic_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
 // and torques are summed on the bodies. The result's geometry is that of
 // the deepest part contact with the summed volume and area (of the part
 // contacts by overlap volume; if there are none, the deepest algebraic one's,
-// its overlap length over its smallest semi-axis in vmin).
+// its overlap length over its smallest semi-axis in vmin). A part pair
+// that touched and came apart keeps its slot while its liquid bridge holds
+// (bridge_contact); if bridges are all the pair has, contact = 2.
 template <typename T, int MF, typename C>
 POLYDEM_FN PairContactResult<T>
 composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
@@ -371,6 +391,23 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
           ov = convex_overlap(a, b, ws, count, slot != nullptr);
       }
       if (ov.status != STATUS_OK) {
+        // a part pair that touched (its slot is kept) and has come apart:
+        // its liquid bridge while the gap is below the rupture distance
+        // (bridge_contact: the slot keeps its key, its friction and rolling
+        // history are cleared), else the slot is given up
+        if (slot && ov.status == STATUS_SEPARATED && tab.bridge_reach > T(0)) {
+          const PairContactResult<T> c = bridge_contact(A, B, a, b, tab);
+          if (c.contact == 2) {
+            history_release(slot + 1, tab.nhist);
+            add_part_force(r, c.cf);
+            if (!r.contact) {
+              r.contact = 2;
+              r.geo = c.geo;
+              r.vmin = c.vmin;
+            }
+            continue;
+          }
+        }
         history_release(slot, stride);
         continue;
       }
@@ -384,22 +421,20 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
       T *h = slot ? slot + 1 : nullptr;
       const PairContactResult<T> c =
           algebraic ? algebraic_contact_step(A, B, a, b, tab, dt, update, h, count)
-                    : convex_contact_step(A, B, a, b, ov, tab, dt, update, h, count, false);
+                    : convex_contact_step(A, B, a, b, ov, tab, dt, update, h, count);
       if (!c.contact) {
         // the algebraic contact found them apart: the slot taken above is freed
         history_release(slot, stride);
         continue;
       }
-      if (!r.contact) {
-        r.cf = c.cf;
-      } else {
-        r.cf.F_A += c.cf.F_A;
-        r.cf.tau_A += c.cf.tau_A;
-        r.cf.tau_B += c.cf.tau_B;
-        r.cf.energy += c.cf.energy;
-        r.cf.fn += c.cf.fn;
-        r.cf.ft += c.cf.ft;
+      if (r.contact != 1) {
+        // the first part contact by overlap: the record's geometry is one
+        // of these (below), not a bridge's
+        r.geo = c.geo;
+        r.vmin = c.vmin;
+        r.cf.rate = c.cf.rate;
       }
+      add_part_force(r, c.cf);
       r.contact = 1;
       if (algebraic) {
         // an overlap length, not a volume: the record's geometry only if

@@ -16,7 +16,7 @@ enum PolyhedronPairCount : int {
   PP_NOCONV,        // GJK non-convergences (overlap computed anyway)
   PP_BIGOVERLAP,    // V > overlap_warn x smaller volume
   PP_NOSLOT,        // part contacts of composites beyond the pair's slots (no history)
-  PP_NOBRIDGE,      // contacts with a liquid bridge law that get no bridge (unequal ellipsoids, composites' parts)
+  PP_NOBRIDGE,      // contacts with a liquid bridge law that get no bridge (unequal ellipsoids, also as parts)
   PP_CONTACTS,      // pair-steps in contact
   PP_NCOUNT
 };

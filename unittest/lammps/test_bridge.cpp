@@ -586,6 +586,128 @@ TEST(Bridge, TwoPolyhedraBridgeRestartsExactly)
     for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
 }
 
+// A composite grain (a dumbbell of two spheres of radius r1, centres
+// +-1.5 r1 on its x axis: the principal axis of the smallest moment, so
+// the body frame keeps it) and a sphere of radius r2 at (x2, y2, 0): the
+// bridge forms between the sphere and the dumbbell's part at +1.5 r1.
+namespace {
+constexpr double DB = 1.5 * R1;    // the parts' offset
+void dumbbell_and_sphere(Lmp &l, double x2, double y2, double e)
+{
+  l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+          "comm_modify vel yes", "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01",
+          "create_box 1 box",
+          "polyhedron_shape s1 ellipsoid " + num(R1) + " " + num(R1) + " " + num(R1),
+          "polyhedron_shape s2 ellipsoid " + num(R2) + " " + num(R2) + " " + num(R2),
+          "polyhedron_shape db composite part s1 " + num(DB) + " 0 0 part s1 " + num(-DB) +
+              " 0 0",
+          "create_atoms 1 single 0 0 0", "create_atoms 1 single " + num(x2) + " " + num(y2) + " 0",
+          "polyhedron_set atom 1 shape db", "polyhedron_set atom 2 shape s2",
+          "polyhedron_set group all density 2500", "pair_style polyhedron",
+          "pair_coeff * * 1e7 0.3 " + num(e) + " 0.0" + BRIDGE, "neighbor 3e-4 bin",
+          "compute er all erotate/polyhedron", "thermo_style custom step pe ke c_er",
+          "thermo_modify norm no"});
+}
+}    // namespace
+
+// The part of a composite bridges like a sphere: Willett's force for
+// R = 2 r1 r2 / (r1 + r2) across the gap from the part, to 1e-12, on both
+// grains, and the law's energy, to 1e-9; no torque on the dumbbell (the pull
+// acts along its axis); ruptured beyond s_c, and not formed again without
+// touching
+TEST(Bridge, CompositePartFollowsWillett)
+{
+  Lmp l;
+  const double x0 = DB + R1 + R2;    // touching
+  dumbbell_and_sphere(l, x0 - 1e-9, 0.0, 1.0);
+  // touching: the bridge forms (a part pair takes its history slot in a
+  // step, not at a run's setup)
+  l.cmds({"run 1", "set atom 1 x 0 y 0 z 0", "velocity all set 0 0 0"});
+  auto *a = l.lmp->atom;
+  for (double f : {0.0, 0.1, 0.4, 0.8, 0.999}) {
+    const double s = f * SC;
+    l.cmd("set atom 2 x " + num(x0 + s));
+    l.cmd("run 0");
+    const double F1 = force_x(l, 1), F2 = force_x(l, 2), Fw = willett(s);
+    const double U = l.lmp->force->pair->eng_vdwl, Uw = willett_energy(s);
+    std::printf("[ bridge   ] composite part, s/s_c %.3f: F %.9e N (Willett %.9e), U %.9e J "
+                "(quadrature %.9e)\n", f, F1, Fw, U, Uw);
+    EXPECT_NEAR(F1, Fw, 1e-12 * Fw) << f;
+    EXPECT_NEAR(F2, -Fw, 1e-12 * Fw) << f;
+    if (f < 0.999) EXPECT_NEAR(U, Uw, 1e-9 * std::fabs(willett_energy(0.0))) << f;
+    const double *t = a->torque[a->map(1)];
+    EXPECT_LE(std::fabs(t[0]) + std::fabs(t[1]) + std::fabs(t[2]), 1e-12 * Fw * R1) << f;
+  }
+  for (double f : {1.001, 0.5}) {
+    l.cmd("set atom 2 x " + num(x0 + f * SC));
+    l.cmd("run 0");
+    EXPECT_EQ(force_x(l, 1), 0.0) << f;
+    EXPECT_EQ(l.lmp->force->pair->eng_vdwl, 0.0) << f;
+  }
+}
+
+// An elastic oblique impact of the sphere on the dumbbell's part (e = 1, no
+// friction): the bridge spins the dumbbell; from its formation until the
+// bodies are apart, kinetic + rotational + pair energy is constant (2e-6 of
+// the kinetic energy), and they leave with |U(0)| less, up to F(0) v dt
+TEST(Bridge, CompositeBridgeKeepsTheEnergy)
+{
+  const double v = 0.15, dt = 1e-7;
+  Lmp l;
+  dumbbell_and_sphere(l, DB + R1 + R2 + 5e-5, 0.4 * R1, 1.0);
+  l.cmds({"velocity all set 0 0 0", "set atom 2 vx " + num(-v), "fix 1 all nve/polyhedron",
+          "timestep " + num(dt), "thermo 100", "run 0"});
+  auto *a = l.lmp->atom;
+  auto energy = [&]() { return two_body_energy(l); };
+  const double K0 = energy();
+  const double U0 = willett_energy(0.0);
+  // a lower bound of the gap to the part: the centres' distance less the
+  // part's offset and both radii
+  auto gap = [&] {
+    const double *x1 = a->x[a->map(1)], *x2 = a->x[a->map(2)];
+    return std::sqrt(std::pow(x2[0] - x1[0], 2) + std::pow(x2[1] - x1[1], 2) +
+                     std::pow(x2[2] - x1[2], 2)) - DB - R1 - R2;
+  };
+  const auto b = track_bridge_until_apart(l, 3000, energy, gap);
+  ASSERT_TRUE(b.formed);
+  ASSERT_GT(b.gap, SC) << "the sphere did not leave";
+  const double K1 = energy();
+  std::printf("[ bridge   ] sphere on a composite: K0 %.9e J, K1 %.9e J, K0 - K1 %.9e J, "
+              "|U(0)| %.9e J, dumbbell spin energy %.3g J; energy from formation on constant "
+              "to %.3g J\n", K0, K1, K0 - K1, -U0, l.thermo("c_er"), b.dev);
+  EXPECT_GT(l.thermo("c_er"), 1e-3 * K0);    // the dumbbell was spun
+  expect_energy_kept(b, K0, K1);
+  EXPECT_NEAR(K0 - K1, -U0, willett(0.0) * 2.0 * v * dt);
+}
+
+// A bridge stretched between the sphere and the spun dumbbell (the impact
+// above, e = 0.7) continues bit for bit after a restart: positions,
+// velocities and spins of both bodies 3000 steps on
+TEST(Bridge, CompositeBridgeRestartsExactly)
+{
+  const std::string file = ::testing::TempDir() + "polydem_bridge_composite_restart.bin";
+  double ref[6][3], got[6][3];
+  {
+    Lmp l;
+    dumbbell_and_sphere(l, DB + R1 + R2 + 5e-5, 0.4 * R1, 0.7);
+    l.cmds({"velocity all set 0 0 0", "set atom 2 vx -0.1", "fix 1 all nve/polyhedron",
+            "timestep 1e-7", "run 15000"});
+    const double U = l.lmp->force->pair->eng_vdwl;
+    std::printf("[ bridge   ] composite: pair energy at the restart %.4g J\n", U);
+    ASSERT_LT(U, 0.0);    // bridged
+    auto *a = l.lmp->atom;
+    const double *x1 = a->x[a->map(1)], *x2 = a->x[a->map(2)];
+    ASSERT_GT(std::hypot(x2[0] - x1[0], x2[1] - x1[1]) - DB - R1 - R2, 0.0);    // apart
+    l.cmds({"write_restart " + file, "run 3000"});
+    two_body_state(l, ref);
+  }
+  Lmp l;
+  run_from_restart(l, file);
+  two_body_state(l, got);
+  for (int r = 0; r < 6; r++)
+    for (int d = 0; d < 3; d++) EXPECT_EQ(got[r][d], ref[r][d]) << r << " " << d;
+}
+
 TEST(Bridge, Errors)
 {
   {

@@ -311,6 +311,25 @@ TEST(PairKokkos, LiquidBridgesMatchPlain)
   }
 }
 
+// liquid bridges between the parts of composites (dumbbells of two spheres
+// in group g1) and the other grains: the part slots of bridged part pairs
+// that no longer overlap are kept alike in both styles
+TEST(PairKokkos, CompositeBridgesMatchPlain)
+{
+  Lmp plain, kk(KK), dry;
+  for (Lmp *l : {&plain, &kk, &dry}) {
+    l->cmds(setup());
+    l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
+             "polyhedron_shape dumb composite part ball -0.7 0 0 part ball 0.7 0 0",
+             "polyhedron_set group g0 shape ball density 1.0",
+             "polyhedron_set group g1 shape dumb scale 0.6 density 1.0", "neighbor 0.15 bin"});
+  }
+  for (Lmp *l : {&plain, &kk}) l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10");
+  for (Lmp *l : {&plain, &kk, &dry}) l->cmd("run 100");
+  compare(plain, kk, "liquid bridges of composites' parts, run 100", true, 10.0);
+  EXPECT_NE(plain.thermo("pe"), dry.thermo("pe"));
+}
+
 // two spheres collide, form a liquid bridge, separate with it stretched
 // (no overlap: the pair is kept by its touch flag, which the history fix
 // keeps over a reneighboring beyond the size list's reach) and rupture it:
