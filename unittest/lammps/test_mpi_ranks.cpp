@@ -227,6 +227,19 @@ TEST(MpiRanks, LiquidBridgesOneVsTwoRanksAgree)
                        "pair_coeff * * 1.0e4 0.3 0.8 0.5 bridge 0.008 20 10"});
 }
 
+// every third particle a dumbbell of two spheres (a composite), the others
+// spheres, all under a liquid bridge law: the part pairs' bridges, kept in
+// their keyed slots across the gap, agree on 1 and 2 ranks
+TEST(MpiRanks, CompositeBridgesOneVsTwoRanksAgree)
+{
+  contacts_one_vs_two({"polyhedron_shape ball ellipsoid 0.8 0.8 0.8",
+                       "polyhedron_shape dumb composite part ball -0.9 0 0 part ball 0.9 0 0",
+                       "polyhedron_set group all shape ball", "variable third atom id%3==0",
+                       "group third variable third",
+                       "polyhedron_set group third shape dumb scale 0.6",
+                       "pair_coeff * * 1.0e4 0.3 0.8 0.5 bridge 0.008 20 10"});
+}
+
 // every other particle a sphere among the cubes and icosahedra, all under a
 // liquid bridge law: the sphere-polyhedron bridges (kept across their gaps
 // by the touch flags) agree on 1 and 2 ranks
