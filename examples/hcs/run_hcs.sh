@@ -1,5 +1,5 @@
 #!/bin/bash
-# The runs of README.md (issue 6, acceptance 3): xi = 2 and 3 with N = 4096
+# The runs of README.md: xi = 2 and 3 with N = 4096
 # (about 60-70 CPU minutes each here; three seeds each), xi = 1.15 with N = 512 and a long warm-up
 # (rotation of a nearly spherical body equilibrates slowly), one after the
 # other on one core; then the plot. Usage: run_hcs.sh [LMP]

@@ -1,5 +1,5 @@
 #!/bin/bash
-# Runs the full-size checks of issue 4 (acceptance 4 and 5) from this folder
+# Runs the full-size checks of pair_style polyhedron from this folder
 # and prints the figures; see README.md. Takes several minutes.
 #   bash run_checks.sh [path/to/lmp]
 set -euo pipefail
