@@ -98,8 +98,11 @@ POLYDEM_FN T point_triangle_dist2(const Vec3<T> &p, const Vec3<T> &a, const Vec3
 // reach the clipping kernel. The bounding-sphere reject has a margin of
 // 1e-9 (r + R) over the exact test's round-off, so it only drops triangles
 // the exact test drops: the answer does not depend on g.sphere being set.
+// d2: where not null, gets the squared distance from c to the triangle when
+// the exact test ran (the cheap rejects leave it as it was).
 template <typename T>
-POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c, T r)
+POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c, T r,
+                              T *d2 = nullptr)
 {
   if (g.sphere) {
     const T *s = g.sphere + 4 * t;
@@ -113,14 +116,17 @@ POLYDEM_FN bool mesh_tri_near(const MeshGridView<T> &g, int t, const Vec3<T> &c,
   for (int k = 0; k < 3; ++k)
     if (c[k] + r < b[k] || c[k] - r > b[3 + k]) return false;
   const T *q = g.tri + 9 * t;
-  return point_triangle_dist2(c, make_vec3(q[0], q[1], q[2]), make_vec3(q[3], q[4], q[5]),
-                              make_vec3(q[6], q[7], q[8])) < r * r;
+  const T dd = point_triangle_dist2(c, make_vec3(q[0], q[1], q[2]), make_vec3(q[3], q[4], q[5]),
+                                    make_vec3(q[6], q[7], q[8]));
+  if (d2) *d2 = dd;
+  return dd < r * r;
 }
 
-// Calls f(t) once for every triangle t near the sphere (c, r).
+// Calls f(t, d2) once for every triangle t near the sphere (c, r), d2 its
+// squared distance from c (that of the near test, point_triangle_dist2).
 // Loops are bounded by the grid size and the bin lists.
 template <typename T, typename F>
-POLYDEM_FN void mesh_for_each_near(const MeshGridView<T> &g, const Vec3<T> &c, T r, F &f)
+POLYDEM_FN void mesh_for_each_near_dist2(const MeshGridView<T> &g, const Vec3<T> &c, T r, F &f)
 {
   int qlo[3], qhi[3];
   for (int d = 0; d < 3; ++d) {
@@ -140,10 +146,19 @@ POLYDEM_FN void mesh_for_each_near(const MeshGridView<T> &g, const Vec3<T> &c, T
           const int fj = tlo[1] > qlo[1] ? tlo[1] : qlo[1];
           const int fk = tlo[2] > qlo[2] ? tlo[2] : qlo[2];
           if (fi != i || fj != j || fk != k) continue;
-          if (!mesh_tri_near(g, t, c, r)) continue;
-          f(t);
+          T d2 = T(0);
+          if (!mesh_tri_near(g, t, c, r, &d2)) continue;
+          f(t, d2);
         }
       }
+}
+
+// Calls f(t) once for every triangle t near the sphere (c, r).
+template <typename T, typename F>
+POLYDEM_FN void mesh_for_each_near(const MeshGridView<T> &g, const Vec3<T> &c, T r, F &f)
+{
+  auto visit = [&](int t, T) { f(t); };
+  mesh_for_each_near_dist2(g, c, r, visit);
 }
 
 }    // namespace polydem

@@ -482,12 +482,10 @@ template <typename T, int MF, int ME> struct WallNearBuild {
   int nv, n, both;
   const int *vadj;    // the template's vertex adjacency, or null (support scans)
   int vstart;         // the last support vertex
-  POLYDEM_FN void operator()(int t)
+  // d2: the squared distance from c to triangle t (mesh_for_each_near_dist2)
+  POLYDEM_FN void operator()(int t, T d2)
   {
-    const T *q = g->tri + 9 * t;
-    const T ds = sqrt(point_triangle_dist2(c, make_vec3(q[0], q[1], q[2]),
-                                           make_vec3(q[3], q[4], q[5]),
-                                           make_vec3(q[6], q[7], q[8]))) - r;
+    const T ds = sqrt(d2) - r;
     if (ds > skin) {    // out of the step's sphere for m < ds
       valid = ds < valid ? ds : valid;
       return;
@@ -564,7 +562,7 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     b.reach = r + b.valid;
     b.n = 0;
     near.built = 1;
-    mesh_for_each_near(g, a.x, b.reach, b);
+    mesh_for_each_near_dist2(g, a.x, b.reach, b);
     if (!(b.valid * T(1 - 1e-6) >= T(0.0625) * b.skin)) {
       // more than cap triangles within skin/16: a list would be rebuilt
       // nearly every step, so none until invalidated (the grid every step)
