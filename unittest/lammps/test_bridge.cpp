@@ -201,6 +201,20 @@ void run_from_restart(Lmp &l, const std::string &file)
           "fix 1 all nve/polyhedron", "timestep 1e-7", "run 3000"});
 }
 
+// l written to a restart file and run 3000 steps on, against a new run from
+// that file: positions, velocities and spins of both bodies bit for bit
+void expect_restart_exact(Lmp &l, const std::string &file)
+{
+  double ref[6][3], got[6][3];
+  l.cmds({"write_restart " + file, "run 3000"});
+  two_body_state(l, ref);
+  Lmp r;
+  run_from_restart(r, file);
+  two_body_state(r, got);
+  for (int k = 0; k < 6; k++)
+    for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
+}
+
 }    // namespace
 
 TEST(Bridge, ForceAndEnergyFollowWillettsClosedForm)
@@ -406,7 +420,6 @@ TEST(Bridge, SphereCubeBridgeRestartsExactly)
 {
   const std::string file = ::testing::TempDir() + "polydem_sphere_cube_bridge.bin";
   const double h = 0.5 * CUBE, v = 0.15;
-  double ref[6][3];
   {
     Lmp l;
     sphere_and_cube(l, 0.5 * h, 0.2 * h, h + R1 + 5e-5, 0.7, 1);
@@ -427,15 +440,8 @@ TEST(Bridge, SphereCubeBridgeRestartsExactly)
     ASSERT_LT(gap, SC);
     ASSERT_LT(l.lmp->force->pair->eng_vdwl, 0.0);    // stretched, not ruptured
     EXPECT_NE(a->omega[a->map(2)][0], 0.0);
-    l.cmds({"write_restart " + file, "run 3000"});
-    two_body_state(l, ref);
+    expect_restart_exact(l, file);
   }
-  Lmp l;
-  run_from_restart(l, file);
-  double got[6][3];
-  two_body_state(l, got);
-  for (int k = 0; k < 6; k++)
-    for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
 }
 
 // Two convex polyhedra (cube.shape of edge 4 mm, and dodecahedron.shape):
@@ -558,7 +564,6 @@ TEST(Bridge, TwoPolyhedraBridgeRestartsExactly)
 {
   const std::string file = ::testing::TempDir() + "polydem_poly_bridge.bin";
   const double h = 0.5 * CUBE, v = 0.15;
-  double ref[6][3], got[6][3];
   {
     Lmp l;
     cube_and_polyhedron(l, "dodecahedron.shape", 0.002, 0.4 * h, h + 0.0029, 0.7);
@@ -576,14 +581,8 @@ TEST(Bridge, TwoPolyhedraBridgeRestartsExactly)
       stretched = elastic && pe < 0.0 && pe > 0.5 * low;
     }
     ASSERT_TRUE(stretched) << "no stretched bridge";
-    l.cmds({"write_restart " + file, "run 3000"});
-    two_body_state(l, ref);
+    expect_restart_exact(l, file);
   }
-  Lmp l;
-  run_from_restart(l, file);
-  two_body_state(l, got);
-  for (int k = 0; k < 6; k++)
-    for (int d = 0; d < 3; d++) EXPECT_EQ(got[k][d], ref[k][d]) << k << " " << d;
 }
 
 // A composite grain (a dumbbell of two spheres of radius r1, centres
@@ -686,7 +685,6 @@ TEST(Bridge, CompositeBridgeKeepsTheEnergy)
 TEST(Bridge, CompositeBridgeRestartsExactly)
 {
   const std::string file = ::testing::TempDir() + "polydem_bridge_composite_restart.bin";
-  double ref[6][3], got[6][3];
   {
     Lmp l;
     dumbbell_and_sphere(l, DB + R1 + R2 + 5e-5, 0.4 * R1, 0.7);
@@ -698,14 +696,8 @@ TEST(Bridge, CompositeBridgeRestartsExactly)
     auto *a = l.lmp->atom;
     const double *x1 = a->x[a->map(1)], *x2 = a->x[a->map(2)];
     ASSERT_GT(std::hypot(x2[0] - x1[0], x2[1] - x1[1]) - DB - R1 - R2, 0.0);    // apart
-    l.cmds({"write_restart " + file, "run 3000"});
-    two_body_state(l, ref);
+    expect_restart_exact(l, file);
   }
-  Lmp l;
-  run_from_restart(l, file);
-  two_body_state(l, got);
-  for (int r = 0; r < 6; r++)
-    for (int d = 0; d < 3; d++) EXPECT_EQ(got[r][d], ref[r][d]) << r << " " << d;
 }
 
 TEST(Bridge, Errors)
