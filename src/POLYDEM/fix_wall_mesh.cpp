@@ -60,7 +60,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
   create_attribute = 1;
   time_integrate = 0;
 
-  wall_bridge[0] = wall_bridge[1] = wall_bridge[2] = 0.0;
+  for (double &b : wall_bridge) b = 0.0;
   const polydem::StlTransform xf = parse_keywords(narg, arg);
 
   // every rank reads the file (meshes are replicated); rank 0 reports

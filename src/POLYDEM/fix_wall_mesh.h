@@ -76,7 +76,9 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   double wall_E, wall_nu, wall_e, wall_mu;    // < 0: the particle type's
   double wall_mur;    // rolling friction mu_r (< 0: the particle type's like pair's)
   double wall_coh;    // dry cohesion (< 0: the particle type's like pair's)
-  double wall_bridge[3];    // liquid bridges of spheres: V_b, gamma, theta [deg] (V_b 0: none)
+  // liquid bridges of spheres: V_b, gamma, theta [deg] (V_b 0: none), the
+  // viscous part's eta and s_min (eta 0: none)
+  double wall_bridge[5];
   std::string servo_var;    // move servo: the target force's equal-style variable ("": a number)
   int servo_ivar;
   double core, patch_angle;

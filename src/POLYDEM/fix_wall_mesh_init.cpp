@@ -150,7 +150,8 @@ void FixWallMesh::init()
     L.mu_r = wall_mur >= 0.0 ? wall_mur : (mur ? mur[t][t] : 0.0);
     L.cohesion = wall_coh >= 0.0 ? wall_coh : (coh ? coh[t][t] : 0.0);
     L.bridge = polydem::make_bridge_law(wall_bridge[0], wall_bridge[1],
-                                        wall_bridge[2] * MY_PI / 180.0);
+                                        wall_bridge[2] * MY_PI / 180.0, wall_bridge[3],
+                                        wall_bridge[4]);
     if (!(ellipsoids ? L.kn > 0.0 : L.E1 > 0.0) || !(et > 0.0))
       error->all(FLERR, "fix wall/mesh: particle type {} has no material (pair_coeff {} {} {})",
                  t, t, t, ellipsoids ? "kn e mu" : "E nu e mu");

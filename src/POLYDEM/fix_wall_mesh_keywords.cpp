@@ -104,6 +104,13 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
                    "in [0, 90) degrees, got '{} {} {}'", arg[iarg + 1], arg[iarg + 2],
                    arg[iarg + 3]);
       iarg += 4;
+    } else if (kw == "viscous") {
+      need(iarg, 2, "eta s_min");
+      for (int k = 0; k < 2; k++) wall_bridge[3 + k] = num(iarg + 1 + k);
+      if (!(wall_bridge[3] > 0.0) || !(wall_bridge[4] > 0.0))
+        error->all(FLERR, "fix wall/mesh: viscous needs the liquid's viscosity eta > 0 and the "
+                   "smallest gap s_min > 0, got '{} {}'", arg[iarg + 1], arg[iarg + 2]);
+      iarg += 3;
     } else if (kw == "offset") {
       need(iarg, 3, "dx dy dz");
       for (int k = 0; k < 3; k++) xf.offset[k] = num(iarg + 1 + k);
@@ -208,6 +215,9 @@ polydem::StlTransform FixWallMesh::parse_keywords(int narg, char **arg)
     } else
       error->all(FLERR, "fix wall/mesh: unknown keyword '{}'", kw);
   }
+  if (wall_bridge[3] > 0.0 && !(wall_bridge[0] > 0.0))
+    error->all(FLERR, "fix wall/mesh: 'viscous eta s_min' is the viscous part of a liquid "
+               "bridge; give 'bridge V_b gamma theta' with it");
 
   // load-time rotation (Rodrigues), applied after the scale
   {

@@ -33,8 +33,10 @@ using MathConst::MY_PI;
 // convention of polydem_contact_law.h (older files begin with overlap/warn > 0);
 // -3 adds rolling resistance (files of -2 are read with none), -4 liquid
 // bridges (files of -3 are read with none), -5 the stiffness of ellipsoid
-// pairs in pair_style polyhedron (files of -4 are read with none)
-static constexpr double RESTART_VERSION = -5.0;
+// pairs in pair_style polyhedron (files of -4 are read with none), -6 the
+// viscous part of liquid bridges (files of -5 are read with none)
+static constexpr double RESTART_VERSION = -6.0;
+static constexpr double RESTART_VERSION_NO_VISCOUS = -5.0;
 static constexpr double RESTART_VERSION_NO_ELLIPSOID_KN = -4.0;
 static constexpr double RESTART_VERSION_NO_BRIDGE = -3.0;
 static constexpr double RESTART_VERSION_NO_ROLLING = -2.0;
@@ -43,6 +45,7 @@ PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nh
     Pair(lmp), style_name(style), history_tag(tag), nhistory_base(nhist), nhistory(nhist), nhistory_contact(nhist),
     nhistory_restart(0), restart_format(3), nhistory_fix(0), ncount(ncnt), rolling(nullptr),
     cohesion(nullptr), bridge_vol(nullptr), bridge_gamma(nullptr), bridge_theta(nullptr),
+    bridge_eta(nullptr), bridge_smin(nullptr),
     roll_kr(polydem::RollingLaw<double>().kr),
     roll_eta(polydem::RollingLaw<double>().eta), avec(nullptr), fix_dummy(nullptr),
     fix_history(nullptr), history_id(0)
@@ -67,7 +70,8 @@ PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nh
 PairPolydem::~PairPolydem()
 {
   if (copymode) return;
-  destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta);
+  destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta, bridge_eta,
+                 bridge_smin);
   modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
 }
 
@@ -77,12 +81,15 @@ PairPolydem::~PairPolydem()
 
 void PairPolydem::allocate_rolling()
 {
-  destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta);
+  destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta, bridge_eta,
+                 bridge_smin);
   create_per_type_pair(rolling, "rolling");
   create_per_type_pair(cohesion, "cohesion");
   create_per_type_pair(bridge_vol, "bridge_vol");
   create_per_type_pair(bridge_gamma, "bridge_gamma");
   create_per_type_pair(bridge_theta, "bridge_theta");
+  create_per_type_pair(bridge_eta, "bridge_eta");
+  create_per_type_pair(bridge_smin, "bridge_smin");
 }
 
 // the law table (polydem_law_table.h) with the settings both styles have;
@@ -101,7 +108,8 @@ int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh,
                                 double *ellipsoid_kn)
 {
   mu_r = coh = 0.0;
-  if (bridge) bridge[0] = bridge[1] = bridge[2] = 0.0;
+  if (bridge)
+    for (int k = 0; k < 5; k++) bridge[k] = 0.0;
   if (ellipsoid_kn) *ellipsoid_kn = 0.0;
   // each keyword: its values, where they go (null: not a keyword of this
   // style), each value's name and range (> 0, >= 0, or an angle in [0, 90))
@@ -114,13 +122,17 @@ int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh,
     Range range[3];
     const char *absent;    // why dest is null
   };
-  const Keyword kws[4] = {
+  const Keyword kws[5] = {
       {"rolling", 1, &mu_r, {"rolling friction mu_r"}, {NONNEGATIVE}, ""},
       {"cohesion", 1, &coh, {"cohesion"}, {NONNEGATIVE}, ""},
       {"bridge", 3, bridge,
        {"bridge liquid volume V_b", "bridge surface tension gamma", "bridge contact angle theta"},
        {POSITIVE, POSITIVE, WETTING_ANGLE},
        "liquid bridges ('bridge') are a part of pair_style polyhedron"},
+      {"viscous", 2, bridge ? bridge + 3 : nullptr,
+       {"viscous viscosity eta", "viscous smallest gap s_min"},
+       {POSITIVE, POSITIVE},
+       "viscous liquid bridges ('viscous') are a part of pair_style polyhedron"},
       {"ellipsoid", 1, ellipsoid_kn, {"ellipsoid stiffness k_n"}, {POSITIVE},
        "'ellipsoid k_n' is a keyword of pair_style polyhedron (here k_n is the pair's own "
        "coefficient)"}};
@@ -136,12 +148,16 @@ int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh,
     if (!kw)
       error->all(FLERR, "pair_coeff {}: unknown keyword '{}' (after the coefficients: "
                  "'rolling mu_r', 'cohesion c'{})", style_name, arg[k],
-                 bridge ? ", 'bridge V_b gamma theta', 'ellipsoid k_n'" : "");
+                 bridge ? ", 'bridge V_b gamma theta', 'viscous eta s_min', 'ellipsoid k_n'"
+                        : "");
     if (!kw->dest) error->all(FLERR, "pair_coeff {}: {}", style_name, kw->absent);
     if (k + kw->n >= narg)
       error->all(FLERR, "pair_coeff {}: '{}' needs {}", style_name, kw->name,
-                 kw->n == 1 ? "a value" : "three values: the liquid volume V_b, the surface "
-                                          "tension gamma and the contact angle theta in degrees");
+                 kw->n == 1   ? "a value"
+                     : kw->n == 2 ? "two values: the liquid's viscosity eta and the smallest "
+                                    "gap s_min"
+                                  : "three values: the liquid volume V_b, the surface "
+                                    "tension gamma and the contact angle theta in degrees");
     for (int m = 0; m < kw->n; m++) {
       const char *word = arg[k + 1 + m];
       const double v = polydem_parse::numeric(FLERR, word, lmp);
@@ -158,6 +174,9 @@ int PairPolydem::coeff_keywords(int narg, char **arg, double &mu_r, double &coh,
     }
     k += 1 + kw->n;
   }
+  if (bridge && bridge[3] > 0.0 && !(bridge[0] > 0.0))
+    error->all(FLERR, "pair_coeff {}: 'viscous eta s_min' is the viscous part of a liquid "
+               "bridge; give 'bridge V_b gamma theta' with it", style_name);
   return first;
 }
 
@@ -169,12 +188,16 @@ void PairPolydem::mix_keywords(int i, int j, bool own)
     bridge_vol[i][j] = sqrt(bridge_vol[i][i] * bridge_vol[j][j]);
     bridge_gamma[i][j] = sqrt(bridge_gamma[i][i] * bridge_gamma[j][j]);
     bridge_theta[i][j] = 0.5 * (bridge_theta[i][i] + bridge_theta[j][j]);
+    bridge_eta[i][j] = sqrt(bridge_eta[i][i] * bridge_eta[j][j]);
+    bridge_smin[i][j] = sqrt(bridge_smin[i][i] * bridge_smin[j][j]);
   }
   rolling[j][i] = rolling[i][j];
   cohesion[j][i] = cohesion[i][j];
   bridge_vol[j][i] = bridge_vol[i][j];
   bridge_gamma[j][i] = bridge_gamma[i][j];
   bridge_theta[j][i] = bridge_theta[i][j];
+  bridge_eta[j][i] = bridge_eta[i][j];
+  bridge_smin[j][i] = bridge_smin[i][j];
 }
 
 void *PairPolydem::extract_models(const char *str, int &dim)
@@ -193,7 +216,8 @@ void *PairPolydem::extract_models(const char *str, int &dim)
 polydem::BridgeLaw<double> PairPolydem::bridge_law(int i, int j) const
 {
   return polydem::make_bridge_law(bridge_vol[i][j], bridge_gamma[i][j],
-                                  bridge_theta[i][j] * MY_PI / 180.0);
+                                  bridge_theta[i][j] * MY_PI / 180.0, bridge_eta[i][j],
+                                  bridge_smin[i][j]);
 }
 
 int PairPolydem::settings_rolling(int narg, char **arg, int iarg)
@@ -258,6 +282,9 @@ void PairPolydem::rolling_coeff_fields(RestartFields &io, int i, int j)
   io(bridge_vol[i][j]);
   io(bridge_gamma[i][j]);
   io(bridge_theta[i][j]);
+  if (!io.has_bridge_viscous()) return;
+  io(bridge_eta[i][j]);
+  io(bridge_smin[i][j]);
 }
 
 std::string PairPolydem::history_fix_id() const
@@ -364,7 +391,7 @@ void PairPolydem::RestartFields::flag_as_double(int &v)
 void PairPolydem::write_restart_settings(FILE *fp)
 {
   double version = RESTART_VERSION;
-  RestartFields io(this, fp, false, 5);
+  RestartFields io(this, fp, false, 6);
   io(version);
   settings_fields(io);
   rolling_settings_fields(io);
@@ -375,12 +402,14 @@ void PairPolydem::read_restart_settings(FILE *fp)
   double version = 0.0;
   RestartFields head(this, fp, true, 0);
   head(version);
-  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_ELLIPSOID_KN &&
+  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_VISCOUS &&
+      version != RESTART_VERSION_NO_ELLIPSOID_KN &&
       version != RESTART_VERSION_NO_BRIDGE && version != RESTART_VERSION_NO_ROLLING)
     error->all(FLERR, "pair_style {}: this restart file was written by an older POLYDEM ({}); "
                "restart it with that version, or write a data file there and start from it",
                style_name, restart_version_text());
-  restart_format = version == RESTART_VERSION                  ? 5
+  restart_format = version == RESTART_VERSION                  ? 6
+      : version == RESTART_VERSION_NO_VISCOUS                    ? 5
       : version == RESTART_VERSION_NO_ELLIPSOID_KN               ? 4
       : version == RESTART_VERSION_NO_BRIDGE                     ? 3
                                                                  : 2;
@@ -392,7 +421,7 @@ void PairPolydem::read_restart_settings(FILE *fp)
 void PairPolydem::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
-  RestartFields io(this, fp, false, 5);
+  RestartFields io(this, fp, false, 6);
   coeff_fields(io);
 }
 

@@ -55,6 +55,8 @@ class PairPolydem : public Pair {
     bool has_bridge() const { return version >= 4; }
     // ... and pair_style polyhedron's stiffness of ellipsoid pairs (since format 5)
     bool has_ellipsoid_kn() const { return version >= 5; }
+    // ... and the viscous part of the liquid bridges (since format 6)
+    bool has_bridge_viscous() const { return version >= 6; }
 
    private:
     PairPolydem *pair;
@@ -79,9 +81,10 @@ class PairPolydem : public Pair {
   // pair (pair_coeff ... rolling mu_r; 0: none), k_r factor, dashpot ratio;
   // dry cohesion per type pair (pair_coeff ... cohesion c; 0: none)
   double **rolling, **cohesion;
-  // liquid bridges per type pair (pair_coeff ... bridge V_b gamma theta;
-  // pair_style polyhedron): volume (0: none), surface tension, contact angle [deg]
-  double **bridge_vol, **bridge_gamma, **bridge_theta;
+  // liquid bridges per type pair (pair_coeff ... bridge V_b gamma theta
+  // [viscous eta s_min]; pair_style polyhedron): volume (0: none), surface
+  // tension, contact angle [deg], viscosity (0: none), smallest viscous gap
+  double **bridge_vol, **bridge_gamma, **bridge_theta, **bridge_eta, **bridge_smin;
   double roll_kr, roll_eta;
   // the law table (polydem_law_table.h) of the contacts: settings from
   // init_style, each type pair's entry from init_one (mixed coefficients)
@@ -117,7 +120,8 @@ class PairPolydem : public Pair {
   // memory->destroy of each array
   template <class... A> void destroy_arrays(A *&...a) { (memory->destroy(a), ...); }
   // pair_coeff's trailing keywords 'rolling mu_r' and 'cohesion c' (each
-  // default 0), 'bridge V_b gamma theta' where bridge is given and
+  // default 0), 'bridge V_b gamma theta' and 'viscous eta s_min' where
+  // bridge (5 values) is given and
   // 'ellipsoid k_n' where ellipsoid_kn is (else errors): the count of the
   // values before them
   int coeff_keywords(int narg, char **arg, double &mu_r, double &coh, double *bridge = nullptr,

@@ -126,7 +126,7 @@ void PairPolyhedron::settings(int narg, char **arg)
 void PairPolyhedron::coeff(int nargs, char **arg)
 {
   if (!allocated) allocate();
-  double mu_r = 0.0, coh = 0.0, bridge[3], kn = 0.0;
+  double mu_r = 0.0, coh = 0.0, bridge[5], kn = 0.0;
   const int narg = coeff_keywords(nargs, arg, mu_r, coh, bridge, &kn);
   if (narg != 4 && narg != 6)
     error->all(FLERR, "pair_coeff polyhedron: expected 'I J E nu e mu' or 'I J e mu', got {} "
@@ -172,6 +172,8 @@ void PairPolyhedron::coeff(int nargs, char **arg)
       bridge_vol[i][j] = bridge[0];
       bridge_gamma[i][j] = bridge[1];
       bridge_theta[i][j] = bridge[2];
+      bridge_eta[i][j] = bridge[3];
+      bridge_smin[i][j] = bridge[4];
       ellipsoid_kn[i][j] = kn;
       pairset[i][j] = 1;
       setflag[i][j] = 1;

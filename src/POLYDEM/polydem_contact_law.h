@@ -275,6 +275,8 @@ template <typename T> struct BridgeLaw {
   T cos_theta = T(1);    // cosine of the contact angle
   T rupture = T(0);      // rupture separation s_c = (1 + theta/2) V_b^(1/3)
   T R = T(0);            // the pair's radius 2 r_A r_B / (r_A + r_B) (set per contact)
+  T eta = T(0);          // viscosity of the liquid (0: no viscous part)
+  T smin = T(0);         // the viscous part's smallest gap (the surfaces' roughness)
 };
 
 template <typename T> struct ContactLaw {
@@ -421,9 +423,23 @@ POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<
 // U(s) = -int_s^s_c F ds' (arctan closed form; U(s < 0) = U(0) + F(0) s),
 // so that the pull F n on A is -dU/dx_A; the U(0) it has on forming is
 // what a rupture dissipates.
-// the law of V_b, gamma, theta [radians] (R set per contact); V_b or gamma
-// not > 0: none
-template <typename T> POLYDEM_FN BridgeLaw<T> make_bridge_law(T volume, T gamma, T theta)
+//
+// Its optional viscous part (Pitois, Moucheront and Chateau, J. Colloid
+// Interface Sci. 231 (2000) 26, their closed form for two equal spheres of
+// radius R, here with the bridge's R): a force on A along -n proportional
+// to the approach speed v_n (the relative velocity at the bridge's point
+// along n; positive when the gap closes),
+//   F_v = -(3/2) pi eta R^2 / D (1 - 1/sqrt(1 + 2 V_b / (pi R D^2)))^2 v_n,
+// D = max(s, s_min): Reynolds' lubrication force 6 pi eta R*^2 v / D
+// (R* = R/2) for a bridge much wider than the gap, falling to zero as the
+// gap outgrows the liquid; s_min (the surfaces' roughness) bounds it where
+// the gap closes and in contact. As the normal dashpot, its coefficient is
+// capped at m_eff / dt. It stores nothing: all its work is dissipated.
+// the law of V_b, gamma, theta [radians], and of the viscous part eta,
+// s_min (R set per contact); V_b or gamma not > 0: none; eta or s_min not
+// > 0: no viscous part
+template <typename T>
+POLYDEM_FN BridgeLaw<T> make_bridge_law(T volume, T gamma, T theta, T eta = T(0), T smin = T(0))
 {
   BridgeLaw<T> b;
   if (!(volume > T(0) && gamma > T(0))) return b;
@@ -431,6 +447,10 @@ template <typename T> POLYDEM_FN BridgeLaw<T> make_bridge_law(T volume, T gamma,
   b.gamma = gamma;
   b.cos_theta = cos(theta);
   b.rupture = (T(1) + T(0.5) * theta) * cbrt(volume);
+  if (eta > T(0) && smin > T(0)) {
+    b.eta = eta;
+    b.smin = smin;
+  }
   return b;
 }
 template <typename T> POLYDEM_FN T bridge_force(const BridgeLaw<T> &b, T s)
@@ -452,13 +472,28 @@ template <typename T> POLYDEM_FN T bridge_energy(const BridgeLaw<T> &b, T s)
   return s < T(0) ? U + F0 * s : U;
 }
 
-// the bridge's pull on A along n at the contact point (g.has_gap), added to
-// a contact's forces and energy
+// the viscous part's coefficient c at gap s: F_v = -c v_n n on A (Pitois)
+template <typename T> POLYDEM_FN T bridge_viscous_coefficient(const BridgeLaw<T> &b, T s)
+{
+  const T pi = T(3.14159265358979323846);
+  const T D = s > b.smin ? s : b.smin;
+  const T q = T(1) - T(1) / sqrt(T(1) + T(2) * b.volume / (pi * b.R * D * D));
+  return T(1.5) * pi * b.eta * b.R * b.R / D * q * q;
+}
+
+// the bridge's pull on A along n at the contact point (g.has_gap), and its
+// viscous force where it has one, added to a contact's forces and energy
 template <typename T, typename Out>
 POLYDEM_FN void add_bridge(const ContactGeometry<T> &g, const BridgeLaw<T> &b,
                            const ContactKinematics<T> &kin, Out &out)
 {
-  const Vec3<T> F = bridge_force(b, g.gap) * g.normal;
+  T f = bridge_force(b, g.gap);
+  if (b.eta > T(0)) {
+    T c = bridge_viscous_coefficient(b, g.gap);
+    if (kin.dt > T(0) && c * kin.dt > kin.meff) c = kin.meff / kin.dt;
+    f -= c * dot(contact_relative_velocity(g, kin), g.normal);
+  }
+  const Vec3<T> F = f * g.normal;
   out.F_A += F;
   out.tau_A += cross(g.centroid - kin.xA, F);
   out.tau_B -= cross(g.centroid - kin.xB, F);

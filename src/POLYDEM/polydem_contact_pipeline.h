@@ -203,7 +203,7 @@ convex_contact_step(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
 template <typename T>
 POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
                                                const PosedShape<T> &a, const PosedShape<T> &b,
-                                               const LawTable<T> &tab)
+                                               const LawTable<T> &tab, T dt)
 {
   PairContactResult<T> r;
   r.contact = 0;
@@ -213,7 +213,7 @@ POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const
   if ((ra > T(0)) != (rb > T(0)) &&
       view_is_convex_polyhedron(ra > T(0) ? *b.view : *a.view)) {
     const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
-                                                     A.m * B.m / (A.m + B.m), T(0), A.m, B.m);
+                                                     A.m * B.m / (A.m + B.m), dt, A.m, B.m);
     r.cf = ContactForce<T>{};
     const bool sa = ra > T(0);
     if (!sphere_polyhedron_bridge(sa ? a : b, sa ? b : a, e.bridge, sa, kin, r.cf)) return r;
@@ -227,7 +227,7 @@ POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const
   if (view_is_convex_polyhedron(*a.view) && view_is_convex_polyhedron(*b.view)) {
     // two convex polyhedra: Willett's force across their distance
     const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
-                                                     A.m * B.m / (A.m + B.m), T(0), A.m, B.m);
+                                                     A.m * B.m / (A.m + B.m), dt, A.m, B.m);
     r.cf = ContactForce<T>{};
     ContactGeometry<T> g{};
     if (!polyhedron_pair_bridge(a, b, e.bridge, kin, r.cf, &g)) return r;
@@ -252,7 +252,7 @@ POLYDEM_FN PairContactResult<T> bridge_contact(const PolyhedronBody<T> &A, const
   g.gap = gap;
   r.geo = g;
   const ContactKinematics<T> kin = make_kinematics(A.shape.x, B.shape.x, A.v, B.v, A.w, B.w,
-                                                   A.m * B.m / (A.m + B.m), T(0), A.m, B.m);
+                                                   A.m * B.m / (A.m + B.m), dt, A.m, B.m);
   r.cf = ContactForce<T>{};
   add_bridge(g, law, kin, r.cf);
   const T Vi = posed_volume(a), Vj = posed_volume(b);
@@ -396,7 +396,7 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
         // (bridge_contact: the slot keeps its key, its friction and rolling
         // history are cleared), else the slot is given up
         if (slot && ov.status == STATUS_SEPARATED && tab.bridge_reach > T(0)) {
-          const PairContactResult<T> c = bridge_contact(A, B, a, b, tab);
+          const PairContactResult<T> c = bridge_contact(A, B, a, b, tab, update ? dt : T(0));
           if (c.contact == 2) {
             history_release(slot + 1, tab.nhist);
             add_part_force(r, c.cf);
@@ -493,7 +493,7 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     PairContactResult<T> r;
     r.contact = 0;
     if (touching && tab.bridge_reach > T(0) && ov.status == STATUS_SEPARATED)
-      r = bridge_contact(A, B, a, b, tab);
+      r = bridge_contact(A, B, a, b, tab, update ? dt : T(0));
     return r;
   }
   return convex_contact_step(A, B, a, b, ov, tab, dt, update, hist, count);

@@ -187,12 +187,12 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
     } else
       out.fresh |= 1 << k;
     ContactForce<T> cf{};
+    // the mass the contact point sees
+    const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
+    kin.meff = T(1) / point_inverse_mass(T(1) / m, Iinv, rn);
     if (bridge) {
       add_bridge(g, law.bridge, kin, cf);
     } else {
-      // the mass the contact point sees
-      const Vec3<T> rn = matTvec(R, cross(g.centroid - x, g.normal));
-      kin.meff = T(1) / point_inverse_mass(T(1) / m, Iinv, rn);
       cf = contact_step(g, law, kin, shear, CONTACT_HIST_ROLL);
       out.ncontact++;
     }

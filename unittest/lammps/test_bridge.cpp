@@ -19,7 +19,16 @@
 //    an off-centre elastic impact that spins the cube keeps the energy
 //    from the bridge's formation on (2e-6) and loses |U(0)|; a bridge
 //    stretched between them continues bit for bit after a restart;
-//  - errors: pair_style ellipsoid, a skin below s_c, a bad angle.
+//  - the viscous part (pair_coeff ... viscous eta s_min): the force on each
+//    sphere is Willett's plus Pitois et al.'s closed form (-c v_n along n,
+//    c = 3/2 pi eta R^2 / D (1 - 1/sqrt(1 + 2 V_b / (pi R D^2)))^2,
+//    D = max(s, s_min)) at gaps s_min / 2 .. s_c and in contact, to 1e-12;
+//    its coefficient is capped at m_eff / dt; a collision that forms and
+//    stretches a viscous bridge loses from its formation on exactly the
+//    viscous work, sum c v_n^2 dt (to 0.1 %), and a stretched viscous bridge
+//    continues bit for bit after a restart;
+//  - errors: pair_style ellipsoid, a skin below s_c, a bad angle, a viscous
+//    part without a bridge.
 #include "polydem_lmp.h"
 
 #include "atom.h"
@@ -72,8 +81,24 @@ double willett_energy(double s)
 const std::string BRIDGE =
     " bridge " + num(VB) + " " + num(GAMMA) + " " + num(THETA_DEG);
 
+// the viscous part: water's viscosity, the smallest gap 1 um
+constexpr double ETA = 1e-3, SMIN = 1e-6;
+const std::string VISCOUS = BRIDGE + " viscous " + num(ETA) + " " + num(SMIN);
+
+// Pitois et al.'s coefficient c at gap s (the force on the first sphere
+// along the line of centres is -c v_n, v_n the approach speed), for the
+// bridge radius R and the smallest gap s_min
+double pitois(double s, double R = RSTAR, double eta = ETA, double smin = SMIN)
+{
+  const double D = std::fmax(s, smin);
+  const double q = 1.0 - 1.0 / std::sqrt(1.0 + 2.0 * VB / (M_PI * R * D * D));
+  return 1.5 * M_PI * eta * R * R / D * q * q;
+}
+
 // two spheres on the x axis, the second at x2, the bridge law on type 1
-void two_spheres(Lmp &l, double x2, double e, const std::string &skin = "3e-4")
+// (law: pair_coeff's keywords after the coefficients)
+void two_spheres(Lmp &l, double x2, double e, const std::string &skin = "3e-4",
+                 const std::string &law = BRIDGE)
 {
   l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
           "comm_modify vel yes", "region box block -0.01 0.01 -0.01 0.01 -0.01 0.01",
@@ -83,7 +108,7 @@ void two_spheres(Lmp &l, double x2, double e, const std::string &skin = "3e-4")
           "create_atoms 1 single 0 0 0", "create_atoms 1 single " + num(x2) + " 0 0",
           "polyhedron_set atom 1 shape s1", "polyhedron_set atom 2 shape s2",
           "polyhedron_set group all density 2500", "pair_style polyhedron",
-          "pair_coeff * * 1e7 0.3 " + num(e) + " 0.0" + BRIDGE, "neighbor " + skin + " bin",
+          "pair_coeff * * 1e7 0.3 " + num(e) + " 0.0" + law, "neighbor " + skin + " bin",
           "thermo_style custom step pe ke", "thermo_modify norm no"});
 }
 
@@ -700,6 +725,134 @@ TEST(Bridge, CompositeBridgeRestartsExactly)
   }
 }
 
+// The viscous part: at gaps from s_min / 2 to s_c, the spheres moving
+// apart and together, the force on each is Willett's plus Pitois et al.'s
+// -c v_n (at setup: no cap), to 1e-12; in contact (e = 1, no dashpot) the
+// velocity adds c(s_min) v_n; without 'viscous' the velocity adds nothing.
+TEST(Bridge, ViscousPartFollowsPitois)
+{
+  Lmp l;
+  two_spheres(l, R1 + R2 - 1e-9, 1.0, "3e-4", VISCOUS);
+  l.cmd("run 0");    // touching: the bridge forms
+  int nchecked = 0;
+  for (double s : {0.5 * SMIN, SMIN, 3.0 * SMIN, 0.01 * SC, 0.1 * SC, 0.4 * SC, 0.8 * SC,
+                   0.999 * SC})
+    for (double v : {0.02, -0.05}) {
+      // sphere 2 moves away at v, sphere 1 towards it at v / 3
+      l.cmds({"set atom 2 x " + num(R1 + R2 + s), "set atom 2 vx " + num(v),
+              "set atom 1 vx " + num(v / 3.0), "run 0"});
+      const double vn = v / 3.0 - v;    // approach speed (v_1 - v_2).n
+      const double F = willett(s) - pitois(s) * vn;
+      std::printf("[ bridge   ] viscous, s %.4g m, v_n %+.3f m/s: F %.9e N (Willett %.9e, "
+                  "Pitois %+.9e)\n", s, vn, force_x(l, 1), willett(s), -pitois(s) * vn);
+      EXPECT_NEAR(force_x(l, 1), F, 1e-12 * std::fabs(F)) << s << " " << v;
+      EXPECT_NEAR(force_x(l, 2), -F, 1e-12 * std::fabs(F)) << s << " " << v;
+      nchecked++;
+    }
+  EXPECT_EQ(nchecked, 16);
+  // in contact: the viscous part at s_min, on top of the (undamped) contact
+  l.cmds({"set atom 2 x " + num(R1 + R2 - 2e-7), "set atom 2 vx 0", "set atom 1 vx 0", "run 0"});
+  const double F0 = force_x(l, 1);
+  l.cmds({"set atom 2 vx 0.03", "run 0"});
+  EXPECT_NEAR(force_x(l, 1) - F0, pitois(SMIN) * 0.03, 1e-9 * std::fabs(F0));
+  // the capillary bridge alone does not see the velocity
+  Lmp d;
+  two_spheres(d, R1 + R2 - 1e-9, 1.0);
+  d.cmds({"run 0", "set atom 2 x " + num(R1 + R2 + 0.1 * SC), "set atom 2 vx 0.05", "run 0"});
+  EXPECT_NEAR(force_x(d, 1), willett(0.1 * SC), 1e-12 * willett(0.1 * SC));
+}
+
+// Above setup, the viscous coefficient is capped at m_eff / dt (as the
+// normal dashpot): with eta 1e4 times water's the force in a step is
+// Willett's plus (m_eff / dt) times the half-step velocities' approach
+TEST(Bridge, ViscousPartIsCappedAtTheStableStep)
+{
+  Lmp l;
+  const double dt = 1e-6;
+  two_spheres(l, R1 + R2 - 1e-9, 1.0, "3e-4",
+              BRIDGE + " viscous " + num(1e4 * ETA) + " " + num(SMIN));
+  l.cmds({"run 0", "set atom 2 x " + num(R1 + R2 + 0.01 * SC), "velocity all set 0 0 0",
+          "set atom 2 vx 0.02", "fix 1 all nve/polyhedron", "timestep " + num(dt), "run 1"});
+  auto *a = l.lmp->atom;
+  const int i1 = a->map(1), i2 = a->map(2);
+  const double m1 = a->rmass[i1], m2 = a->rmass[i2], meff = m1 * m2 / (m1 + m2);
+  // the velocities the step's force saw: v(n + 1/2) = v(n + 1) - f dt / (2 m)
+  const double v1 = a->v[i1][0] - 0.5 * dt * a->f[i1][0] / m1;
+  const double v2 = a->v[i2][0] - 0.5 * dt * a->f[i2][0] / m2;
+  const double s = a->x[i2][0] - a->x[i1][0] - R1 - R2;
+  const double c = 1e4 * pitois(s);
+  ASSERT_GT(c * dt, meff) << "the case must hit the cap";
+  const double F = willett(s) - meff / dt * (v1 - v2);
+  std::printf("[ bridge   ] viscous cap: c dt / m_eff %.3g, F %.9e N (expected %.9e)\n",
+              c * dt / meff, force_x(l, 1), F);
+  EXPECT_NEAR(force_x(l, 1), F, 1e-9 * std::fabs(F));
+}
+
+// A head-on collision (e = 1, no friction) that forms a viscous bridge and
+// pulls it apart: from the bridge's formation on, kinetic + pair energy
+// falls by the viscous work alone, the trapezoidal sum over the steps of
+// c v_n^2 dt (v_n of the half-step velocities each force saw), to 0.1 %; it
+// rises in no step by more than the elastic collision's round-off (2e-6 of
+// the kinetic energy, as without the viscous part).
+TEST(Bridge, ViscousBridgeDissipatesItsWork)
+{
+  Lmp l;
+  const double v = 0.15, dt = 1e-7;
+  two_spheres(l, R1 + R2 + 5e-5, 1.0, "3e-4", VISCOUS);
+  l.cmds({"velocity all set 0 0 0", "set atom 1 vx " + num(v), "set atom 2 vx " + num(-v),
+          "fix 1 all nve/polyhedron", "timestep " + num(dt), "thermo 100", "run 0"});
+  auto *a = l.lmp->atom;
+  auto energy = [&]() { return two_body_kinetic(l) + l.lmp->force->pair->eng_vdwl; };
+  const double K0 = two_body_kinetic(l);
+  bool formed = false;
+  double E_formed = 0.0, work = 0.0, rise = 0.0, E_last = 0.0, gap = 0.0;
+  for (int k = 0; k < 100000 && !(formed && gap > 1.2 * SC); k++) {
+    l.cmd("run 1 pre no post no");
+    const int i1 = a->map(1), i2 = a->map(2);
+    gap = a->x[i2][0] - a->x[i1][0] - R1 - R2;
+    const double pe = l.lmp->force->pair->eng_vdwl, E = energy();
+    if (!formed && !(pe < 0.0)) continue;
+    // the viscous power of this step's force (0 once ruptured), half of it
+    // in the step it forms (its first half-kick came before E_formed)
+    const double v1 = a->v[i1][0] - 0.5 * dt * a->f[i1][0] / a->rmass[i1];
+    const double v2 = a->v[i2][0] - 0.5 * dt * a->f[i2][0] / a->rmass[i2];
+    const double P = gap < SC ? pitois(gap) * (v1 - v2) * (v1 - v2) : 0.0;
+    if (!formed) {
+      formed = true;
+      E_formed = E_last = E;
+      work = 0.5 * P * dt;
+      continue;
+    }
+    work += P * dt;
+    rise = std::fmax(rise, E - E_last);
+    E_last = E;
+  }
+  ASSERT_TRUE(formed);
+  ASSERT_GT(gap, SC) << "the spheres did not separate";
+  const double loss = E_formed - energy();
+  std::printf("[ bridge   ] viscous collision: energy lost from formation on %.9e J, viscous "
+              "work %.9e J (ratio %.6f); largest rise in a step %.3g J\n", loss, work,
+              loss / work, rise);
+  EXPECT_GT(work, 0.0);
+  EXPECT_NEAR(loss, work, 1e-3 * work);
+  EXPECT_LE(rise, 2e-6 * K0);
+}
+
+// A stretched viscous bridge continues bit for bit after a restart (its
+// eta and s_min are in the restart file)
+TEST(Bridge, ViscousBridgeRestartsExactly)
+{
+  Lmp l;
+  two_spheres(l, R1 + R2 + 5e-5, 0.7, "3e-4", VISCOUS);
+  l.cmds({"velocity all set 0 0 0", "set atom 1 vx 0.1", "set atom 2 vx -0.05",
+          "fix 1 all nve/polyhedron", "timestep 1e-7", "run 6000"});
+  auto *a = l.lmp->atom;
+  const double gap = a->x[a->map(2)][0] - a->x[a->map(1)][0] - R1 - R2;
+  EXPECT_GT(gap, 0.0);
+  EXPECT_LT(gap, SC);
+  expect_restart_exact(l, ::testing::TempDir() + "polydem_viscous_restart.bin");
+}
+
 TEST(Bridge, Errors)
 {
   {
@@ -714,6 +867,10 @@ TEST(Bridge, Errors)
   l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07 95", "contact angle theta must be in [0, 90)");
   l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 0 0.07 10", "liquid volume V_b must be > 0");
   l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 -1 10", "surface tension gamma must be > 0");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 viscous 1e-3 1e-6", "give 'bridge V_b gamma theta' with it");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07 10 viscous 1e-3", "needs two values");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07 10 viscous 0 1e-6", "viscosity eta must be > 0");
+  l.expect_error("pair_coeff * * 1e7 0.3 0.9 0.5 bridge 1e-11 0.07 10 viscous 1e-3 -1", "smallest gap s_min must be > 0");
   Lmp e;
   e.cmds(polydem_test::unit_box(1, {"pair_style ellipsoid"}));
   e.expect_error("pair_coeff * * 1e4 0.9 0.5 bridge 1e-11 0.07 10", "part of pair_style polyhedron");

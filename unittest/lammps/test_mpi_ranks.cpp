@@ -241,11 +241,11 @@ TEST(MpiRanks, CompositeBridgesOneVsTwoRanksAgree)
 }
 
 // every other particle a sphere among the cubes and icosahedra, all under a
-// liquid bridge law: the sphere-polyhedron bridges (kept across their gaps
-// by the touch flags) agree on 1 and 2 ranks
+// liquid bridge law with a viscous part: the sphere-polyhedron bridges
+// (kept across their gaps by the touch flags) agree on 1 and 2 ranks
 TEST(MpiRanks, SpherePolyhedronBridgesOneVsTwoRanksAgree)
 {
   contacts_one_vs_two({"polyhedron_shape ball ellipsoid 0.8 0.8 0.8", "variable odd atom id%2",
                        "group odd variable odd", "polyhedron_set group odd shape ball",
-                       "pair_coeff * * 1.0e4 0.3 0.8 0.5 bridge 0.008 20 10"});
+                       "pair_coeff * * 1.0e4 0.3 0.8 0.5 bridge 0.008 20 10 viscous 0.05 0.01"});
 }

@@ -284,7 +284,7 @@ TEST(PairKokkos, CompositesMatchPlain)
 }
 
 // all grains spheres (then a quarter spheres among polyhedra: sphere-
-// polyhedron and polyhedron-polyhedron bridges) joined by
+// polyhedron and polyhedron-polyhedron bridges, with a viscous part) joined by
 // liquid bridges: the bridged pairs that no
 // longer overlap are kept by their touch flags alike in both styles
 TEST(PairKokkos, LiquidBridgesMatchPlain)
@@ -298,7 +298,10 @@ TEST(PairKokkos, LiquidBridgesMatchPlain)
       l->cmds({"polyhedron_shape ball ellipsoid 0.58 0.58 0.58",
                "polyhedron_set group " + group + " shape ball density 1.0", "neighbor 0.15 bin"});
     }
-    for (Lmp *l : {&plain, &kk}) l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10");
+    // (the mixed scene's bridges with their viscous part)
+    const std::string viscous = group == "g0" ? " viscous 0.05 0.01" : "";
+    for (Lmp *l : {&plain, &kk})
+      l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 bridge 1e-3 10 10" + viscous);
     for (Lmp *l : {&plain, &kk, &dry}) l->cmd("run 100");
     // (the polyhedron pairs' bridges act along GJK's and EPA's converged
     // simplices, whose round-off of 1e-16 of the size the dense lattice's

@@ -333,15 +333,15 @@ std::string bridge_fix(const std::string &stl)
 }
 // a sphere touching the floor (overlap 1e-8 m), no gravity, the wall with
 // the bridge; one step forms the bridge, then the sphere is given the
-// upward velocity v0
-void bridge_scene(Lmp &l, const std::string &stl, double v0)
+// upward velocity v0 (more: fix wall/mesh keywords after the bridge's)
+void bridge_scene(Lmp &l, const std::string &stl, double v0, const std::string &more = "")
 {
   l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
           "comm_modify vel yes", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2", "create_box 1 box",
           "polyhedron_shape s ellipsoid " + num(R) + " " + num(R) + " " + num(R),
           "create_atoms 1 single 0 0 " + num(R - 1e-8), "polyhedron_set atom 1 density " + num(RHO),
           "pair_style ellipsoid", "pair_coeff * * 1e4 0.5 0.5", "neighbor 0.001 bin",
-          "fix nve all nve/polyhedron", bridge_fix(stl), "timestep 5e-5", "run 1",
+          "fix nve all nve/polyhedron", bridge_fix(stl) + more, "timestep 5e-5", "run 1",
           "velocity all set 0 0 " + num(v0)});
 }
 // U(s) = -int_s^s_c F (Simpson, 4,000 intervals)
@@ -420,6 +420,45 @@ TEST(WallBridge, LiftedSphereKeepsItsEnergyAndRuptures)
     const std::string err = l.error_of("fix w all wall/mesh " + stl + kw);
     EXPECT_NE(err.find("bridge"), std::string::npos) << kw << ": " << err;
   }
+}
+
+// The bridge's viscous part on the wall (fix wall/mesh ... viscous eta
+// s_min): at gaps s_min / 2 .. s_c, the sphere rising and sinking, the
+// wall's force on it is Willett's pull plus Pitois et al.'s -c v_n with the
+// sphere-plane radius 2 r, c = 3/2 pi eta (2r)^2 / D (1 - 1/sqrt(1 + 2 V /
+// (pi 2r D^2)))^2, D = max(s, s_min) (J. Colloid Interface Sci. 231 (2000)
+// 26; Reynolds' 6 pi eta r^2 v / D for a wide bridge), to 1e-12 (at setup:
+// no cap). 'viscous' without 'bridge' is an error.
+TEST(WallBridge, ViscousPartFollowsPitois)
+{
+  const std::string stl = bridge_floor();
+  const double eta = 1e-3, smin = 1e-6, Rb = 2.0 * R;
+  Lmp l;
+  bridge_scene(l, stl, 0.0, " viscous " + num(eta) + " " + num(smin));
+  int nchecked = 0;
+  for (double s : {0.5 * smin, smin, 4.0 * smin, 0.01 * rupture_gap(), 0.3 * rupture_gap(),
+                   0.9 * rupture_gap()})
+    for (double vz : {0.01, -0.004}) {
+      l.cmds({"set atom 1 z " + num(R + s), "set atom 1 vz " + num(vz), "run 0"});
+      const double D = std::fmax(s, smin);
+      const double q = 1.0 - 1.0 / std::sqrt(1.0 + 2.0 * BV / (M_PI * Rb * D * D));
+      const double c = 1.5 * M_PI * eta * Rb * Rb / D * q * q;
+      // n points down, to the wall: the approach speed is -vz
+      const double fz = -(willett_wall(s) + c * vz);
+      std::printf("[ wall bridge ] viscous, s %.4g m, vz %+.3f m/s: f_z %.9e N (expected %.9e)\n",
+                  s, vz, l.lmp->atom->f[0][2], fz);
+      EXPECT_NEAR(l.lmp->atom->f[0][2], fz, 1e-12 * std::fabs(fz)) << s << " " << vz;
+      nchecked++;
+    }
+  EXPECT_EQ(nchecked, 12);
+  Lmp e;
+  e.cmds({"units si", "atom_style polyhedron", "region box block -0.2 0.2 -0.2 0.2 -0.2 0.2",
+          "create_box 1 box"});
+  EXPECT_NE(e.error_of("fix w all wall/mesh " + stl + " viscous 1e-3 1e-6").find("give 'bridge"),
+            std::string::npos);
+  EXPECT_NE(e.error_of("fix w all wall/mesh " + stl + " bridge 1e-9 0.07 10 viscous 0 1e-6")
+                .find("viscosity eta > 0"),
+            std::string::npos);
 }
 
 // a bridge stretched across the gap (the sphere 0.2 mm above the mesh,
