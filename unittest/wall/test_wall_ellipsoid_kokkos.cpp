@@ -76,11 +76,13 @@ TEST(WallEllipsoidKokkos, SpheresByVolumeKkEqualsPlain)
   const std::string box = box_file("sph_kk_box.stl");
   const KkScene sc = scene_under_pair_polyhedron("pair_coeff * * 1e6 0.3 0.6 0.3",
                                                  "polyhedron_shape e ellipsoid 0.7 0.7 0.7");
-  // with liquid bridges on the walls (V_b 5e-12: s_c 0.19 mm, F(0) 4.6x a sphere's weight)
-  for (const std::string kw : {"", " bridge 5e-12 0.072 10"}) {
+  // with liquid bridges on the walls (V_b 5e-12: s_c 0.19 mm, F(0) 4.6x a sphere's weight),
+  // then with their viscous part (water, s_min 1 um)
+  for (const std::string kw :
+       {"", " bridge 5e-12 0.072 10", " bridge 5e-12 0.072 10 viscous 1e-3 1e-6"}) {
     const std::string args = box + " friction 0.5 restitution 0.5 move translate 0.05 0 0" + kw;
     const KkSnapshot p = kk_run(sc, {}, args), k = kk_run(sc, KK, args);
-    kk_compare(sc, p, k, kw.empty() ? "spheres by volume" : "spheres by volume, bridges");
+    kk_compare(sc, p, k, ("spheres by volume" + kw).c_str());
     EXPECT_GE(p.contacts, 30.0);
   }
 }

@@ -24,9 +24,10 @@ TEST(WallEllipsoidRanks, OneVsTwoRanks)
   for (const std::string args : {"", " flip yes move translate 0.03 0 0", " rolling 0.2 cohesion 0.05",
                                  " move servo 0 0 -1 0.02 0.05 0.01"})
     ranks_one_vs_n(c, 18, stl + " friction 0.5" + args);
-  // spheres with liquid bridges on the walls (their bridges migrate in the wall history)
+  // spheres with liquid bridges (and their viscous part) on the walls (their bridges
+  // migrate in the wall history)
   RanksCase s = c;
   for (auto &cmd : s.setup)
     if (cmd.rfind("polyhedron_shape e", 0) == 0) cmd = "polyhedron_shape e ellipsoid 0.7 0.7 0.7";
-  ranks_one_vs_n(s, 18, stl + " friction 0.5 bridge 5e-12 0.072 10");
+  ranks_one_vs_n(s, 18, stl + " friction 0.5 bridge 5e-12 0.072 10 viscous 1e-3 1e-6");
 }
