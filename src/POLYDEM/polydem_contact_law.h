@@ -433,8 +433,10 @@ POLYDEM_FN Vec3<T> rolling_torque(const ContactGeometry<T> &g, const RollingLaw<
 // D = max(s, s_min): Reynolds' lubrication force 6 pi eta R*^2 v / D
 // (R* = R/2) for a bridge much wider than the gap, falling to zero as the
 // gap outgrows the liquid; s_min (the surfaces' roughness) bounds it where
-// the gap closes and in contact. As the normal dashpot, its coefficient is
-// capped at m_eff / dt. It stores nothing: all its work is dissipated.
+// the gap closes. It acts across the gap (s > 0) only: in contact the
+// contact's own dashpot damps the normal motion, and the two together could
+// exceed the stable step. As the normal dashpot, its coefficient is capped
+// at m_eff / dt. It stores nothing: all its work is dissipated.
 // the law of V_b, gamma, theta [radians], and of the viscous part eta,
 // s_min (R set per contact); V_b or gamma not > 0: none; eta or s_min not
 // > 0: no viscous part
@@ -482,13 +484,14 @@ template <typename T> POLYDEM_FN T bridge_viscous_coefficient(const BridgeLaw<T>
 }
 
 // the bridge's pull on A along n at the contact point (g.has_gap), and its
-// viscous force where it has one, added to a contact's forces and energy
+// viscous force across a gap where it has one, added to a contact's forces
+// and energy
 template <typename T, typename Out>
 POLYDEM_FN void add_bridge(const ContactGeometry<T> &g, const BridgeLaw<T> &b,
                            const ContactKinematics<T> &kin, Out &out)
 {
   T f = bridge_force(b, g.gap);
-  if (b.eta > T(0)) {
+  if (b.eta > T(0) && g.gap > T(0)) {
     T c = bridge_viscous_coefficient(b, g.gap);
     if (kin.dt > T(0) && c * kin.dt > kin.meff) c = kin.meff / kin.dt;
     f -= c * dot(contact_relative_velocity(g, kin), g.normal);
