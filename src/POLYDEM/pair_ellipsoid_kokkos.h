@@ -32,6 +32,11 @@ template <class DeviceType> class PairEllipsoidKokkos : public PairEllipsoid {
   ~PairEllipsoidKokkos() override;
   void compute(int, int) override;
   void init_style() override;
+  void init_list(int id, NeighList *ptr) override
+  {
+    PairEllipsoid::init_list(id, ptr);
+    kk_init_list<DeviceType>(ptr);
+  }
 
  protected:
   class AtomVecPolyhedronKokkos *avecKK;

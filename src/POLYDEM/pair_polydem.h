@@ -180,6 +180,10 @@ class PairPolydem : public Pair {
   void kk_sync_atoms(int eflag, int vflag);
   template <class DeviceType> class AtomVecPolyhedronKokkos *kk_init_before(bool history);
   template <class DeviceType> void kk_init_after();
+  // init_list: a new Kokkos list starts narrow (its first build widens it
+  // to 1.2 x the most neighbors an atom has), so that it and the history
+  // arrays sized by its width follow the packing, not LAMMPS's 16
+  template <class DeviceType> void kk_init_list(class NeighList *);
 };
 
 }    // namespace LAMMPS_NS

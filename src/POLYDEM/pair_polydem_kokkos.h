@@ -13,6 +13,7 @@
 #include "force.h"
 #include "kokkos_type.h"
 #include "memory_kokkos.h"
+#include "neigh_list_kokkos.h"
 #include "pair_polydem.h"
 #include "polydem_history_kokkos.h"
 #include "polydem_kokkos_masks.h"
@@ -121,6 +122,21 @@ template <class DeviceType> void PairPolydem::kk_init_after()
       std::is_same<DeviceType, LMPHostType>::value &&
           !std::is_same<DeviceType, LMPDeviceType>::value,
       std::is_same<DeviceType, LMPDeviceType>::value);
+}
+
+/* ----------------------------------------------------------------------
+   a list not yet built starts 2 neighbors wide instead of NeighListKokkos's
+   16: its first build finds the widest row and widens it to 1.2 x that
+   (npair_kokkos.cpp), which FixNeighHistoryKokkos's firstflag and
+   firstvalue (maxatom x width x values) follow. A dense packing of
+   polyhedra has 3-6 half-list neighbors per atom, so the padding to 16
+   costs about 1 KB per particle of memory otherwise.
+------------------------------------------------------------------------- */
+
+template <class DeviceType> void PairPolydem::kk_init_list(NeighList *ptr)
+{
+  auto *l = dynamic_cast<NeighListKokkos<DeviceType> *>(ptr);
+  if (l && l->d_neighbors.extent(0) == 0) l->maxneighs = 2;
 }
 
 }    // namespace LAMMPS_NS

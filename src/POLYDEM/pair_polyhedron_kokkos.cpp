@@ -136,7 +136,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
   Kokkos::View<char *, DeviceType> workspace;
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
-  // per-contact records by pair index (CR_ID1 = 0: none), if store_contacts
+  // per-contact records by slot (pair index - first; CR_ID1 = 0: none), if store_contacts
   Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> records;
   int store_contacts;
   int first;    // pair index of slot 0
@@ -164,7 +164,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
     if (store_contacts && c.contact == 1) {
       const double pi[3] = {xi.x, xi.y, xi.z}, pj[3] = {xj.x, xj.y, xj.z};
       if (polydem::contact_owned(newton_pair, j < nlocal, this->tag(i), this->tag(j), pi, pj))
-        polydem::fill_contact_record(&records(p, 0), this->tag(i), this->tag(j), this->mask(i), this->mask(j), c.vmin,
+        polydem::fill_contact_record(&records(p - first, 0), this->tag(i), this->tag(j), this->mask(i), this->mask(j), c.vmin,
                                      c.geo, c.cf);
     }
     const double F[3] = {c.cf.F_A.x, c.cf.F_A.y, c.cf.F_A.z};
@@ -354,38 +354,40 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
               vflag_atom};
   fn.dt = update->dt;
   fn.store_contacts = store_contacts;
+  // records: one per slot, copied out after each batch (memory by slots,
+  // not by pairs: 152 B per slot beside its workspace)
   if (store_contacts) {
-    if ((int) d_records.extent(0) < npairs)
+    if ((int) d_records.extent(0) < nslots)
       d_records = Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType>(
-          "polyhedron/kk:records", npairs + npairs / 5 + 16);
-    Kokkos::deep_copy(d_records, 0.0);
+          "polyhedron/kk:records", nslots);
     fn.records = d_records;
   }
 
   PolyReduce total;
   for (int first = 0; first < npairs; first += nslots) {
+    const int last = std::min(npairs, first + nslots);
     fn.first = first;
+    if (store_contacts) Kokkos::deep_copy(d_records, 0.0);
     PolyReduce red;
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(
-                                first, std::min(npairs, first + nslots)),
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(first, last),
                             fn, red);
     total += red;
+    if (store_contacts) gather_records(last - first);
   }
 
   polydem_kk::add_reduced(this, fn.tally, total, local_counts, NCOUNT);
 }
 
 /* ----------------------------------------------------------------------
-   the records of contacts (CR_ID1 > 0) to the host, in pair-array order
+   the records of one batch's contacts (CR_ID1 > 0) to the host, in
+   pair-array order
 ------------------------------------------------------------------------- */
 
-template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::gather_records()
+template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::gather_records(int n)
 {
-  contact_step = update->ntimestep;
-  if (npairs <= 0) return;
   auto h = Kokkos::create_mirror_view(d_records);
   Kokkos::deep_copy(h, d_records);
-  for (int p = 0; p < npairs; p++)
+  for (int p = 0; p < n; p++)
     if (h(p, polydem::CR_ID1) > 0.0)
       for (int k = 0; k < polydem::CR_NFIELD; k++) contact_data.push_back(h(p, k));
 }
@@ -424,7 +426,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
       break;
   }
 
-  if (store_contacts) gather_records();
+  if (store_contacts) contact_step = update->ntimestep;
 
   fix_historyKK->k_firstflag.template modify<DeviceType>();
   fix_historyKK->k_firstvalue.template modify<DeviceType>();

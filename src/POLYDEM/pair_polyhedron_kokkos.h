@@ -41,6 +41,11 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   ~PairPolyhedronKokkos() override;
   void compute(int, int) override;
   void init_style() override;
+  void init_list(int id, NeighList *ptr) override
+  {
+    PairPolyhedron::init_list(id, ptr);
+    kk_init_list<DeviceType>(ptr);
+  }
   double memory_usage() override;
 
   // device memory for the overlap workspaces of one batch [bytes]
@@ -77,7 +82,7 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   Kokkos::View<char *, DeviceType> d_workspace;
   int nslots;
 
-  // per-contact records by pair index, on steps a contact compute is due
+  // per-contact records of one batch, on steps a contact compute is due
   Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType> d_records;
   int store_contacts;
 
@@ -89,7 +94,7 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   void build_pairs();
   void ensure_partners(int nlocal);
   template <int MF> void run_pairs();
-  void gather_records();
+  void gather_records(int n);
 };
 
 }    // namespace LAMMPS_NS

@@ -15,8 +15,11 @@
 
 #include "atom_kokkos.h"
 #include "atom_masks.h"
+#include "fix_neigh_history_kokkos.h"
 #include "force.h"
 #include "kokkos.h"
+#include "modify.h"
+#include "neigh_list_kokkos.h"
 #include "neighbor.h"
 #include "pair_polyhedron.h"
 #include "pair_polyhedron_kokkos.h"
@@ -414,6 +417,45 @@ TEST(PairKokkos, WorkspaceFollowsFaceCount)
     EXPECT_GT(b, last);
     last = b;
   }
+}
+
+// the Kokkos list and the history arrays sized by it follow the packing: a
+// list not yet built starts 2 wide, its first build widens it to 1.2 x the
+// widest row (LAMMPS's npair_kokkos.cpp), not to LAMMPS's 16
+TEST(PairKokkos, NeighborListAndHistoryWidthFollowThePacking)
+{
+  // dodecahedra on a simple cubic lattice (bench/in.dodeca_dense, 6^3):
+  // 3 half-list neighbors per atom, a few more where displaced
+  Lmp kk(KK);
+  kk.cmds({"units lj", "atom_style polyhedron", "atom_modify map array", "comm_modify vel yes",
+           "newton off", "boundary p p p", "lattice sc 1.0", "region box block 0 6 0 6 0 6",
+           "create_box 1 box", "polyhedron_shape dode " + polydem_test::potentials() +
+               "/dodecahedron.shape",
+           "create_atoms 1 box", "displace_atoms all random 0.04 0.04 0.04 4242 units box",
+           "polyhedron_set type 1 shape dode scale 0.4 density 1.0 quat/random 18",
+           "pair_style polyhedron", "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.02 bin",
+           "fix 1 all nve/polyhedron", "timestep 1.0e-4"});
+  kk.cmd("run 0");
+  auto *list = dynamic_cast<LAMMPS_NS::NeighListKokkos<LMPDeviceType> *>(kk.lmp->force->pair->list);
+  ASSERT_NE(list, nullptr);
+  auto ilist = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list->d_ilist);
+  auto numneigh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list->d_numneigh);
+  int widest = 0;
+  for (int ii = 0; ii < list->inum; ii++) widest = std::max(widest, numneigh(ilist(ii)));
+  const int width = (int) list->d_neighbors.extent(1);
+  if (me() == 0)
+    std::printf("[list] widest row %d, list width %d (LAMMPS's default 16)\n", widest, width);
+  ASSERT_GT(widest, 2) << "the scene must outgrow the initial width";
+  EXPECT_EQ(width, (int) (1.2 * widest));
+  ASSERT_LT(widest, 13) << "the scene must show a width below LAMMPS's 16";
+  LAMMPS_NS::FixNeighHistoryKokkos<LMPDeviceType> *hist = nullptr;
+  for (int f = 0; f < kk.lmp->modify->nfix; f++)
+    if (!hist)
+      hist = dynamic_cast<LAMMPS_NS::FixNeighHistoryKokkos<LMPDeviceType> *>(kk.lmp->modify->fix[f]);
+  ASSERT_NE(hist, nullptr);
+  EXPECT_EQ((int) hist->k_firstflag.extent(1), width);
+  EXPECT_EQ((int) hist->k_firstvalue.extent(1), width * polydem::CONTACT_HIST);
+  // and the run continues to match plain (DensePackingMatchesPlain)
 }
 
 // per-atom energy and virial (eflag_atom, vflag_atom paths): sums and maxima
