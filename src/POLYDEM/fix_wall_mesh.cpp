@@ -332,6 +332,7 @@ void FixWallMesh::absorb(const polydem::WallTally<double> &t)
   counts_local[5] += t.behind;
   counts_local[6] += t.deep;
   counts_local[7] += t.large;
+  counts_local[8] += t.ncapped;
   fresh_local[0] = t.fresh;
   fresh_local[1] = t.fresh_v;
   fresh_local[2] = t.fresh_d;
@@ -366,7 +367,10 @@ void FixWallMesh::report_counts()
                   depth_warn),
       fmt::format("contacts whose overlap volume exceeds overlap/warn = {} of the particle's "
                   "volume",
-                  overlap_warn)};
+                  overlap_warn),
+      std::string("contact-steps whose normal damping (dashpot or a liquid bridge's viscosity) "
+                  "was capped at m_eff/dt, less than asked: the time step is too long for these "
+                  "contacts")};
   for (int k = 0; k < NCOUNTS; k++)
     if (all[k] > 0.0 && all[k] >= 2.0 * counts_reported[k]) {
       error->warning(FLERR, "fix wall/mesh {}: {:.0f} {} by step {}", id, all[k], what[k],

@@ -102,7 +102,7 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   // kernel failure counts (overflow, degenerate, merged patches), near-list
   // overflows, triangles left out of the per-triangle record; contacts with
   // the centroid behind the side met, deeper than depth/warn, beyond overlap/warn
-  static constexpr int NCOUNTS = 8;
+  static constexpr int NCOUNTS = 9;
   double counts_local[NCOUNTS], counts_reported[NCOUNTS];
   // contacts that begin, this call: count, largest V / V_p, depth / r,
   // wall energy / mass (at setup: initial overlaps, reported by setup())

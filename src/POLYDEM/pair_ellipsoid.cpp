@@ -320,7 +320,9 @@ void PairEllipsoid::report_counters()
 {
   const char *what[] = {"degenerate contacts (coincident centres or NaN; skipped)",
                         "contact searches without convergence (skipped)",
-                        "overlaps beyond overlap/warn of the smallest semi-axis"};
+                        "overlaps beyond overlap/warn of the smallest semi-axis",
+                        "contact-steps whose normal dashpot was capped at m_eff/dt, less "
+                        "damping than asked: the time step is too long for these contacts"};
   PairPolydem::report_counters(what, polydem::EP_CONTACTS);
 }
 

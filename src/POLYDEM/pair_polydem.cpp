@@ -322,7 +322,9 @@ void PairPolydem::setup_history_fix()
 
 /* ----------------------------------------------------------------------
    kernel failures and large overlaps are counted on every rank and reported
-   (collectively, at reneighboring) as warnings with counts, never silently
+   (collectively, at reneighboring) as warnings with counts, never silently:
+   the first one, then each time a count has doubled since its last warning
+   (as fix wall/mesh does)
 ------------------------------------------------------------------------- */
 
 void PairPolydem::report_counters(const char *const *what, int nwarn)
@@ -330,7 +332,7 @@ void PairPolydem::report_counters(const char *const *what, int nwarn)
   MPI_Allreduce(local_counts, counters, ncount, MPI_DOUBLE, MPI_SUM, world);
   if (comm->me != 0) return;
   for (int k = 0; k < nwarn; k++)
-    if (counters[k] > reported[k]) {
+    if (counters[k] > 0.0 && counters[k] >= 2.0 * reported[k]) {
       error->warning(FLERR, "pair {}: {:.0f} {} by step {}", style_name, counters[k], what[k],
                      update->ntimestep);
       reported[k] = counters[k];

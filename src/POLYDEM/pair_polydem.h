@@ -36,7 +36,7 @@ class PairPolydem : public Pair {
   void write_restart_settings(FILE *) override;
   void read_restart_settings(FILE *) override;
 
-  static constexpr int MAXCOUNT = 8;
+  static constexpr int MAXCOUNT = 12;
   double counters[MAXCOUNT];    // kernel counters summed over ranks (extract "counters")
 
   // one list of restart fields for writing (rank 0) and reading (rank 0,

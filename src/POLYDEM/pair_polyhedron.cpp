@@ -487,7 +487,10 @@ void PairPolyhedron::report_counters()
                         "without history)",
                         "contact-steps under a liquid bridge law of grains that get no bridge "
                         "(bridges act between spheres and convex polyhedra, also as parts of "
-                        "composites, not on ellipsoids of unequal semi-axes)"};
+                        "composites, not on ellipsoids of unequal semi-axes)",
+                        "contact-steps whose normal damping (dashpot or a liquid bridge's "
+                        "viscosity) was capped at m_eff/dt, less than asked: the time step is "
+                        "too long for these contacts"};
   PairPolydem::report_counters(what, polydem::PP_CONTACTS);
 }
 

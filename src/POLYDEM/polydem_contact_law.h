@@ -237,11 +237,16 @@ template <typename T> POLYDEM_FN T damping_zeta(const DampingLaw<T> &d, T q)
   return (T(1) - w) * d.z[0] + w * d.z[1];
 }
 
-// dashpot coefficient g = 2 zeta sqrt(k m_eff), capped at g dt <= m_eff (dt > 0)
-template <typename T> POLYDEM_FN T dashpot(T zeta, T k, T meff, T dt)
+// dashpot coefficient g = 2 zeta sqrt(k m_eff), capped at g dt <= m_eff (dt > 0):
+// beyond it the explicit step would reverse the relative velocity instead of
+// damping it (the time step too long for this contact); capped set to 1 then
+template <typename T> POLYDEM_FN T dashpot(T zeta, T k, T meff, T dt, int &capped)
 {
   T g = T(2) * zeta * sqrt(k * meff);
-  if (dt > T(0) && g * dt > meff) g = meff / dt;
+  if (dt > T(0) && g * dt > meff) {
+    g = meff / dt;
+    capped = 1;
+  }
   return g;
 }
 
@@ -323,6 +328,7 @@ template <typename T> struct ContactForce {
   T fn;             // normal force (elastic + damping) on A along -n
   T ft;             // tangential force magnitude
   T rate;           // rate of the damping coordinate (v_n, or dm/dt)
+  int capped = 0;    // normal dashpot or bridge viscosity cut to m_eff / dt
 };
 
 // a pair's history is that of its lower-tag particle relative to the other:
@@ -493,7 +499,10 @@ POLYDEM_FN void add_bridge(const ContactGeometry<T> &g, const BridgeLaw<T> &b,
   T f = bridge_force(b, g.gap);
   if (b.eta > T(0) && g.gap > T(0)) {
     T c = bridge_viscous_coefficient(b, g.gap);
-    if (kin.dt > T(0) && c * kin.dt > kin.meff) c = kin.meff / kin.dt;
+    if (kin.dt > T(0) && c * kin.dt > kin.meff) {
+      c = kin.meff / kin.dt;
+      out.capped = 1;
+    }
     f -= c * dot(contact_relative_velocity(g, kin), g.normal);
   }
   const Vec3<T> F = f * g.normal;
@@ -535,7 +544,7 @@ POLYDEM_FORCE_FN ContactForce<T> contact_step(const ContactGeometry<T> &g,
 
   // normal damping, Eq. 14, on the local stiffness
   const T zeta = damping_zeta(law.damping, nv.q);
-  const T gn = dashpot(zeta, nv.k, kin.meff, kin.dt);
+  const T gn = dashpot(zeta, nv.k, kin.meff, kin.dt, out.capped);
   if (g.gradient_damping) {
     out.rate = contact_rate(g, kin);
     const T s = gn * out.rate;

@@ -343,6 +343,7 @@ POLYDEM_FN void add_part_force(PairContactResult<T> &r, const ContactForce<T> &c
   r.cf.energy += cf.energy;
   r.cf.fn += cf.fn;
   r.cf.ft += cf.ft;
+  r.cf.capped |= cf.capped;
 }
 
 // A pair of which one or both are composites, in a table with part slots
@@ -476,9 +477,9 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
 // overlap decides separation by itself and a pair in contact mostly stays so.
 template <typename T, int MF, typename C>
 POLYDEM_FN PairContactResult<T>
-polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
-                        const LawTable<T> &tab, T dt, bool update, T *hist,
-                        OverlapWorkspace<T, MF> &ws, C *count, bool touching = false)
+polyhedron_pair_forces(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                       const LawTable<T> &tab, T dt, bool update, T *hist,
+                       OverlapWorkspace<T, MF> &ws, C *count, bool touching)
 {
   const bool ca = view_is_composite(*A.shape.view), cb = view_is_composite(*B.shape.view);
   if (tab.nslot > 0 && (ca || cb))
@@ -497,6 +498,17 @@ polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     return r;
   }
   return convex_contact_step(A, B, a, b, ov, tab, dt, update, hist, count);
+}
+template <typename T, int MF, typename C>
+POLYDEM_FN PairContactResult<T>
+polyhedron_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
+                        const LawTable<T> &tab, T dt, bool update, T *hist,
+                        OverlapWorkspace<T, MF> &ws, C *count, bool touching = false)
+{
+  const PairContactResult<T> r =
+      polyhedron_pair_forces(A, B, tab, dt, update, hist, ws, count, touching);
+  if (r.contact && r.cf.capped) count[PP_DAMPCAP] += C(1);
+  return r;
 }
 
 // atom k with its template's view (which outlives the body)
@@ -571,6 +583,7 @@ ellipsoid_pair_contact(const EllipsoidBody<T> &A, const EllipsoidBody<T> &B, con
   r.cf = pair_contact_step(r.geo, law, kin, hist, tab.nhist,
                            T(contact_history_sign(A.tag, B.tag)), update);
   if (r.geo.volume > tab.overlap_warn * amin) count[EP_BIGOVERLAP] += C(1);
+  if (r.cf.capped) count[EP_DAMPCAP] += share;
   if (r.geo.volume < r.cf.rate * dt) count[EP_COLLISIONS] += share;
   return r;
 }

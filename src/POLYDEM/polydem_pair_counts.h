@@ -16,7 +16,8 @@ enum PolyhedronPairCount : int {
   PP_NOCONV,        // GJK non-convergences (overlap computed anyway)
   PP_BIGOVERLAP,    // V > overlap_warn x smaller volume
   PP_NOSLOT,        // part contacts of composites beyond the pair's slots (no history)
-  PP_NOBRIDGE,      // contacts with a liquid bridge law that get no bridge (unequal ellipsoids, also as parts)
+  PP_NOBRIDGE,      // bridge-law contacts without a bridge (unequal ellipsoids, also parts)
+  PP_DAMPCAP,       // contact-steps with the normal damping capped at m_eff / dt
   PP_CONTACTS,      // pair-steps in contact
   PP_NCOUNT
 };
@@ -26,6 +27,7 @@ enum EllipsoidPairCount : int {
   EP_DEGENERATE,    // coincident centres or NaN (skipped)
   EP_NOCONV,        // contact search without convergence (skipped)
   EP_BIGOVERLAP,    // delta > overlap_warn x smallest semi-axis
+  EP_DAMPCAP,       // contact-steps whose normal dashpot was capped at m_eff / dt (x share)
   EP_CONTACTS,      // pair-steps in contact (x share)
   EP_COLLISIONS,    // contacts in their first step, delta < (d delta/dt) dt (x share)
   EP_NCOUNT

@@ -56,6 +56,7 @@ template <typename T> struct WallForce {
   Vec3<T> f, tau;    // on the particle (torque about its centroid)
   T energy;          // sum of W(V) over patches
   int ncontact;
+  int capped;                        // contacts whose normal damping was capped at m_eff / dt
   int fresh;                         // bit k: patch k has no kept history (its contact begins)
   Vec3<T> fpatch[WALL_MAX_PATCH];    // force of each patch of P on the particle (lab)
 };
@@ -121,6 +122,7 @@ template <typename T> POLYDEM_FN WallForce<T> wall_force_zero()
   out.f = out.tau = make_vec3(T(0), T(0), T(0));
   out.energy = T(0);
   out.ncontact = 0;
+  out.capped = 0;
   out.fresh = 0;
   for (int k = 0; k < WALL_MAX_PATCH; ++k) out.fpatch[k] = make_vec3(T(0), T(0), T(0));
   return out;
@@ -202,6 +204,7 @@ POLYDEM_FN WallForce<T> wall_contact_forces(const WallContacts<T> &C, const Mesh
     h[2] = key.z;
     h[3] = dot(key, C.kpoint[k] - x);
     for (int i = 0; i < CONTACT_HIST_ROLL; ++i) h[4 + i] = shear[i];
+    out.capped += cf.capped;
     out.f += cf.F_A;
     out.fpatch[k] = cf.F_A;
     out.tau += cf.tau_A;
@@ -339,6 +342,7 @@ template <class D, class S> POLYDEM_FN void wall_tally_merge(D &d, const S &s)
   d.near_overflow += s.near_overflow;
   d.near_builds += s.near_builds;
   d.nunrecorded += s.nunrecorded;
+  d.ncapped += s.ncapped;
   d.behind += s.behind;
   d.deep += s.deep;
   d.large += s.large;
@@ -356,6 +360,7 @@ template <typename T> struct WallTally {
   T ncontact, ntri, energy;
   T noverflow, ndegenerate, nmerged;    // kernel counts (WallPatches)
   T near_overflow, near_builds, nunrecorded;
+  T ncapped;                            // contacts with their normal damping capped (WallForce)
   T behind, deep, large, fresh;         // WallWarnings: counts
   T fresh_v, fresh_d, fresh_em;         // WallWarnings: maxima
   POLYDEM_FN WallTally()
@@ -363,6 +368,7 @@ template <typename T> struct WallTally {
     for (int k = 0; k < 3; ++k) force[k] = torque[k] = T(0);
     ncontact = ntri = energy = noverflow = ndegenerate = nmerged = T(0);
     near_overflow = near_builds = nunrecorded = behind = deep = large = fresh = T(0);
+    ncapped = T(0);
     fresh_v = fresh_d = fresh_em = T(0);
   }
   // one particle at x (lab): its forces wf, patches P, warnings w
@@ -383,6 +389,7 @@ template <typename T> struct WallTally {
     ndegenerate += T(P.ndegenerate);
     nmerged += T(P.nmerged);
     nunrecorded += T(P.nunrecorded);
+    ncapped += T(wf.capped);
     behind += T(w.behind);
     deep += T(w.deep);
     large += T(w.large);

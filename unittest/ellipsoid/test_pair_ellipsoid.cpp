@@ -282,7 +282,7 @@ GasRun elastic_gas(const std::string &overlap, int refine)
     for (int k = 0; k < 3; k++) r.max_dp = std::fmax(r.max_dp, std::fabs(p[k] - p0[k]) / pscale);
   }
   int dim = 0;
-  r.contacts = ((double *) l.lmp->force->pair->extract("counters", dim))[3];
+  r.contacts = ((double *) l.lmp->force->pair->extract("counters", dim))[polydem::EP_CONTACTS];
   printf("elastic gas, overlap %s, dt = t_c/%d: %.0f contact evaluations, max |E - E0|/E0 "
          "%.3g, max momentum error %.3g, max E_rot/E0 %.3g\n",
          overlap.c_str(), 50 * refine, r.contacts, r.max_err, r.max_dp, r.max_er);
@@ -323,8 +323,9 @@ TEST(PairEllipsoid, PolyhedronStyleRunsEllipsoidPairsAlike)
     l.cmds({"neighbor " + num(0.2 * b) + " bin", "fix 1 all nve/polyhedron",
             "timestep " + num(dt), "run 1500"});
     int dim = 0;
-    const double contacts = ((double *) l.lmp->force->pair->extract("counters", dim))
-        [std::string(l.lmp->force->pair_style) == "ellipsoid" ? 3 : (int) polydem::PP_CONTACTS];
+    const bool ell = std::string(l.lmp->force->pair_style) == "ellipsoid";
+    const double *counters = (double *) l.lmp->force->pair->extract("counters", dim);
+    const double contacts = counters[ell ? (int) polydem::EP_CONTACTS : (int) polydem::PP_CONTACTS];
     return std::make_pair(l.local_state(), contacts);
   };
   const auto ell = run({"pair_style ellipsoid", "pair_coeff * * " + num(kn) + " 0.8 0.4"});

@@ -141,6 +141,31 @@ TEST(ContactLaw, FlatContactRestitution)
   EXPECT_NEAR(bounce(feng(1.0, 0.0, 1, 0, 1e-4), false, 0.5), 1.0, 1e-6);
 }
 
+// The normal dashpot g = 2 zeta sqrt(k m_eff) (seed Eq. 14) is capped at
+// g dt = m_eff, beyond which the explicit step would reverse the approach
+// instead of damping it; the force says when (ContactForce::capped, counted
+// and warned about by the styles). Below the cap: g exactly, capped = 0.
+TEST(ContactLaw, DashpotCapIsFlagged)
+{
+  const double A = 1e-4, V = 1e-7, meff = 0.01, v = 0.3;    // A approaches B along +x
+  const auto L = feng(0.2, 0.0, 0, 0);
+  const auto g = face(V, A, make_vec3(0.5, 0.0, 0.0));
+  const auto nv = polydem::normal_value(L.normal, V, A);
+  const double zeta = polydem::damping_zeta(L.damping, nv.q);
+  const double gfull = 2.0 * zeta * std::sqrt(nv.k * meff), dt_cap = meff / gfull;
+  for (double f : {0.5, 2.0}) {
+    auto k = still(meff, f * dt_cap);
+    k.vA = make_vec3(v, 0.0, 0.0);
+    double h[polydem::CONTACT_HIST] = {0, 0, 0, 0, 0};
+    const auto out = polydem::contact_step(g, L, k, h, polydem::CONTACT_HIST);
+    const double gn = f < 1.0 ? gfull : meff / k.dt;
+    // the elastic part pushes A along -x; the dashpot opposes the approach
+    const double want = -nv.Wp * A - gn * v;
+    EXPECT_NEAR(out.F_A.x, want, 1e-12 * std::fabs(want)) << "dt / dt_cap " << f;
+    EXPECT_EQ(out.capped, f < 1.0 ? 0 : 1) << "dt / dt_cap " << f;
+  }
+}
+
 // Sliding: |F_t| = mu F_n, opposite to the slip; sticking (small s): the
 // spring and dashpot, below the cap
 TEST(ContactLaw, CoulombCapAndStick)

@@ -5,6 +5,7 @@
 #include "pair_restart_case.h"
 #include "polydem_lmp.h"
 
+#include "atom.h"
 #include "force.h"
 #include "pair.h"
 #include "polydem_pair_counts.h"
@@ -394,6 +395,49 @@ TEST(PairPolyhedron, RestitutionOfSphereOnCubeAndSpheres)
       std::printf("restitution, sphere(s) %s: given %.2f measured %.4f\n", ball, e, m);
       EXPECT_NEAR(m, e, 0.05 * e);
     }
+}
+
+// A dashpot capped at m_eff / dt (the time step too long for the contact:
+// the head-on cubes above with e = 0.05 at dt = 2e-5 s, ~0.7 of the flat
+// contact's stability limit) damps less than asked: counted and warned
+// about, with the count; at dt = 1e-6 s neither, and e holds (5 %).
+TEST(PairPolyhedron, CappedDashpotIsCountedAndWarned)
+{
+  for (double dt : {1e-6, 2e-5}) {
+    const std::string log = testing::TempDir() + "polydem_dashpot_cap.log";
+    double capped = -1.0, e = 0.0;
+    {
+      Lmp l({"-log", log});
+      l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+              "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
+              "create_box 1 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
+              "create_atoms 1 single -0.0135 0 0", "create_atoms 1 single 0.0135 0 0",
+              "polyhedron_set group all density 1500", "velocity all set 0 0 0",
+              "set atom 1 vx 0.5", "set atom 2 vx -0.5", "pair_style polyhedron",
+              "pair_coeff * * 1.0e6 0.1 0.05 0.0", "neighbor 0.001 bin",
+              // counters are summed and reported at reneighboring
+              "neigh_modify every 1 delay 0 check no", "fix 1 all nve/polyhedron",
+              "timestep " + num(dt), "run " + std::to_string((int) std::lround(0.02 / dt))});
+      int dim;
+      capped = ((double *) l.lmp->force->pair->extract("counters", dim))[polydem::PP_DAMPCAP];
+      auto *a = l.lmp->atom;
+      e = a->v[a->map(2)][0] - a->v[a->map(1)][0];
+    }
+    const std::string text = polydem_test::read_text(log);
+    const bool warned =
+        text.find("contact-steps whose normal damping (dashpot or a liquid "
+                  "bridge's viscosity) was capped at m_eff/dt") != std::string::npos;
+    std::printf("[dashpot cap] dt %.0e: %.0f capped contact-steps, restitution %.4f (given 0.05)\n",
+                dt, capped, e);
+    if (dt < 1e-5) {
+      EXPECT_EQ(capped, 0.0);
+      EXPECT_FALSE(warned) << text;
+      EXPECT_NEAR(e, 0.05, 0.05 * 0.05);
+    } else {
+      EXPECT_GT(capped, 0.0);
+      EXPECT_TRUE(warned) << text;
+    }
+  }
 }
 
 // Friction (issue 4, item 3): a 2.5 cm cube resting on a frozen row of 20

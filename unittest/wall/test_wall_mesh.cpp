@@ -665,6 +665,26 @@ TEST(WallMesh, TimestepWarning)
   }
 }
 
+// a dashpot capped at m_eff / dt (the cube dropped face down at 0.5 m/s with
+// e = 0.05 and a time step near the flat contact's stability limit) damps
+// less than asked: counted and warned about; at dt = 1e-6 s it is not
+TEST(WallMesh, CappedDashpotWarns)
+{
+  const std::string floor = tmpdir() + "/cap.stl";
+  write_ascii(floor, flat(-0.05, 0.05, -0.05, 0.05, 0, 2, 2));
+  for (double dt : {1e-6, 3e-5}) {
+    const std::string text = one_particle_log(
+        "cap",
+        {"pair_coeff * * 1e6 0.1 0.05 0.5", "set atom 1 z 0.0126", "velocity all set 0 0 -0.5",
+         "fix w all wall/mesh " + floor, "fix 1 all nve/polyhedron", "timestep " + num(dt),
+         "run " + std::to_string((int) std::lround(0.01 / dt))});
+    const bool warned =
+        text.find("contact-steps whose normal damping (dashpot or a liquid "
+                  "bridge's viscosity) was capped at m_eff/dt") != std::string::npos;
+    EXPECT_EQ(warned, dt > 1e-5) << "dt " << dt << "\n" << text;
+  }
+}
+
 // zero-area and duplicate triangles: dropped, counted in a warning
 TEST(WallMesh, DroppedTrianglesWarn)
 {
