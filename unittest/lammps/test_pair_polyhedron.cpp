@@ -360,22 +360,31 @@ TEST(PairPolyhedron, IsolatedGasConservesMomenta)
 // ball: the second (or both) a sphere of radius 1.25 cm (issue 29), whose
 // contact with a face (V ~ delta^2) or a sphere is another self-similar law
 // than face on face (V ~ delta): the damping at the contact's own exponent
-// (polydem_damping.h) keeps e.
-double measured_restitution(double e, const char *ball = "")
+// (polydem_damping.h) keeps e. The collision runs in l for 0.02 s at dt
+// (extra: commands before the run); returns v2 - v1 after it.
+double head_on_cubes(Lmp &l, double e, const char *ball = "", double dt = 1e-6,
+                     const std::vector<std::string> &extra = {})
 {
-  Lmp l;
   l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
           "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
           "create_box 1 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
           "polyhedron_shape b ellipsoid 0.0125 0.0125 0.0125",
           "create_atoms 1 single -0.0135 0 0", "create_atoms 1 single 0.0135 0 0"});
   if (*ball) l.cmd(std::string("polyhedron_set ") + ball + " shape b");
-  l.cmds({"polyhedron_set group all density 1500", "velocity all set 0 0 0",
-          "set atom 1 vx 0.5", "set atom 2 vx -0.5", "pair_style polyhedron",
+  l.cmds({"polyhedron_set group all density 1500", "velocity all set 0 0 0", "set atom 1 vx 0.5",
+          "set atom 2 vx -0.5", "pair_style polyhedron",
           "pair_coeff * * 1.0e6 0.1 " + num(e) + " 0.0", "neighbor 0.001 bin",
-          "fix 1 all nve/polyhedron", "timestep 1e-6", "run 20000"});
+          "fix 1 all nve/polyhedron", "timestep " + num(dt)});
+  l.cmds(extra);
+  l.cmd("run " + std::to_string((int) std::lround(0.02 / dt)));
   auto *a = l.lmp->atom;
   return (a->v[a->map(2)][0] - a->v[a->map(1)][0]) / 1.0;
+}
+
+double measured_restitution(double e, const char *ball = "")
+{
+  Lmp l;
+  return head_on_cubes(l, e, ball);
 }
 
 TEST(PairPolyhedron, RestitutionOfFaceToFaceCubes)
@@ -408,20 +417,10 @@ TEST(PairPolyhedron, CappedDashpotIsCountedAndWarned)
     double capped = -1.0, e = 0.0;
     {
       Lmp l({"-log", log});
-      l.cmds({"units si", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
-              "comm_modify vel yes", "region box block -0.1 0.1 -0.1 0.1 -0.1 0.1",
-              "create_box 1 box", "polyhedron_shape c " + potentials() + "/cuboid_2p5cm.shape",
-              "create_atoms 1 single -0.0135 0 0", "create_atoms 1 single 0.0135 0 0",
-              "polyhedron_set group all density 1500", "velocity all set 0 0 0",
-              "set atom 1 vx 0.5", "set atom 2 vx -0.5", "pair_style polyhedron",
-              "pair_coeff * * 1.0e6 0.1 0.05 0.0", "neighbor 0.001 bin",
-              // counters are summed and reported at reneighboring
-              "neigh_modify every 1 delay 0 check no", "fix 1 all nve/polyhedron",
-              "timestep " + num(dt), "run " + std::to_string((int) std::lround(0.02 / dt))});
+      // counters are summed and reported at reneighboring: every step
+      e = head_on_cubes(l, 0.05, "", dt, {"neigh_modify every 1 delay 0 check no"});
       int dim;
       capped = ((double *) l.lmp->force->pair->extract("counters", dim))[polydem::PP_DAMPCAP];
-      auto *a = l.lmp->atom;
-      e = a->v[a->map(2)][0] - a->v[a->map(1)][0];
     }
     const std::string text = polydem_test::read_text(log);
     const bool warned =
