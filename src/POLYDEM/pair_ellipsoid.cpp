@@ -309,7 +309,7 @@ void PairEllipsoid::compute(int eflag, int vflag)
   }
   pvector[0] = local_counts[polydem::EP_COLLISIONS];
   pvector[1] = local_counts[polydem::EP_CONTACTS];
-  if (neighbor->ago == 0) report_counters();
+  if (counters_due()) report_counters();
 }
 
 /* ----------------------------------------------------------------------

@@ -201,7 +201,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   kk_tally_to_host<DeviceType>(k_eatom, k_vatom);
   pvector[0] = local_counts[polydem::EP_COLLISIONS];
   pvector[1] = local_counts[polydem::EP_CONTACTS];
-  if (neighbor->ago == 0) report_counters();
+  if (counters_due()) report_counters();
 }
 
 namespace LAMMPS_NS {

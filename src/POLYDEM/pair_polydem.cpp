@@ -322,10 +322,16 @@ void PairPolydem::setup_history_fix()
 
 /* ----------------------------------------------------------------------
    kernel failures and large overlaps are counted on every rank and reported
-   (collectively, at reneighboring) as warnings with counts, never silently:
+   (collectively, at reneighboring and at a run's last step) as warnings
+   with counts, never silently:
    the first one, then each time a count has doubled since its last warning
    (as fix wall/mesh does)
 ------------------------------------------------------------------------- */
+
+bool PairPolydem::counters_due() const
+{
+  return neighbor->ago == 0 || update->ntimestep == update->laststep;
+}
 
 void PairPolydem::report_counters(const char *const *what, int nwarn)
 {

@@ -165,6 +165,9 @@ class PairPolydem : public Pair {
   void setup_history_fix();
   // warn (collectively) about counters[k], k < nwarn, that grew since the last report
   void report_counters(const char *const *what, int nwarn);
+  // the counters are due at reneighboring and at a run's last step (so that
+  // nothing counted after the last reneighboring goes unreported)
+  bool counters_due() const;
   // twice the largest bounding radius present or announced by an insertion fix
   double size_cutoff();
   void transfer_history(double *, double * POLYDEM_TRANSFER_HISTORY_TYPES) override;

@@ -440,7 +440,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
     }
   }
   if (store) contact_step = update->ntimestep;
-  if (neighbor->ago == 0) report_counters();
+  if (counters_due()) report_counters();
 }
 
 /* ----------------------------------------------------------------------

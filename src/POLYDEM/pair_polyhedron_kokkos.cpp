@@ -433,7 +433,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::compute(int e
 
   kk_tally_to_host<DeviceType>(k_eatom, k_vatom);
 
-  if (neighbor->ago == 0) report_counters();
+  if (counters_due()) report_counters();
 }
 
 /* ---------------------------------------------------------------------- */
