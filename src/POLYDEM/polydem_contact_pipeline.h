@@ -98,23 +98,55 @@ POLYDEM_FN OverlapResult<T> mixed_pair_overlap(const PosedShape<T> &A, const Pos
   return r;
 }
 
+// A polyhedron pair that is not in contact holds no contact history; its
+// history slot keeps GJK's separating axis instead (GJK_AXIS_VALUES values:
+// the axis, A's and B's support vertices), which decides most such pairs at
+// the next step without GJK (gjk_axis_separates). A contact starts from a
+// cleared slot.
+constexpr int GJK_AXIS_VALUES = 5;
+
 // The overlap of two convex shapes (polyhedra, spheres, ellipsoids):
 // status counted in count[PP_*]; GJK (a filter for polyhedron pairs) is
-// skipped if touching.
+// skipped if touching. axis (or null): the GJK_AXIS_VALUES values of a pair
+// not touching, read and, where the pair is apart along an axis, written;
+// cleared otherwise.
 template <typename T, int MF, typename C>
 POLYDEM_FN OverlapResult<T> convex_overlap(const PosedShape<T> &A, const PosedShape<T> &B,
-                                           OverlapWorkspace<T, MF> &ws, C *count, bool touching)
+                                           OverlapWorkspace<T, MF> &ws, C *count, bool touching,
+                                           T *axis = nullptr)
 {
   const bool mixed = view_is_ellipsoid(*A.view) || view_is_ellipsoid(*B.view);
   if (!touching && !mixed) {
-    const auto g = gjk_intersect(A, B);
-    if (g.status == STATUS_SEPARATED) {
+    bool apart = false;
+    int ia = 0, ib = 0;
+    if (axis) {
+      ia = (int) axis[3];
+      ib = (int) axis[4];
+      apart = gjk_axis_separates(A, B, make_vec3(axis[0], axis[1], axis[2]), ia, ib);
+    }
+    if (!apart) {
+      const auto g = gjk_intersect(A, B);
+      if (g.status != STATUS_SEPARATED && g.status != STATUS_OK) count[PP_NOCONV] += C(1);
+      apart = g.status == STATUS_SEPARATED;
+      if (apart && axis) {
+        axis[0] = g.axis.x;
+        axis[1] = g.axis.y;
+        axis[2] = g.axis.z;
+      }
+      ia = g.ia;
+      ib = g.ib;
+    }
+    if (apart) {
+      if (axis) {
+        axis[3] = T(ia);
+        axis[4] = T(ib);
+      }
       OverlapResult<T> r = ellipsoid_overlap_detail::no_overlap<T>();
       r.status = STATUS_SEPARATED;
       return r;
     }
-    if (g.status != STATUS_OK) count[PP_NOCONV] += C(1);
   }
+  history_release(axis, GJK_AXIS_VALUES);
   const OverlapResult<T> ov = mixed ? mixed_pair_overlap(A, B) : polyhedron_overlap(A, B, ws);
   if (ov.status == STATUS_OVERFLOW)
     count[PP_OVERFLOW] += C(1);
@@ -488,15 +520,21 @@ polyhedron_pair_forces(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   const PosedShape<T> a = ca ? posed_part(A.shape, 0) : A.shape;
   const PosedShape<T> b = cb ? posed_part(B.shape, 0) : B.shape;
   if (algebraic_pair(a, b)) return algebraic_contact_step(A, B, a, b, tab, dt, update, hist, count);
-  const OverlapResult<T> ov = convex_overlap(a, b, ws, count, touching);
+  // not touching: the slot holds at most GJK's axis (GJK_AXIS_VALUES)
+  T *axis = !touching && hist && tab.nhist >= GJK_AXIS_VALUES ? hist : nullptr;
+  const OverlapResult<T> ov = convex_overlap(a, b, ws, count, touching, axis);
   if (ov.status != STATUS_OK) {
-    history_release(hist, tab.nhist);
+    if (axis)    // the axis convex_overlap kept, the rest cleared
+      history_release(hist + GJK_AXIS_VALUES, tab.nhist - GJK_AXIS_VALUES);
+    else
+      history_release(hist, tab.nhist);
     PairContactResult<T> r;
     r.contact = 0;
     if (touching && tab.bridge_reach > T(0) && ov.status == STATUS_SEPARATED)
       r = bridge_contact(A, B, a, b, tab, update ? dt : T(0));
     return r;
   }
+  if (axis) history_release(hist, tab.nhist);    // a contact begins: no history
   return convex_contact_step(A, B, a, b, ov, tab, dt, update, hist, count);
 }
 template <typename T, int MF, typename C>

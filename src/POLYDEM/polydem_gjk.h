@@ -156,6 +156,11 @@ template <typename T> struct GjkResult {
                  // STATUS_NO_CONVERGENCE (distance unknown), STATUS_DEGENERATE (NaN input)
   T distance;    // upper bound of the separation distance [length]; 0 if intersecting
   int iterations;
+  // STATUS_SEPARATED: a separating axis (A lies beyond B along it by more
+  // than the tolerance; not unit) and the support vertices of A along -axis
+  // and of B along +axis, for gjk_axis_separates at the next step
+  Vec3<T> axis;
+  int ia, ib;
 };
 
 namespace gjk_detail {
@@ -313,6 +318,8 @@ POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T
   res.status = STATUS_NO_CONVERGENCE;
   res.distance = T(0);
   res.iterations = 0;
+  res.axis = make_vec3(T(0), T(0), T(0));
+  res.ia = res.ib = 0;
   const T L = pair_length_scale(a, b);
   if (!(L > T(0)) || !(norm2(a.x - b.x) < T(1e30) * L * L)) {
     res.status = STATUS_DEGENERATE;    // NaN, zero or absurd input
@@ -334,6 +341,9 @@ POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T
     res.status = STATUS_SEPARATED;
     res.distance = norm(v);
     res.iterations = 1;
+    res.axis = v0;
+    res.ia = ia;
+    res.ib = ib;
     return res;
   }
   for (int it = 0; it < GJK_MAX_ITER; ++it) {
@@ -351,12 +361,18 @@ POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T
     if (vw > tol * vn) {
       res.status = STATUS_SEPARATED;
       res.distance = vn;
+      res.axis = v;
+      res.ia = ia;
+      res.ib = ib;
       return res;
     }
     // no progress: |v| is the distance up to the relative tolerance
     if (vv - vw <= T(64) * Eps<T>::value * vv) {
       res.distance = vn;
       res.status = vn <= tol ? STATUS_OK : STATUS_SEPARATED;
+      res.axis = v;
+      res.ia = ia;
+      res.ib = ib;
       return res;
     }
     w[n++] = sp;
@@ -368,11 +384,36 @@ POLYDEM_FN GjkResult<T> gjk_intersect(const PosedShape<T> &a, const PosedShape<T
     if (!(norm2(v) < vv)) {    // no decrease (round-off): converged
       res.distance = sqrt(norm2(v) < vv ? norm2(v) : vv);
       res.status = res.distance <= tol ? STATUS_OK : STATUS_SEPARATED;
+      res.axis = v;
+      res.ia = ia;
+      res.ib = ib;
       return res;
     }
   }
   res.distance = sqrt(norm2(v));
   return res;
+}
+
+// Temporal coherence of the separating axis (Ericson, Real-Time Collision
+// Detection 9.5.3 "separating-axis caching"): a pair that GJK found apart
+// at the last step is mostly still apart along the same axis. True if A
+// lies beyond B along axis by more than GJK's tolerance, i.e.
+//   min_A axis . p - max_B axis . p > tol_rel L |axis|,
+// which is GJK's own separation test, so that whenever this holds
+// gjk_intersect reports STATUS_SEPARATED too. The two supports climb from
+// the vertices ia, ib of the last search (updated); a few dot products
+// against GJK's iterations. A zero axis (no cache) gives false.
+template <typename T>
+POLYDEM_FN bool gjk_axis_separates(const PosedShape<T> &a, const PosedShape<T> &b,
+                                   const Vec3<T> &axis, int &ia, int &ib,
+                                   T tol_rel = T(1000) * Eps<T>::value)
+{
+  const T an2 = norm2(axis);
+  if (!(an2 > T(0)) || ia < 0 || ia >= a.view->nverts || ib < 0 || ib >= b.view->nverts)
+    return false;
+  const T tol = tol_rel * pair_length_scale(a, b);
+  const Vec3<T> sp = support_point(a, -axis, ia) - support_point(b, axis, ib);
+  return dot(axis, sp) > tol * sqrt(an2);
 }
 
 // Support functor of a point set (na points, xyz): the point maximising d . p.

@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -132,7 +133,8 @@ TEST(ContactPipeline, PolyhedronPairIsTheComposition)
     double h[CONTACT_HIST] = {1e-3, -2e-3, 5e-4, 10.0, 1e-2}, h0[CONTACT_HIST];
     for (int k = 0; k < CONTACT_HIST; k++) h0[k] = h[k];
     double cnt[PP_NCOUNT] = {0, 0, 0, 0, 0};
-    const auto r = polyhedron_pair_contact(A, B, tab.t, 1e-4, true, h, *ws, cnt);
+    // a pair in contact at the last step (its history continues)
+    const auto r = polyhedron_pair_contact(A, B, tab.t, 1e-4, true, h, *ws, cnt, true);
 
     Pose<double> pa, pb;
     pa.x = vec(at.x[0]);
@@ -170,6 +172,76 @@ TEST(ContactPipeline, PolyhedronPairIsTheComposition)
   }
   EXPECT_EQ(ncontact, 2);
   EXPECT_EQ(napart, 1);
+}
+
+// A pair not in contact keeps GJK's separating axis in its history slot
+// (GJK_AXIS_VALUES) and the next step tests it first; a contact starts from a
+// cleared slot. Two cubes approach, turning, and part again: every step
+// gives, bit for bit, the force and history of the same step with a cleared
+// slot (no axis kept), and most apart steps are decided by the kept axis.
+TEST(ContactPipeline, ApartPairKeepsGjkAxis)
+{
+  const auto shape = polydem_test::make_shape(polydem_test::cube_points(1.0));
+  std::unique_ptr<polydem_test::TypedShape<double>> cube(polydem_test::typed<double>(shape));
+  const ShapeView<double> &sv = cube->view;
+  Table tab(false);
+  ASSERT_GE(tab.t.nhist, GJK_AXIS_VALUES);
+  auto ws = std::make_unique<OverlapWorkspace<double, 16>>();
+  double h[CONTACT_HIST] = {0, 0, 0, 0, 0}, href[CONTACT_HIST] = {0, 0, 0, 0, 0};
+  int touch = 0, touchref = 0, napart = 0, nkept = 0, ncontact = 0;
+  const int nstep = 400;
+  for (int step = 0; step < nstep; ++step) {
+    // the gap closes from 2.0 to 0.85 and opens again
+    const double t = (double) step / (nstep - 1);
+    const double gap = 0.85 + 1.15 * std::fabs(2.0 * t - 1.0);
+    Atoms2 at(gap, 0.9, 1.1);
+    const double ang = 0.3 * t;
+    const Quat<double> turn = make_quat(std::cos(ang), 0.0, std::sin(ang), 0.0);
+    const Quat<double> qb = qmul(make_quat(at.qs[1][0], at.qs[1][1], at.qs[1][2], at.qs[1][3]), turn);
+    at.qs[1][0] = qb.w;
+    at.qs[1][1] = qb.x;
+    at.qs[1][2] = qb.y;
+    at.qs[1][3] = qb.z;
+    const auto atoms = host_atoms(&at);
+    const auto A = gather_polyhedron_body(atoms, 0, sv), B = gather_polyhedron_body(atoms, 1, sv);
+    // the axis kept from the last step decides this one?
+    if (!touch && (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0)) {
+      int ia = (int) h[3], ib = (int) h[4];
+      nkept += gjk_axis_separates(A.shape, B.shape, make_vec3(h[0], h[1], h[2]), ia, ib);
+    }
+    double cnt[PP_NCOUNT] = {0, 0, 0, 0, 0}, cntref[PP_NCOUNT] = {0, 0, 0, 0, 0};
+    const auto r = polyhedron_pair_contact(A, B, tab.t, 1e-4, true, h, *ws, cnt, touch != 0);
+    // the reference: a slot holding no axis while apart
+    if (!touchref)
+      for (double &x : href) x = 0.0;
+    const auto rr =
+        polyhedron_pair_contact(A, B, tab.t, 1e-4, true, href, *ws, cntref, touchref != 0);
+    ASSERT_EQ(r.contact, rr.contact) << "step " << step;
+    for (int k = 0; k < PP_NCOUNT; k++) EXPECT_EQ(cnt[k], cntref[k]) << k;
+    const bool was_touching = touch != 0;
+    touch = r.contact;
+    touchref = rr.contact;
+    if (r.contact) {
+      ++ncontact;
+      expect_same(r.cf, rr.cf);
+      for (int k = 0; k < CONTACT_HIST; k++) EXPECT_EQ(h[k], href[k]) << "step " << step;
+    } else {
+      ++napart;
+      if (was_touching) {    // the contact ended (GJK not run): a cleared slot
+        for (double x : h) EXPECT_EQ(x, 0.0) << "step " << step;
+        continue;
+      }
+      // the slot holds an axis along which the cubes are apart
+      int ia = (int) h[3], ib = (int) h[4];
+      EXPECT_TRUE(gjk_axis_separates(A.shape, B.shape, make_vec3(h[0], h[1], h[2]), ia, ib))
+          << "step " << step;
+    }
+  }
+  std::printf("[ pipeline ] cubes approaching and parting: %d apart steps (%d decided by the "
+              "kept axis), %d contact steps\n", napart, nkept, ncontact);
+  EXPECT_GT(ncontact, 20);
+  EXPECT_GT(napart, 150);
+  EXPECT_GE(nkept, 0.9 * (napart - 2));
 }
 
 TEST(ContactPipeline, EllipsoidPairIsTheComposition)

@@ -544,6 +544,58 @@ TEST(KernelGjk, SupportClimbEqualsScan)
   EXPECT_GT(ncase, 10000);
 }
 
+// The separating axis GJK returns for an apart pair, kept for the next step
+// (gjk_axis_separates): on random pairs, every axis GJK returns separates
+// that pair (the same test, the same tolerance); after the pair moves and
+// turns by a step's worth, gjk_axis_separates never calls apart a pair that
+// GJK finds within its tolerance or whose exact (CGAL) intersection is not
+// empty, and it still decides most pairs (temporal coherence).
+TEST(KernelGjk, CachedSeparatingAxis)
+{
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = scale_count(3000);
+  int napart = 0, nkept = 0, nmoved_apart = 0, nfalse = 0, nfalse_cgal = 0, ncgal = 0;
+  for (int k = 0; k < n; ++k) {
+    Pair p = random_pair(pool(), rng);
+    const auto &va = pool().d[p.a]->view, &vb = pool().d[p.b]->view;
+    const GjkResult<double> g = gjk_d(p);
+    if (g.status != STATUS_SEPARATED) continue;
+    ++napart;
+    int ia = g.ia, ib = g.ib;
+    ASSERT_TRUE(gjk_axis_separates(make_posed(va, p.pa), make_posed(vb, p.pb), g.axis, ia, ib))
+        << p.family << " pair " << k;
+    // a step: B moves towards A by up to 2 % of the sizes and both turn by up to 0.02 rad
+    const double L = length_of(p);
+    const Vec3<double> towards = p.pa.x - p.pb.x;
+    p.pb.x += (0.02 * L * (0.5 + 0.5 * u(rng)) / norm(towards)) * towards +
+              (0.005 * L) * make_vec3(u(rng), u(rng), u(rng));
+    p.pa.q = qnormalize(qmul(p.pa.q, axis_angle(random_unit(rng), 0.02 * u(rng))));
+    p.pb.q = qnormalize(qmul(p.pb.q, axis_angle(random_unit(rng), 0.02 * u(rng))));
+    const bool kept =
+        gjk_axis_separates(make_posed(va, p.pa), make_posed(vb, p.pb), g.axis, ia, ib);
+    const GjkResult<double> g2 = gjk_d(p);
+    nmoved_apart += g2.status == STATUS_SEPARATED;
+    if (!kept) continue;
+    ++nkept;
+    if (g2.status != STATUS_SEPARATED) ++nfalse;
+    if (ncgal < 300) {    // the exact intersection of a sample
+      ++ncgal;
+      const RefResult ref = ref_intersection(posed_vertices(pool().data[p.a], p.pa),
+                                             posed_vertices(pool().data[p.b], p.pb));
+      if (ref.intersects || ref.volume > 0) ++nfalse_cgal;
+    }
+  }
+  std::printf("[ gjk      ] cached axis: %d apart pairs, still apart after a step %d, decided "
+              "by the kept axis %d; called apart wrongly: %d (GJK), %d of %d (CGAL)\n",
+              napart, nmoved_apart, nkept, nfalse, nfalse_cgal, ncgal);
+  EXPECT_GT(napart, n / 10);
+  EXPECT_EQ(nfalse, 0);
+  EXPECT_EQ(nfalse_cgal, 0);
+  // most pairs that stay apart are decided by the kept axis
+  EXPECT_GE(nkept, 0.8 * nmoved_apart);
+}
+
 // Certified distance lower bound used by the wall near lists: on random
 // separated point clouds it never exceeds the brute-force hull distance
 // (to round-off) and is within 0.1 % of it when run to convergence; it is 0
