@@ -391,15 +391,21 @@ POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec
       vol += q[3] * sa;
       vm += (T(0.25) * q[3] * sa) * ct;
       const unsigned char own = w.owner[a];
-      const T wgt = own == OWNER_BOTH ? T(0.5) : T(1);
-      for (int k = 0; k < 2; ++k)
-        if (own & (1 << k)) {
-          const T s = wgt * sa;
-          S[k] += s * n;
-          M[k] += s * cross(ct - ref[k], n);
-          ar[k] += s;
-          am[k] += s * ct;
-        }
+      if (own == OWNER_NONE) continue;
+      const T s = own == OWNER_BOTH ? T(0.5) * sa : sa;
+      // each owner's face integrals (a face of both counts half for each)
+      if (own & OWNER_A) {
+        S[0] += s * n;
+        M[0] += s * cross(ct - ref[0], n);
+        ar[0] += s;
+        am[0] += s * ct;
+      }
+      if (own & OWNER_B) {
+        S[1] += s * n;
+        M[1] += s * cross(ct - ref[1], n);
+        ar[1] += s;
+        am[1] += s * ct;
+      }
     }
   }
   // global orientation of the dual triangles: volume must be positive

@@ -268,13 +268,28 @@ namespace overlap_detail {
     w.ntslots = ns;
     // B's planes whose faces reach below sA (+ tol), posed; a plane of B that
     // coincides with one of A's kept planes is merged into it (owner both)
+    // (marked in w.hz_edge through B's dual triangulation where it has one:
+    // each triangle names a vertex and three of its faces, and the fan of a
+    // vertex names all its faces)
     const Vec3<T> xb = b.x - x0;
     np = ipi + 1;
+    short *reach = w.hz_edge;
+    if (vb.dual != nullptr && fb <= MP) {
+      for (int f = 0; f < fb; ++f) reach[f] = 0;
+      const int *sb = vb.dual;
+      for (int t = 0; t < sb[0]; ++t) {
+        const int *q = sb + 1 + DUAL_SEED_STRIDE_K * t;
+        if (pb[q[6]] <= sA + tol) reach[q[0]] = reach[q[1]] = reach[q[2]] = 1;
+      }
+    } else {
+      for (int f = 0; f < fb; ++f) {
+        reach[f] = 0;
+        for (int k = vb.face_start[f]; k < vb.face_start[f + 1] && !reach[f]; ++k)
+          reach[f] = pb[vb.face_verts[k]] <= sA + tol;
+      }
+    }
     for (int f = 0; f < fb; ++f) {
-      bool reach = false;
-      for (int k = vb.face_start[f]; k < vb.face_start[f + 1] && !reach; ++k)
-        reach = pb[vb.face_verts[k]] <= sA + tol;
-      if (!reach) continue;
+      if (!reach[f]) continue;
       // posed into slot np, kept there unless merged
       T *d = w.pl + 4 * np;
       posed_plane(b, f, xb, d);
