@@ -66,6 +66,9 @@ void FixNVEPolyhedron::integrate(bool first)
   int *mask = atom->mask;
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+  const int *pshape = atom->pshape;
+  const double *pscale = atom->pscale;
+  avec->views(views);
 
   for (int i = 0; i < nlocal; i++)
     if (mask[i] & groupbit) {
@@ -75,8 +78,11 @@ void FixNVEPolyhedron::integrate(bool first)
         if (first) x[i][k] += dtv * v[i][k];
         angmom[i][k] += dtf * torque[i][k];
       }
+      // principal moments (PolyShapeLibrary::inertia, the template's view
+      // taken once per step)
+      const auto &sv = views[pshape[i]];
       double inertia[3];
-      avec->inertia(i, inertia);
+      polydem::scaled_moments(rmass[i], pscale[i], sv.volume, sv.inertia, inertia);
       if (first) polydem::free_rotor_step(dtv, inertia, angmom[i], quat[i]);
       polydem::omega_from_angmom(inertia, angmom[i], quat[i], omega[i]);
     }

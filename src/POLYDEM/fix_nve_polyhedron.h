@@ -13,6 +13,9 @@ FixStyle(nve/polyhedron,FixNVEPolyhedron);
 #define LMP_FIX_NVE_POLYHEDRON_H
 
 #include "fix_nve.h"
+#include "polydem_shape_view.h"
+
+#include <vector>
 
 namespace LAMMPS_NS {
 
@@ -25,6 +28,7 @@ class FixNVEPolyhedron : public FixNVE {
 
  protected:
   class PolyShapeLibrary *avec;
+  std::vector<polydem::ShapeView<double>> views;    // the templates', per step
   void integrate(bool first);    // first: the step's first half
 };
 

@@ -274,11 +274,12 @@ void FixWallMesh::compute_forces(bool update)
   polydem::WallNear<double> nl;
   nl.cap = near_cap;
   polydem::WallTally<double> sum;
+  avec->views(views);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     // gather: atom i with its template and semi-axes (0: a polyhedron)
     const auto &shape = avec->shape(atom->pshape[i]);
-    const auto sv = shape.view();
+    const auto &sv = views[atom->pshape[i]];
     const auto &a = shape.semi_axes();
     const auto b =
         polydem::gather_wall_body(atoms, i, &sv,

@@ -118,6 +118,7 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   std::vector<double> near_ref;
   std::vector<int> near_count, near_tri;
   std::vector<float> near_gap;
+  std::vector<polydem::ShapeView<double>> views;    // the templates', per step
   bigint near_builds;    // lists built (statistics, this rank)
   bigint near_builds_all, near_overflows_all;    // all ranks, since the fix was defined (post_run)
   bigint near_builds_run;    // near_builds at the start of the run

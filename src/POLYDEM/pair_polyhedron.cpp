@@ -399,6 +399,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
   double **firstshear = fix_history->firstvalue;
 
   const auto atoms = polydem::host_atoms(atom);
+  avec->views(views);
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -406,7 +407,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
     double *allshear = firstshear[i];
     int *jlist = firstneigh[i];
     const int jnum = numneigh[i];
-    const auto vi = avec->shape(pshape[i]).view();
+    const auto &vi = views[pshape[i]];
     const auto A = polydem::gather_polyhedron_body(atoms, i, vi);
 
     for (int jj = 0; jj < jnum; jj++) {
@@ -420,7 +421,7 @@ void PairPolyhedron::compute(int eflag, int vflag)
         polydem::history_release(shear, nhistory);
         continue;
       }
-      const auto vj = avec->shape(pshape[j]).view();
+      const auto &vj = views[pshape[j]];
       const auto B = polydem::gather_polyhedron_body(atoms, j, vj);
       const auto c =
           polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate, shear, *ws, local_counts,

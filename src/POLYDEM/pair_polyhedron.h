@@ -19,6 +19,7 @@ PairStyle(polyhedron,PairPolyhedron);
 #include "poly_roles.h"
 #include "polydem_law_table.h"
 #include "polydem_pair_counts.h"
+#include "polydem_shape_view.h"
 
 #include <memory>
 #include <vector>
@@ -66,6 +67,7 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
 
   std::unique_ptr<polydem::OverlapWorkspace<double, 128>> ws;
   std::vector<double> contact_data;    // CR_NFIELD doubles per stored contact
+  std::vector<polydem::ShapeView<double>> views;    // the templates', per compute
   bigint contact_step;                 // step of contact_data, -1: none
 
   bool store_contacts_now();

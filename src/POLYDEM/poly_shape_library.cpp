@@ -198,6 +198,12 @@ void PolyShapeLibrary::set_shape_scale(int i, int ishape, double scale)
   atom->radius[i] = v.radius * scale;
 }
 
+void PolyShapeLibrary::views(std::vector<polydem::ShapeView<double>> &out) const
+{
+  out.resize(templates.size());
+  for (size_t k = 0; k < templates.size(); ++k) out[k] = templates[k]->view();
+}
+
 void PolyShapeLibrary::inertia(int i, double *moments) const
 {
   const auto v = templates[atom->pshape[i]]->view();

@@ -24,6 +24,7 @@
 
 namespace polydem {
 class PolyShapeTemplate;
+template <typename T> struct ShapeView;
 }
 
 namespace LAMMPS_NS {
@@ -53,6 +54,9 @@ class PolyShapeLibrary : protected Pointers {
                 const std::string &record);
   // incremented whenever templates change: styles refresh device copies
   int shape_version() const { return version; }
+  // every template's view, by template index (a style's loop over atoms
+  // takes them from here rather than building one per atom or pair)
+  void views(std::vector<polydem::ShapeView<double>> &out) const;
 
   // ---- per-atom helpers
   // set template and scale of atom i, keeping its density
