@@ -119,9 +119,10 @@ POLYDEM_FN OverlapResult<T> convex_overlap(const PosedShape<T> &A, const PosedSh
   if (!touching && !mixed) {
     bool apart = false;
     int ia = 0, ib = 0;
-    if (axis) {
-      ia = (int) axis[3];
-      ib = (int) axis[4];
+    if (axis) {    // vertex indices checked before the conversion (NaN, stale values)
+      const T fa = axis[3], fb = axis[4];
+      ia = fa >= T(0) && fa < T(A.view->nverts) ? (int) fa : -1;
+      ib = fb >= T(0) && fb < T(B.view->nverts) ? (int) fb : -1;
       apart = gjk_axis_separates(A, B, make_vec3(axis[0], axis[1], axis[2]), ia, ib);
     }
     if (!apart) {

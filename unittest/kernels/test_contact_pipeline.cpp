@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -236,6 +237,21 @@ TEST(ContactPipeline, ApartPairKeepsGjkAxis)
       EXPECT_TRUE(gjk_axis_separates(A.shape, B.shape, make_vec3(h[0], h[1], h[2]), ia, ib))
           << "step " << step;
     }
+  }
+  // a slot holding values that are no axis (NaN, out-of-range vertices) is
+  // ignored: GJK decides, as with a cleared slot
+  for (double gap : {0.85, 2.0}) {
+    Atoms2 at(gap, 0.9, 1.1);
+    const auto atoms = host_atoms(&at);
+    const auto A = gather_polyhedron_body(atoms, 0, sv), B = gather_polyhedron_body(atoms, 1, sv);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    double hbad[CONTACT_HIST] = {nan, 1.0, 0.0, 1e300, -7.0}, hz[CONTACT_HIST] = {0, 0, 0, 0, 0};
+    double c1[PP_NCOUNT] = {0, 0, 0, 0, 0}, c2[PP_NCOUNT] = {0, 0, 0, 0, 0};
+    const auto r1 = polyhedron_pair_contact(A, B, tab.t, 1e-4, true, hbad, *ws, c1, false);
+    const auto r2 = polyhedron_pair_contact(A, B, tab.t, 1e-4, true, hz, *ws, c2, false);
+    ASSERT_EQ(r1.contact, r2.contact) << gap;
+    if (r1.contact) expect_same(r1.cf, r2.cf);
+    for (int k = 0; k < CONTACT_HIST; k++) EXPECT_EQ(hbad[k], hz[k]) << gap << " " << k;
   }
   std::printf("[ pipeline ] cubes approaching and parting: %d apart steps (%d decided by the "
               "kept axis), %d contact steps\n", napart, nkept, ncontact);
