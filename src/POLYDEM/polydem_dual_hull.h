@@ -74,7 +74,6 @@ template <typename T> struct HullIntegrals {
   Vec3<T> S[2];          // int n dA over faces owned by A (0) / B (1)
   Vec3<T> M[2];          // int (p - ref_k) x n dA over those faces
   T area[2];             // scalar area of those faces
-  Vec3<T> amoment[2];    // int p dA over those faces
   int nverts;            // primal vertices (= dual triangles)
 };
 
@@ -376,7 +375,7 @@ POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec
   const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
   T vol = T(0);    // 3 x (pyramids from x_o)
   Vec3<T> vm = zero;
-  Vec3<T> S[2] = {zero, zero}, M[2] = {zero, zero}, am[2] = {zero, zero};
+  Vec3<T> S[2] = {zero, zero}, M[2] = {zero, zero};
   T ar[2] = {T(0), T(0)};
   int nv = 0;
   for (int t = 0; t < w.ntslots; ++t) {
@@ -398,13 +397,11 @@ POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec
         S[0] += s * n;
         M[0] += s * cross(ct - ref[0], n);
         ar[0] += s;
-        am[0] += s * ct;
       }
       if (own & OWNER_B) {
         S[1] += s * n;
         M[1] += s * cross(ct - ref[1], n);
         ar[1] += s;
-        am[1] += s * ct;
       }
     }
   }
@@ -414,7 +411,6 @@ POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec
     out.S[k] = sgn * S[k];
     out.M[k] = sgn * M[k];
     out.area[k] = sgn * ar[k];
-    out.amoment[k] = sgn * am[k];
   }
   out.nverts = nv;
   const T atot = sgn * (ar[0] + ar[1]);

@@ -192,7 +192,8 @@ namespace overlap_detail {
       map[t] = cut - pa[iv] <= tol ? (short) nk++ : (short) -1;
     }
     if (nk == 0) return STATUS_SEPARATED;
-    // A's planes on the kept part are posed once (w.hz_new[l] = 1 marks them);
+    // A's planes on the kept part are posed once (w.hz_new[l] = 1 marks them,
+    // w.hz_tri lists them and w.cviol their n.x until the hull starts);
     // each vertex is posed once (w.vis: vertex -> its first slot)
     short *vslot = w.vis;
     for (int i = 0; i < nva; ++i) vslot[i] = -1;
@@ -220,8 +221,9 @@ namespace overlap_detail {
         w.tc[k][e] = l;
         if (!w.hz_new[l]) {
           w.hz_new[l] = 1;
-          w.hz_tri[nka++] = l;
           posed_plane(a, q[e], xa, w.pl + 4 * l);
+          w.cviol[nka] = w.pl[4 * l];    // n.x, for the coincident-plane check
+          w.hz_tri[nka++] = l;
           w.owner[l] = OWNER_A;
           w.conflict[l] = -2;
         }
@@ -295,10 +297,10 @@ namespace overlap_detail {
       posed_plane(b, f, xb, d);
       bool merged = false;
       for (int i = 0; i < nka && !merged; ++i) {
+        const T dx = w.cviol[i] - d[0];
+        if (fabs(dx) > T(16) * Eps<T>::value) continue;
         const int j = w.hz_tri[i];
         const T *pj = w.pl + 4 * j;
-        const T dx = pj[0] - d[0];
-        if (fabs(dx) > T(16) * Eps<T>::value) continue;
         const T dy = pj[1] - d[1], dz = pj[2] - d[2];
         if (dx * dx + dy * dy + dz * dz <= T(256) * Eps<T>::value * Eps<T>::value &&
             fabs(pj[3] - d[3]) <= tol) {
