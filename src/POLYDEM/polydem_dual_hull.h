@@ -369,7 +369,7 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
 // pass (seed Eq. 9), accurate to round-off there, and skips the second pass.
 // The default (infinite) always takes the second pass.
 template <typename T, int MP>
-POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2],
+POLYDEM_FN void dual_hull_integrate(DualHullWorkspace<T, MP> &w, const Vec3<T> ref[2],
                                     HullIntegrals<T> &out, T thin_below = T(1e30))
 {
   const Vec3<T> zero = make_vec3(T(0), T(0), T(0));
@@ -378,29 +378,54 @@ POLYDEM_FN void dual_hull_integrate(const DualHullWorkspace<T, MP> &w, const Vec
   Vec3<T> S[2] = {zero, zero}, M[2] = {zero, zero};
   T ar[2] = {T(0), T(0)};
   int nv = 0;
+  // one face at a time: its area A_f and first moment m_f = int_f p dA from
+  // the fan triangles (F_a, P_t, P_t2) walked around the face, then
+  //   V = 1/3 sum_f h_f A_f,   int p dV = 1/4 sum_f h_f m_f   (seed Eq. 9),
+  //   S_k = sum_f A_f n_f,     M_k = sum_f (m_f - A_f ref_k) x n_f
+  // over the faces of particle k (w.hz_edge: plane -> face done)
+  short *done = w.hz_edge;
+  for (int l = 0; l < w.nplanes; ++l) done[l] = 0;
   for (int t = 0; t < w.ntslots; ++t) {
     if (w.tstate[t] != 1) continue;
     ++nv;
     for (int e = 0; e < 3; ++e) {
       const int a = w.tc[t][e];
+      if (done[a]) continue;
+      done[a] = 1;
       const T *q = w.pl + 4 * a;
-      Vec3<T> n, F, p1, p2;
-      const T sa = hull_detail::fan_triangle(w, t, e, n, F, p1, p2);
-      const Vec3<T> ct = (T(1) / T(3)) * (F + p1 + p2);
-      vol += q[3] * sa;
-      vm += (T(0.25) * q[3] * sa) * ct;
+      const Vec3<T> n = make_vec3(q[0], q[1], q[2]);
+      const Vec3<T> F = q[3] * n;
+      T fa = T(0);
+      Vec3<T> fm = zero;
+      // edge e of t is (a, b); the triangle across it holds a as well, and
+      // its edge from a continues the face's boundary
+      int tt = t, ee = e;
+      for (int k = 0; k < w.ntslots; ++k) {
+        const int t2 = w.tadj[tt][ee];
+        const Vec3<T> &p1 = w.P[tt], &p2 = w.P[t2];
+        const T sa = T(0.5) * dot(n, cross(p1 - F, p2 - F));
+        fa += sa;
+        fm += sa * (F + p1 + p2);
+        ee = w.tc[t2][0] == a ? 0 : (w.tc[t2][1] == a ? 1 : 2);
+        tt = t2;
+        if (tt == t) break;
+      }
+      fm = (T(1) / T(3)) * fm;
+      vol += q[3] * fa;
+      vm += (T(0.25) * q[3]) * fm;
       const unsigned char own = w.owner[a];
       if (own == OWNER_NONE) continue;
-      const T s = own == OWNER_BOTH ? T(0.5) * sa : sa;
-      // each owner's face integrals (a face of both counts half for each)
+      // a face of both particles counts half for each
+      const T half = own == OWNER_BOTH ? T(0.5) : T(1);
+      const T s = half * fa;
       if (own & OWNER_A) {
         S[0] += s * n;
-        M[0] += s * cross(ct - ref[0], n);
+        M[0] += cross(half * fm - s * ref[0], n);
         ar[0] += s;
       }
       if (own & OWNER_B) {
         S[1] += s * n;
-        M[1] += s * cross(ct - ref[1], n);
+        M[1] += cross(half * fm - s * ref[1], n);
         ar[1] += s;
       }
     }

@@ -25,14 +25,16 @@ template <typename T> POLYDEM_FN void free_rotor_substep(int k, T h, const T ine
 {
   if (!(inertia[k] > T(0))) return;    // massless axis (degenerate template): no rotation
   const T phi = h * Lb[k] / inertia[k];
-  const T c = cos(phi), s = sin(phi);
+  // one sine and cosine, of the half angle: cos phi = 1 - 2 sin^2(phi/2),
+  // sin phi = 2 sin(phi/2) cos(phi/2)
+  const T ch = cos(T(0.5) * phi), sh = sin(T(0.5) * phi);
+  const T c = T(1) - T(2) * sh * sh, s = T(2) * sh * ch;
   const int a = (k + 1) % 3, b = (k + 2) % 3;
   // Lb <- Rot_k(-phi) Lb
   const T la = Lb[a], lb = Lb[b];
   Lb[a] = c * la + s * lb;
   Lb[b] = -s * la + c * lb;
   // q <- q * (cos(phi/2), sin(phi/2) e_k)
-  const T ch = cos(T(0.5) * phi), sh = sin(T(0.5) * phi);
   T e[3] = {T(0), T(0), T(0)};
   e[k] = sh;
   const Quat<T> qq = qmul(make_quat(q[0], q[1], q[2], q[3]), make_quat(ch, e[0], e[1], e[2]));
