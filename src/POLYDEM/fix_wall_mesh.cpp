@@ -126,6 +126,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     extarray = 0;
     tri_local.assign(3 * (size_t) geom.mesh.ntri(), 0.0);
     tri_global.assign(3 * (size_t) geom.mesh.ntri(), 0.0);
+    tri_touched.clear();
   }
 
   // composites: each part keeps its own wall history
@@ -247,7 +248,13 @@ void FixWallMesh::compute_forces(bool update)
   for (double &c : fresh_local) c = 0.0;
   reduced = 0;
   tri_reduced = 0;
-  if (pertri) std::fill(tri_local.begin(), tri_local.end(), 0.0);
+  // per-triangle forces: only the rows the last step wrote are cleared (a
+  // large mesh has far more triangles than contacts)
+  if (pertri) {
+    for (const int t : tri_touched)
+      for (int c = 0; c < 3; c++) tri_local[3 * (size_t) t + c] = 0.0;
+    tri_touched.clear();
+  }
   double **f = atom->f, **torque = atom->torque;
   const auto atoms = polydem::host_atoms(atom);
   const int *mask = atom->mask;
@@ -257,9 +264,12 @@ void FixWallMesh::compute_forces(bool update)
   ws->record = pertri;
   polydem::WallPatches<double> P;
   auto add_tri = [&](int t, double fx, double fy, double fz) {
-    tri_local[3 * (size_t) t] += fx;
-    tri_local[3 * (size_t) t + 1] += fy;
-    tri_local[3 * (size_t) t + 2] += fz;
+    double *r = &tri_local[3 * (size_t) t];
+    // a row that is all zero may be listed twice: clearing it twice is harmless
+    if (r[0] == 0.0 && r[1] == 0.0 && r[2] == 0.0) tri_touched.push_back(t);
+    r[0] += fx;
+    r[1] += fy;
+    r[2] += fz;
   };
   // near lists index local atoms: stale after exchange/sort (reneighboring)
   // and at setup (anything may have changed between runs)

@@ -126,6 +126,7 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   // step, this rank (3 per triangle, lab frame), and summed over ranks
   int pertri, tri_reduced;
   std::vector<double> tri_local, tri_global;
+  std::vector<int> tri_touched;    // triangles with a nonzero row in tri_local (plain path)
   virtual void fetch_triangle_forces() {}    // /kk: device -> tri_local
 
   polydem::StlTransform parse_keywords(int narg, char **arg);
