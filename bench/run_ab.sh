@@ -5,11 +5,14 @@
 # plain and -sf kk) and the wall benchmark (wall_mesh/in.floor, 225
 # dodecahedra on a 10,082-triangle floor, merge and cache defaults).
 # Suite "walls": wall_mesh/in.floor on the flat 10k floor and on the curved
-# 10k and 150k bowls (cache 128) instead.
+# 10k and 150k bowls (cache 128) instead. Suite "kk": the dense case plain,
+# -sf kk with newton pair off and with newton on (one thread each), and the
+# /kk runs' cost relative to plain within each binary.
 # Prints microseconds per particle-step (CPU time) of each run and the ratio
 # B/A of the medians.
-#   bash bench/run_ab.sh lmpA lmpB [rounds] [default|walls]
+#   bash bench/run_ab.sh lmpA lmpB [rounds] [default|walls|kk]
 set -euo pipefail
+export OMP_PROC_BIND=${OMP_PROC_BIND:-false}    # Kokkos OpenMP: no binding warning
 here=$(cd "$(dirname "$0")" && pwd)
 A=$(realpath "$1") B=$(realpath "$2") rounds=${3:-3} suite=${4:-default}
 scratch=$(mktemp -d)
@@ -38,8 +41,17 @@ walls() {    # lmp which: the floor and the two bowls
   done
 }
 
+dense() {    # lmp which name [args]: the dense dodecahedra, N = 1e4
+  local name=$1
+  shift
+  "$lmp" "$@" -in "$here/in.dodeca_dense" -var pot "$here/../potentials" -var nx 20 -var ny 20 \
+    -var nz 25 -var steps 100 -log "log.$name" -screen none
+  res[${name}_$which]+="$(us "log.$name") "
+}
+
 cases="dense densekk floor"
 [ "$suite" = walls ] && cases="floor10k bowl10k bowl150k"
+[ "$suite" = kk ] && cases="dense densekk densekkon"
 for r in $(seq "$rounds"); do
   for which in A B; do
     lmp=${!which}
@@ -47,13 +59,12 @@ for r in $(seq "$rounds"); do
       walls
       continue
     fi
-    "$lmp" -in "$here/in.dodeca_dense" -var pot "$here/../potentials" -var nx 20 -var ny 20 \
-      -var nz 25 -var steps 100 -log log.dense -screen none
-    res[dense_$which]+="$(us log.dense) "
-    "$lmp" -k on -sf kk -pk kokkos newton off -in "$here/in.dodeca_dense" \
-      -var pot "$here/../potentials" -var nx 20 -var ny 20 -var nz 25 -var steps 100 \
-      -log log.densekk -screen none
-    res[densekk_$which]+="$(us log.densekk) "
+    dense dense
+    dense densekk -k on -sf kk -pk kokkos newton off
+    if [ "$suite" = kk ]; then
+      dense densekkon -k on -sf kk -pk kokkos newton on
+      continue
+    fi
     "$lmp" -in "$here/wall_mesh/in.floor" -var mesh floor10k.stl -var merge 1e-9 -var cache 128 \
       -var lift 0.0095 -var pot "$here/../potentials" -log log.floor -screen none
     res[floor_$which]+="$(us log.floor) "
@@ -66,3 +77,12 @@ for case in $cases; do
   printf "%-8s A: %s us   B: %s us   (CPU us/particle-step per run)  median B/A = %.3f\n" \
     "$case" "${res[${case}_A]}" "${res[${case}_B]}" "$(echo "$b / $a" | bc -l)"
 done
+if [ "$suite" = kk ]; then
+  for which in A B; do
+    p=$(echo "${res[dense_$which]}" | median)
+    for case in densekk densekkon; do
+      k=$(echo "${res[${case}_$which]}" | median)
+      printf "%s: %-9s / plain = %.3f (medians)\n" "$which" "$case" "$(echo "$k / $p" | bc -l)"
+    done
+  done
+fi

@@ -82,12 +82,13 @@ inline void PairPolydem::kk_sync_atoms(int eflag, int vflag)
 }
 
 /* ----------------------------------------------------------------------
-   before the plain init_style: atom_style polyhedron/kk; newton pair off
-   (FixNeighHistoryKokkos keeps the history of a pair with a ghost atom only
-   on the owner of i: its pre_exchange has no reverse communication, so with
-   newton on a pair whose owner changes at reneighboring would lose it); and
-   where a history is kept, the Kokkos history fix in the placeholder's
-   place (the plain init_style would otherwise create a plain one)
+   before the plain init_style: atom_style polyhedron/kk; and where a
+   history is kept, the Kokkos history fix in the placeholder's place (the
+   plain init_style would otherwise create a plain one). Newton pair on or
+   off: with on, each pair is computed once and the ghosts' forces and
+   torques go back to their owners; the history fix sends the ghosts'
+   histories to their owners at reneighboring
+   (FixNeighHistoryPolyhedronKokkos::pre_exchange_newton)
 ------------------------------------------------------------------------- */
 
 template <class DeviceType> AtomVecPolyhedronKokkos *PairPolydem::kk_init_before(bool history)
@@ -95,10 +96,6 @@ template <class DeviceType> AtomVecPolyhedronKokkos *PairPolydem::kk_init_before
   auto *avecKK = AtomVecPolyhedronKokkos::of(atom);
   if (!avecKK)
     error->all(FLERR, "pair_style {}/kk requires atom_style polyhedron/kk", style_name);
-  if (force->newton_pair)
-    error->all(FLERR,
-               "pair_style {}/kk requires newton pair off: use '-pk kokkos newton off' or "
-               "'package kokkos newton off' (default on GPUs)", style_name);
   choose_history_size();
   if (history && fix_history == nullptr) {
     fix_history = polydem_kk::create_history_fix<DeviceType>(

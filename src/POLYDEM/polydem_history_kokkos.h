@@ -15,9 +15,14 @@
 #include "modify.h"
 #include "neigh_list_kokkos.h"
 #include "polydem_history.h"
+#include "polydem_lammps_compat.h"
+
+#include "error.h"
+#include "force.h"
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -137,6 +142,10 @@ class FixNeighHistoryPolyhedronKokkos :
   // data never reached the device.
   void pre_exchange() override
   {
+    if (this->force->newton_pair) {
+      pre_exchange_newton();
+      return;
+    }
     FixNeighHistoryKokkos<DeviceType>::pre_exchange();
     const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
     v.npartner->template modify<DeviceType>();
@@ -162,6 +171,156 @@ class FixNeighHistoryPolyhedronKokkos :
   }
   // the pair style's largest liquid-bridge rupture distance (0: none)
   double reach = 0.0;
+
+  /* --------------------------------------------------------------------
+     newton pair on (the base class refuses it): a pair with a ghost atom
+     is in the list of one rank only, so its history goes to the ghost's
+     owner by reverse communication, as FixNeighHistory::pre_exchange_newton
+     does for the plain styles. On the host (once per reneighboring): the
+     entries of each atom counted, local and ghost, the ghosts' counts
+     added to their owners; the row capacity raised on all ranks to the
+     largest count; the rows filled; the ghosts' rows appended to their
+     owners'. The values are the lower-tag atom's for both partners
+     (PairPolydem::transfer_history copies them unchanged).
+  -------------------------------------------------------------------- */
+  void pre_exchange_newton()
+  {
+    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
+    AtomKokkos *akk = (AtomKokkos *) this->atom;
+    akk->sync(Host, TAG_MASK);
+    this->k_firstflag.template sync<LMPHostType>();
+    this->k_firstvalue.template sync<LMPHostType>();
+    v.npartner->template sync<LMPHostType>();
+    v.partner->template sync<LMPHostType>();
+    v.valuepartner->template sync<LMPHostType>();
+    auto *list = static_cast<NeighListKokkos<DeviceType> *>(this->pair->list);
+    const int inum = list->inum;
+    const auto ilist = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list->d_ilist);
+    const auto numneigh =
+        Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list->d_numneigh);
+    const auto neighbors =
+        Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list->d_neighbors);
+    const auto flag = this->k_firstflag.template view<LMPHostType>();
+    const auto value = this->k_firstvalue.template view<LMPHostType>();
+    const tagint *tag = this->atom->tag;
+    const int nall = this->atom->nlocal + this->atom->nghost;
+    const int dnum = this->dnum;
+
+    // counts: this rank's entries of each atom, then the ghosts' added
+    auto np = v.npartner->template view<LMPHostType>();
+    for (int i = 0; i < nall; i++) np(i) = 0;
+    for (int ii = 0; ii < inum; ii++) {
+      const int i = ilist(ii);
+      for (int jj = 0; jj < numneigh(i); jj++)
+        if (flag(i, jj)) {
+          np(i)++;
+          np(neighbors(i, jj) & NEIGHMASK)++;
+        }
+    }
+    // (the fixed-size call also brings CommKokkos's send lists to the host,
+    // which the variable one below reads unsynced in LAMMPS 29Sep2021)
+    rcomm = RCOMM_COUNT;
+    polydem_compat::reverse_comm_fix(this->comm, this, 1);
+    int most = 0, all = 0;
+    for (int i = 0; i < this->atom->nlocal; i++) most = std::max(most, np(i));
+    most = std::max(most, this->maxpartner);
+    MPI_Allreduce(&most, &all, 1, MPI_INT, MPI_MAX, this->world);
+    if (all > this->maxpartner) {
+      this->maxpartner = all + 8;
+      grow_arrays(this->atom->nmax);
+      np = v.npartner->template view<LMPHostType>();
+    }
+
+    // the rows of local and ghost atoms, then the ghosts' to their owners
+    auto partner = v.partner->template view<LMPHostType>();
+    auto vp = v.valuepartner->template view<LMPHostType>();
+    for (int i = 0; i < nall; i++) np(i) = 0;
+    auto add = [&](int a, tagint other, int i, int jj) {
+      const int m = np(a)++;
+      if (m >= this->maxpartner)
+        this->error->one(FLERR, "pair history: partner row of atom {} overflows", tag[a]);
+      partner(a, m) = other;
+      for (int k = 0; k < dnum; k++) vp(a, dnum * m + k) = value(i, dnum * jj + k);
+    };
+    for (int ii = 0; ii < inum; ii++) {
+      const int i = ilist(ii);
+      for (int jj = 0; jj < numneigh(i); jj++)
+        if (flag(i, jj)) {
+          const int j = neighbors(i, jj) & NEIGHMASK;
+          add(i, tag[j], i, jj);
+          add(j, tag[i], i, jj);
+        }
+    }
+    rcomm = RCOMM_ROWS;
+    polydem_compat::reverse_comm_fix_variable(this->comm, this);
+    rcomm = RCOMM_NONE;
+
+    v.npartner->template modify<LMPHostType>();
+    v.partner->template modify<LMPHostType>();
+    v.valuepartner->template modify<LMPHostType>();
+    v.npartner->template sync<DeviceType>();
+    v.partner->template sync<DeviceType>();
+    v.valuepartner->template sync<DeviceType>();
+    this->maxexchange = (dnum + 1) * this->maxpartner + 1;
+  }
+
+  // reverse communication of pre_exchange_newton: the counts, or the rows
+  int pack_reverse_comm_size(int n, int first) override
+  {
+    const auto np = partner_views<DeviceType>(this).npartner->template view<LMPHostType>();
+    int m = 0;
+    for (int i = first; i < first + n; i++) m += 1 + (this->dnum + 1) * np(i);
+    return m;
+  }
+  int pack_reverse_comm(int n, int first, double *buf) override
+  {
+    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
+    const auto np = v.npartner->template view<LMPHostType>();
+    const auto partner = v.partner->template view<LMPHostType>();
+    const auto vp = v.valuepartner->template view<LMPHostType>();
+    const int dnum = this->dnum;
+    int m = 0;
+    for (int i = first; i < first + n; i++) {
+      buf[m++] = np(i);
+      if (rcomm != RCOMM_ROWS) continue;
+      for (int k = 0; k < np(i); k++) {
+        buf[m++] = (double) partner(i, k);
+        for (int d = 0; d < dnum; d++) buf[m++] = vp(i, dnum * k + d);
+      }
+    }
+    return m;
+  }
+  void unpack_reverse_comm(int n, int *list, double *buf) override
+  {
+    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
+    const auto np = v.npartner->template view<LMPHostType>();
+    const auto partner = v.partner->template view<LMPHostType>();
+    const auto vp = v.valuepartner->template view<LMPHostType>();
+    const int dnum = this->dnum;
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+      const int j = list[i];
+      const int c = static_cast<int>(buf[m++]);
+      if (rcomm != RCOMM_ROWS) {
+        np(j) += c;
+        continue;
+      }
+      for (int k = 0; k < c; k++) {
+        const int slot = np(j)++;
+        if (slot >= this->maxpartner)
+          this->error->one(FLERR, "pair history: partner row of atom {} overflows",
+                           this->atom->tag[j]);
+        partner(j, slot) = static_cast<tagint>(buf[m++]);
+        for (int d = 0; d < dnum; d++) vp(j, dnum * slot + d) = buf[m++];
+      }
+    }
+  }
+
+ private:
+  enum { RCOMM_NONE, RCOMM_COUNT, RCOMM_ROWS };
+  int rcomm = RCOMM_NONE;
+
+ public:
   // DualView::resize keeps the side marked newer. After the base's sync both
   // are equal, so it keeps the device rows with a fresh host copy, which the
   // base then marks modified. Mark the synced host newer first, so that the

@@ -11,6 +11,7 @@
 
 #include "polydem_lammps_version.h"
 
+#include "comm.h"
 #include "domain.h"
 #include "neigh_request.h"
 #include "neighbor.h"
@@ -51,6 +52,7 @@
 #endif
 
 namespace LAMMPS_NS {
+class Fix;
 class Pair;
 class Region;
 
@@ -121,6 +123,26 @@ inline void request_kokkos_half_list(Neighbor *neighbor, Pair *pair, bool host, 
   neighbor->requests[irequest]->kokkos_device = device;
   neighbor->requests[irequest]->full = 0;
   neighbor->requests[irequest]->half = 1;
+#endif
+}
+
+// reverse communication of a fix: a fixed number of values per atom (size,
+// 0: the fix's comm_reverse), and a number the fix's pack_reverse_comm_size
+// tells per swap
+inline void reverse_comm_fix(Comm *comm, Fix *fix, int size)
+{
+#if POLYDEM_LAMMPS_NEW_API
+  comm->reverse_comm(fix, size);
+#else
+  comm->reverse_comm_fix(fix, size);
+#endif
+}
+inline void reverse_comm_fix_variable(Comm *comm, Fix *fix)
+{
+#if POLYDEM_LAMMPS_NEW_API
+  comm->reverse_comm_variable(fix);
+#else
+  comm->reverse_comm_fix_variable(fix);
 #endif
 }
 

@@ -37,7 +37,8 @@ int me()
 }
 
 // mu: "" (frictionless) or " 0.5" (pair_coeff friction, per-pair history)
-std::vector<std::string> setup(const std::string &overlap, const std::string &mu = "")
+std::vector<std::string> setup(const std::string &overlap, const std::string &mu = "",
+                               const std::string &newton = "off")
 {
   const polydem_test::GasSpec g = polydem_test::gas(6, 0.1, 0.75, 5.0, 77);
   const std::string data =
@@ -46,7 +47,7 @@ std::vector<std::string> setup(const std::string &overlap, const std::string &mu
   const double m = g.mass();
   const double tc = pair_contact_time(m, 1e8);
   return {"units si", "atom_style polyhedron", "atom_modify map array", "boundary p p p",
-          "comm_modify vel yes", "newton off",
+          "comm_modify vel yes", "newton " + newton,
           "polyhedron_shape e ellipsoid " + num(g.xi * b) + " " + num(b) + " " + num(b),
           "read_data " + data, "pair_style ellipsoid overlap " + overlap,
           "pair_coeff * * 1e8 0.9" + mu, "neighbor " + num(0.2 * b) + " bin",
@@ -134,6 +135,24 @@ TEST(EllipsoidKokkos, MatchesPlain)
       const auto a = gather(kk, MPI_COMM_WORLD), b = gather(plain, MPI_COMM_WORLD);
       compare(a, b, kk, plain, ("kk vs plain, overlap " + ov + ", mu" + mu).c_str());
     }
+    EXPECT_GT(pairvec(plain, 1), 20.0) << "no contacts: the test tests nothing";
+  }
+}
+
+// newton on: each pair once, the ghosts' forces, torques and histories sent
+// to their owners; /kk against plain with newton on (with friction and
+// rolling resistance, whose histories cross reneighborings)
+TEST(EllipsoidKokkos, NewtonOnMatchesPlain)
+{
+  for (std::string mu : {" 0.5", " 0.5 rolling 0.1 cohesion 5"}) {
+    Lmp plain, kk(polydem_test::kk_styles("on"));
+    plain.cmds(setup("centre damping contact", mu, "on"));
+    kk.cmds(setup("centre damping contact", mu, "on"));
+    ASSERT_EQ(kk.lmp->force->newton_pair, 1);
+    plain.cmd("run 2100");
+    kk.cmd("run 2100");
+    const auto a = gather(kk, MPI_COMM_WORLD), b = gather(plain, MPI_COMM_WORLD);
+    compare(a, b, kk, plain, ("newton on, kk vs plain, mu" + mu).c_str());
     EXPECT_GT(pairvec(plain, 1), 20.0) << "no contacts: the test tests nothing";
   }
 }

@@ -8,5 +8,5 @@ if(POLYDEM_KOKKOS)
   polydem_kk_threads_test(lammps.pair_kokkos_vs_plain 4 test_pair_kokkos)
   # both instances on the same 2-rank decomposition (atoms migrate between ranks)
   polydem_mpi_test(lammps.pair_kokkos_2_ranks 2 test_pair_kokkos
-    --gtest_filter=PairKokkos.DensePackingMatchesPlain:PairKokkos.RestartKeepsContactHistory)
+    --gtest_filter=PairKokkos.DensePackingMatchesPlain:PairKokkos.RestartKeepsContactHistory:PairKokkos.NewtonOn*)
 endif()

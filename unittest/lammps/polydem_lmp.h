@@ -87,11 +87,11 @@ inline std::vector<std::string> kk(const std::vector<std::string> &rest)
   return a;
 }
 
-// the arguments that run the /kk styles (-sf kk) with newton off, as the
-// /kk pair styles need
-inline std::vector<std::string> kk_styles()
+// the arguments that run the /kk styles (-sf kk) with newton pair off (the
+// Kokkos default on GPUs), or on
+inline std::vector<std::string> kk_styles(const std::string &newton = "off")
 {
-  return kk({"-sf", "kk", "-pk", "kokkos", "newton", "off"});
+  return kk({"-sf", "kk", "-pk", "kokkos", "newton", newton});
 }
 
 // no suffix, and /kk (with POLYDEM_KK_THREADS threads) where LAMMPS has KOKKOS

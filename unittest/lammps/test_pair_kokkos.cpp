@@ -39,15 +39,15 @@ using polydem_test::potentials;
 
 namespace {
 
-// newton off: FixNeighHistoryKokkos keeps no history for ghost partners under
-// newton on, so the /kk pair style requires it (the default on GPUs)
+// newton off (the Kokkos default on GPUs); the NewtonOn tests run both
+// styles with newton on
 const std::vector<std::string> KK = polydem_test::kk_styles();
 
 // sorting every 50 steps: atoms are permuted with their contact history.
 // 8 x 8 x 6 lattice sites (spacing 1): half cubes (edge 0.95: in-radius
 // 0.475, circumradius 0.82), half dodecahedra (edge 0.43: 0.48 / 0.60).
 // Contact time (printed by the pair style) about 0.02, dt = 1e-4.
-std::vector<std::string> setup()
+std::vector<std::string> setup(const std::string &newton = "off")
 {
   return polydem_test::cube_dode_lattice(
       {
@@ -55,7 +55,7 @@ std::vector<std::string> setup()
           "atom_style polyhedron",
           "atom_modify map array sort 50 0.0",
           "comm_modify vel yes",
-          "newton off",
+          "newton " + newton,
           "boundary p p p",
       },
       8, 8, 6,
@@ -390,15 +390,39 @@ TEST(PairKokkos, HostVariantMatchesPlain)
   compare(plain, kk, "kk/host run 20", true);
 }
 
-TEST(PairKokkos, RequiresNewtonOff)
+// newton on: each pair once, the ghosts' forces and torques sent back, the
+// histories of pairs with a ghost partner sent to its owner at each
+// reneighboring (FixNeighHistoryPolyhedronKokkos::pre_exchange_newton);
+// against plain with newton on, through runs, reneighborings and sorting.
+// Also on 2 ranks (ctest), where pairs cross the subdomain boundary.
+TEST(PairKokkos, NewtonOnMatchesPlain)
 {
-  Lmp kk(polydem_test::kk({"-sf", "kk", "-pk", "kokkos", "newton", "on"}));
-  auto s = setup();
-  for (auto &c : s)
-    if (c == "newton off") c = "newton on";
-  kk.cmds(s);
-  const auto msg = kk.error_of("run 0");
-  EXPECT_NE(msg.find("requires newton pair off"), std::string::npos) << msg;
+  Lmp plain, kk(polydem_test::kk_styles("on"));
+  plain.cmds(setup("on"));
+  kk.cmds(setup("on"));
+  ASSERT_EQ(kk.lmp->force->newton_pair, 1);
+  auto both = [&](const std::string &run, const char *when) {
+    plain.cmd(run);
+    kk.cmd(run);
+    compare(plain, kk, when, true);
+  };
+  both("run 0", "newton on, run 0");
+  both("run 5", "newton on, run 5");
+  both("run 300", "newton on, run 300");
+  EXPECT_GE(kk.lmp->neighbor->ncalls, 4) << "no reneighboring during the run";
+}
+
+// rolling resistance (8 history values per pair) with newton on
+TEST(PairKokkos, NewtonOnRollingMatchesPlain)
+{
+  Lmp plain, kk(polydem_test::kk_styles("on"));
+  for (Lmp *l : {&plain, &kk}) {
+    l->cmds(setup("on"));
+    l->cmd("pair_coeff * * 1.0e4 0.3 0.7 0.5 rolling 0.2 cohesion 50");
+  }
+  plain.cmd("run 200");
+  kk.cmd("run 200");
+  compare(plain, kk, "newton on, rolling, run 200", true);
 }
 
 // overlap workspaces per pair slot: sized by the largest face count present
@@ -542,6 +566,35 @@ TEST(PairKokkos, RestartKeepsContactHistory)
   if (me() == 0)
     std::printf("[restart] |L| %.3g, max |L_k(kk) - L_k(plain)| %.3g = %.3g |L|\n", lnorm, worst,
                 worst / lnorm);
+}
+
+// the same with newton on: the cube's contact histories reach their owners
+// by reverse communication at each reneighboring (on 2 ranks from the other
+// side of the subdomain boundary), and the restart file keeps them
+TEST(PairKokkos, NewtonOnRestartKeepsContactHistory)
+{
+  auto sync = [](Lmp &l) {
+    ((LAMMPS_NS::AtomKokkos *) l.lmp->atom)->sync(LAMMPS_NS::Host, ALL_MASK);
+  };
+  const auto kk = polydem_test::pair_restart_case(
+      polydem_test::kk_styles("on"), ::testing::TempDir() + "polydem_pair_kk_restart_on.bin",
+      sync, "on");
+  const auto plain = polydem_test::pair_restart_case(
+      {}, ::testing::TempDir() + "polydem_pair_kk_restart_plain_on.bin", [](Lmp &) {}, "on");
+  const bool threads = polydem_test::kk_threads() > 1;
+  const double lnorm =
+      std::sqrt(kk.ref[3] * kk.ref[3] + kk.ref[4] * kk.ref[4] + kk.ref[5] * kk.ref[5]);
+  for (int k = 0; k < 6; k++) {
+    if (!threads)
+      EXPECT_EQ(kk.got[k], kk.ref[k]) << "component " << k;
+    else
+      EXPECT_NEAR(kk.got[k], kk.ref[k], k < 3 ? 1e-12 * 0.3 : 1e-7 * lnorm) << "component " << k;
+  }
+  for (int k = 0; k < 3; k++) {
+    EXPECT_NEAR(kk.ref[k], plain.ref[k], 1e-12 * 0.3) << "position " << k;
+    const double tol = threads ? 1e-7 * lnorm : 1e-12 * (std::fabs(plain.ref[3 + k]) + 1e-30);
+    EXPECT_NEAR(kk.ref[3 + k], plain.ref[3 + k], tol) << "angular momentum " << k;
+  }
 }
 
 // A plain run's restart file continued by /kk keeps the contact history:
