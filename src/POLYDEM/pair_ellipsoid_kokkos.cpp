@@ -59,6 +59,7 @@ template <class DeviceType> struct EllContactFunctor : PolyBodyViews<DeviceType>
   typename AT::t_efloat_1d eatom;
   typename AT::t_virial_array vatom;
   int nlocal, newton_pair;
+  int atomic;    // scatter with atomics (polydem_kk::needs_atomics)
   polydem_kk::TallyFlags tally;
   double dt;
 
@@ -95,7 +96,7 @@ template <class DeviceType> struct EllContactFunctor : PolyBodyViews<DeviceType>
                                             to_j ? 1.0 : 0.5, red.cnt);
       if (use_history) firsttouch(i, jj) = c.contact;
       if (!c.contact) continue;
-      polydem_kk::scatter_contact(this->f, this->torque, i, j, to_j, c.cf);
+      polydem_kk::scatter_contact(this->f, this->torque, i, j, to_j, c.cf, atomic != 0);
       const double F[3] = {c.cf.F_A.x, c.cf.F_A.y, c.cf.F_A.z};
       polydem_kk::ev_tally_xyz(red, tally, eatom, vatom, i, j, c.cf.energy, F, delx, dely, delz);
     }
@@ -182,6 +183,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   if (vflag_atom) fn.vatom = k_vatom.template view<DeviceType>();
   fn.nlocal = atom->nlocal;
   fn.newton_pair = force->newton_pair;
+  fn.atomic = polydem_kk::needs_atomics<typename DeviceType::execution_space>() ? 1 : 0;
   fn.tally = {atom->nlocal, force->newton_pair, eflag_global, eflag_atom, vflag_global,
               vflag_atom};
   fn.dt = update->dt;

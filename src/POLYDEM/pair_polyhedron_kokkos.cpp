@@ -116,9 +116,14 @@ typedef polydem_kk::PairReduce<PairPolyhedron::NCOUNT> PolyReduce;
 
 /* ----------------------------------------------------------------------
    step 3: one thread per candidate pair: gather the two bodies, the
-   pipeline's polyhedron_pair_contact (as the plain style) with the
-   workspace of slot p - first, scatter with atomics (i and j are shared
-   between threads)
+   pipeline's polyhedron_pair_contact (as the plain style) with a
+   workspace, scatter with atomics (i and j are shared between threads).
+   The workspace: on GPUs that of the pair's slot in the batch (p - first);
+   on CPU back ends (the execution space reaches host memory) that of the
+   thread (Kokkos's UniqueToken), so that all pairs run in one kernel
+   with a workspace that stays in the thread's cache (a batch of 16
+   pairs per thread and kernel cost about 7 % of the dense dodecahedra's
+   step in launches and cold workspaces)
 ------------------------------------------------------------------------- */
 
 template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<DeviceType> {
@@ -126,8 +131,14 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
   typedef ArrayTypes<DeviceType> AT;
   typedef PolyReduce value_type;
   typedef polydem::OverlapWorkspace<double, MF> Workspace;
+  typedef typename DeviceType::execution_space ExecSpace;
+  static constexpr bool per_thread =
+      Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
+  typedef typename std::conditional<per_thread, Kokkos::Experimental::UniqueToken<ExecSpace>,
+                                    int>::type Token;
 
   typename AT::t_neighbors_2d neighbors;
+  Token token;    // per_thread: the workspace's index
   typename AT::t_int_2d firsttouch;
   typename AT::t_float_2d firstshear;
   Kokkos::View<int *[2], DeviceType> pairs;
@@ -141,6 +152,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
   int store_contacts;
   int first;    // pair index of slot 0
   int nlocal, newton_pair, shearupdate;
+  int atomic;    // scatter with atomics (polydem_kk::needs_atomics)
   polydem_kk::TallyFlags tally;
   double dt;
 
@@ -148,7 +160,12 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
   {
     const int i = pairs(p, 0), jj = pairs(p, 1);
     const int j = neighbors(i, jj) & NEIGHMASK;
-    Workspace &ws = reinterpret_cast<Workspace *>(workspace.data())[p - first];
+    int slot;
+    if constexpr (per_thread)
+      slot = token.acquire();
+    else
+      slot = p - first;
+    Workspace &ws = reinterpret_cast<Workspace *>(workspace.data())[slot];
     const polydem::ShapeView<double> vi = shapes(this->pshape(i)), vj = shapes(this->pshape(j));
     const auto A = polydem::gather_polyhedron_body(*this, i, vi);
     const auto B = polydem::gather_polyhedron_body(*this, j, vj);
@@ -157,9 +174,11 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
     const auto c = polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate != 0,
                                                     &firstshear(i, polydem::pair_history_stride(laws) * jj), ws, red.cnt,
                                                     firsttouch(i, jj) != 0);
+    if constexpr (per_thread) token.release(slot);
     firsttouch(i, jj) = c.contact;
     if (!c.contact) return;
-    polydem_kk::scatter_contact(this->f, this->torque, i, j, newton_pair || j < nlocal, c.cf);
+    polydem_kk::scatter_contact(this->f, this->torque, i, j, newton_pair || j < nlocal, c.cf,
+                                atomic != 0);
     const polydem::Vec3<double> &xi = A.shape.x, &xj = B.shape.x;
     if (store_contacts && c.contact == 1) {
       const double pi[3] = {xi.x, xi.y, xi.z}, pj[3] = {xj.x, xj.y, xj.z};
@@ -316,27 +335,32 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::ensure_partne
 template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceType>::run_pairs()
 {
   typedef polydem::OverlapWorkspace<double, MF> Workspace;
-  // CPU back ends (Serial, OpenMP, ...: the execution space reaches host
-  // memory): a few slots per thread, so the batch's workspaces stay in cache
-  // (all pairs in one batch made the Serial /kk style 2x slower than plain);
-  // GPUs: as many slots as the budget allows
+  typedef PolyContactFunctor<DeviceType, MF> Functor;
   typedef typename DeviceType::execution_space ExecSpace;
-  const bool cpu = Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
-  const double budget = cpu
-      ? std::min(WORKSPACE_BUDGET_HOST, (double) SLOTS_PER_CPU_THREAD * ExecSpace::concurrency() * sizeof(Workspace))
-      : WORKSPACE_BUDGET_DEVICE;
-  const int maxslots = std::max(1, (int) (budget / sizeof(Workspace)));
-  const int want = std::min(npairs, maxslots);
-  if (want <= 0) return;
-  if ((double) d_workspace.extent(0) < (double) want * sizeof(Workspace)) {
+  if (npairs <= 0) return;
+  // CPU back ends: one workspace per thread (the functor's UniqueToken), all
+  // pairs in one kernel; GPUs: one workspace per pair of a batch, as many
+  // as the budget allows
+  typename Functor::Token token{};
+  int nws, batch;
+  if constexpr (Functor::per_thread) {
+    nws = token.size();
+    batch = store_contacts ? std::min(npairs, (int) RECORD_BATCH_CPU) : npairs;
+  } else {
+    nws = std::min(npairs, std::max(1, (int) (WORKSPACE_BUDGET_DEVICE / sizeof(Workspace))));
+    batch = nws;
+  }
+  if ((double) d_workspace.extent(0) < (double) nws * sizeof(Workspace)) {
     d_workspace = Kokkos::View<char *, DeviceType>();
     d_workspace = Kokkos::View<char *, DeviceType>(
         Kokkos::view_alloc(Kokkos::WithoutInitializing, "polyhedron/kk:workspace"),
-        (size_t) want * sizeof(Workspace));
+        (size_t) nws * sizeof(Workspace));
   }
   nslots = (int) (d_workspace.extent(0) / sizeof(Workspace));
+  if constexpr (!Functor::per_thread) batch = nslots;
 
-  PolyContactFunctor<DeviceType, MF> fn;
+  Functor fn;
+  fn.token = token;
   fn.bind_bodies(atomKK, avecKK);
   fn.neighbors = static_cast<NeighListKokkos<DeviceType> *>(list)->d_neighbors;
   fn.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();
@@ -349,23 +373,24 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   if (vflag_atom) fn.vatom = k_vatom.template view<DeviceType>();
   fn.nlocal = atom->nlocal;
   fn.newton_pair = force->newton_pair;
+  fn.atomic = polydem_kk::needs_atomics<ExecSpace>() ? 1 : 0;
   fn.shearupdate = update->setupflag ? 0 : 1;
   fn.tally = {atom->nlocal, force->newton_pair, eflag_global, eflag_atom, vflag_global,
               vflag_atom};
   fn.dt = update->dt;
   fn.store_contacts = store_contacts;
-  // records: one per slot, copied out after each batch (memory by slots,
-  // not by pairs: 152 B per slot beside its workspace)
+  // records: one per pair of a batch, copied out after each batch (memory
+  // by batch, not by pairs: 152 B per pair of a batch)
   if (store_contacts) {
-    if ((int) d_records.extent(0) < nslots)
+    if ((int) d_records.extent(0) < batch)
       d_records = Kokkos::View<double *[polydem::CR_NFIELD], Kokkos::LayoutRight, DeviceType>(
-          "polyhedron/kk:records", nslots);
+          "polyhedron/kk:records", batch);
     fn.records = d_records;
   }
 
   PolyReduce total;
-  for (int first = 0; first < npairs; first += nslots) {
-    const int last = std::min(npairs, first + nslots);
+  for (int first = 0; first < npairs; first += batch) {
+    const int last = std::min(npairs, first + batch);
     fn.first = first;
     if (store_contacts) Kokkos::deep_copy(d_records, 0.0);
     PolyReduce red;

@@ -51,8 +51,9 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   // device memory for the overlap workspaces of one batch [bytes]
   static constexpr double WORKSPACE_BUDGET_DEVICE = 512.0 * 1024 * 1024;
   static constexpr double WORKSPACE_BUDGET_HOST = 64.0 * 1024 * 1024;
-  // on CPU back ends: workspaces per thread in one batch
-  static constexpr int SLOTS_PER_CPU_THREAD = 16;
+  // on CPU back ends: one workspace per thread, all pairs in one kernel
+  // (batches of this many pairs where a compute asks for contact records)
+  static constexpr int RECORD_BATCH_CPU = 4096;
 
   // the MaxFaces instantiations of OverlapWorkspace the style dispatches on
   static int workspace_max_faces(int nfaces);
@@ -78,7 +79,8 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   int npairs;
   Kokkos::View<int *, DeviceType> d_npartner;    // candidates per local atom
 
-  // overlap workspaces of one batch (raw bytes, nslots * sizeof(workspace))
+  // overlap workspaces (raw bytes, nslots * sizeof(workspace)): one per pair
+  // of a batch on GPUs, one per thread on CPU back ends
   Kokkos::View<char *, DeviceType> d_workspace;
   int nslots;
 
