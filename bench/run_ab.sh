@@ -49,9 +49,17 @@ dense() {    # lmp which name [args]: the dense dodecahedra, N = 1e4
   res[${name}_$which]+="$(us "log.$name") "
 }
 
+floor() {    # lmp which name [args]: 225 dodecahedra on the 10k floor
+  local name=$1
+  shift
+  "$lmp" "$@" -in "$here/wall_mesh/in.floor" -var mesh floor10k.stl -var merge 1e-9 \
+    -var cache 128 -var lift 0.0095 -var pot "$here/../potentials" -log "log.$name" -screen none
+  res[${name}_$which]+="$(us "log.$name") "
+}
+
 cases="dense densekk floor"
 [ "$suite" = walls ] && cases="floor10k bowl10k bowl150k"
-[ "$suite" = kk ] && cases="dense densekk densekkon"
+[ "$suite" = kk ] && cases="dense densekk densekkon floor floorkk"
 for r in $(seq "$rounds"); do
   for which in A B; do
     lmp=${!which}
@@ -61,13 +69,9 @@ for r in $(seq "$rounds"); do
     fi
     dense dense
     dense densekk -k on -sf kk -pk kokkos newton off
-    if [ "$suite" = kk ]; then
-      dense densekkon -k on -sf kk -pk kokkos newton on
-      continue
-    fi
-    "$lmp" -in "$here/wall_mesh/in.floor" -var mesh floor10k.stl -var merge 1e-9 -var cache 128 \
-      -var lift 0.0095 -var pot "$here/../potentials" -log log.floor -screen none
-    res[floor_$which]+="$(us log.floor) "
+    if [ "$suite" = kk ]; then dense densekkon -k on -sf kk -pk kokkos newton on; fi
+    floor floor
+    if [ "$suite" = kk ]; then floor floorkk -k on -sf kk; fi
   done
 done
 median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
@@ -79,8 +83,8 @@ for case in $cases; do
 done
 if [ "$suite" = kk ]; then
   for which in A B; do
-    p=$(echo "${res[dense_$which]}" | median)
-    for case in densekk densekkon; do
+    for case in densekk densekkon floorkk; do
+      p=$(echo "${res[${case%%kk*}_$which]}" | median)
       k=$(echo "${res[${case}_$which]}" | median)
       printf "%s: %-9s / plain = %.3f (medians)\n" "$which" "$case" "$(echo "$k / $p" | bc -l)"
     done

@@ -37,7 +37,10 @@ template <class V, class S> void upload(V &d, const std::vector<S> &h, const cha
 
 /* ----------------------------------------------------------------------
    one particle per thread, as FixWallMesh::compute_forces: gather, the
-   pipeline's wall_body_contact, scatter; sums reduced over threads
+   pipeline's wall_body_contact, scatter; sums reduced over threads. The
+   workspace: on GPUs that of the particle's slot in the batch; on CPU
+   back ends that of the thread (Kokkos's UniqueToken), all particles in
+   one kernel, so that it stays in the thread's cache
 ------------------------------------------------------------------------- */
 
 // pertriangle: shares of the patch forces go to their triangles (atomics:
@@ -56,6 +59,12 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
   typedef DeviceType device_type;
   typedef ArrayTypes<DeviceType> AT;
   typedef WallTally value_type;
+  typedef typename DeviceType::execution_space ExecSpace;
+  static constexpr bool per_thread =
+      Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
+  typedef typename std::conditional<per_thread, Kokkos::Experimental::UniqueToken<ExecSpace>,
+                                    int>::type Token;
+  Token token;    // per_thread: the workspace's index
 
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> hist;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
@@ -81,7 +90,12 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     const int ps = this->pshape(i);
     const auto b = polydem::gather_wall_body(
         *this, i, &shapes(ps), polydem::make_vec3(axes(ps, 0), axes(ps, 1), axes(ps, 2)));
-    auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + slot * sizeof(WallWorkspace));
+    int w;
+    if constexpr (per_thread)
+      w = token.acquire();
+    else
+      w = slot;
+    auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + w * sizeof(WallWorkspace));
     ws.record = pertri;
     polydem::WallNear<double> nl;
     polydem::WallNear<double> *pn = nullptr;
@@ -107,6 +121,7 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     };
     const auto r = polydem::wall_particle_contact(b, laws, sc, dt, update != 0, &hist(i, 0), ws,
                                                   P, pn, tally);
+    if constexpr (per_thread) token.release(w);
     const auto &f = this->f, &torque = this->torque;
     f(i, 0) += r.wf.f.x;
     f(i, 1) += r.wf.f.y;
@@ -193,8 +208,15 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   const int nlocal = atom->nlocal;
   const bool device = !std::is_same<DeviceType, LMPHostType>::value ||
       !std::is_same<LMPDeviceType, LMPHostType>::value;
-  const double budget = device ? WORKSPACE_BUDGET_DEVICE : WORKSPACE_BUDGET_HOST;
-  const int want = std::max(1, std::min(nlocal, (int) (budget / sizeof(WallWorkspace))));
+  typedef WallMeshKernel<DeviceType> Kernel;
+  typename Kernel::Token token{};
+  int want;
+  if constexpr (Kernel::per_thread) {
+    want = token.size();    // one workspace per thread
+  } else {
+    const double budget = device ? WORKSPACE_BUDGET_DEVICE : WORKSPACE_BUDGET_HOST;
+    want = std::max(1, std::min(nlocal, (int) (budget / sizeof(WallWorkspace))));
+  }
   if (want > nslots) {
     nslots = want;
     d_workspace = Kokkos::View<char *, DeviceType>(
@@ -218,7 +240,8 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
     Kokkos::deep_copy(d_near_count, polydem::NEAR_REBUILD);
   }
 
-  WallMeshKernel<DeviceType> k;
+  Kernel k;
+  k.token = token;
   k.pertri = pertri;
   if (pertri) {
     if ((int) d_trif.extent(0) != geom.ntri())
@@ -252,11 +275,14 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.update = stepping ? 1 : 0;
   k.groupbit = groupbit;
 
+  int batch = nslots;
+  if constexpr (Kernel::per_thread) batch = std::max(1, nlocal);
   WallTally total;
-  for (int i0 = 0; i0 < nlocal; i0 += nslots) {
+  for (int i0 = 0; i0 < nlocal; i0 += batch) {
     k.ibase = i0;
     WallTally sum;
-    Kokkos::parallel_reduce(std::min(nslots, nlocal - i0), k, sum);
+    Kokkos::parallel_reduce(Kokkos::RangePolicy<typename Kernel::ExecSpace>(0, std::min(batch, nlocal - i0)), k,
+                            sum);
     total += sum;
   }
   atomKK->modified(execution_space, datamask_modify);
