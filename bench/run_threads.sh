@@ -5,7 +5,7 @@
 # 9,840-triangle silo, 6,000 steps untimed + 1,000 timed), each as
 #   kk1   lmp -k on t 1 -sf kk        kk2   lmp -k on t 2 -sf kk
 #   mpi1  mpirun -np 1 lmp (plain)    mpi2  mpirun -np 2 lmp (plain)
-# (the /kk runs with -pk kokkos newton off). The four are run in turn, round
+# (the /kk runs with -pk kokkos newton on, the Kokkos default on CPUs). The four are run in turn, round
 # after round, so that the machine's drift (+-25 %) hits them alike. Prints the
 # wall-clock loop time of the timed run of each, per particle-step, and the
 # speed-ups t1/t2 of the medians.
@@ -28,8 +28,8 @@ us() {    # log -> wall microseconds per particle-step of the last run
 run() {    # case config
   local c=$1 k=$2 args=() launch=()
   case $k in
-    kk1) args=(-k on t 1 -sf kk -pk kokkos newton off) ;;
-    kk2) args=(-k on t 2 -sf kk -pk kokkos newton off) ;;
+    kk1) args=(-k on t 1 -sf kk -pk kokkos newton on) ;;
+    kk2) args=(-k on t 2 -sf kk -pk kokkos newton on) ;;
     mpi1) launch=("${mpi[@]}" -np 1) ;;
     mpi2) launch=("${mpi[@]}" -np 2) ;;
   esac
