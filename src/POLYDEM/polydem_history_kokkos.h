@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace polydem_kk {
@@ -102,6 +103,19 @@ template <class DeviceType> struct PartnerViews {
   typename ArrayTypes<DeviceType>::tdual_int_1d *npartner;
   typename ArrayTypes<DeviceType>::tdual_tagint_2d *partner;
   typename ArrayTypes<DeviceType>::tdual_float_2d *valuepartner;
+  // the three DualViews' sync / modify on Space
+  template <class Space> void sync() const
+  {
+    npartner->template sync<Space>();
+    partner->template sync<Space>();
+    valuepartner->template sync<Space>();
+  }
+  template <class Space> void modify() const
+  {
+    npartner->template modify<Space>();
+    partner->template modify<Space>();
+    valuepartner->template modify<Space>();
+  }
 };
 template <class DeviceType>
 PartnerViews<DeviceType> partner_views(FixNeighHistoryKokkos<DeviceType> *fix);
@@ -147,17 +161,11 @@ class FixNeighHistoryPolyhedronKokkos :
       return;
     }
     FixNeighHistoryKokkos<DeviceType>::pre_exchange();
-    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
-    v.npartner->template modify<DeviceType>();
-    v.partner->template modify<DeviceType>();
-    v.valuepartner->template modify<DeviceType>();
+    partner_views<DeviceType>(this).template modify<DeviceType>();
   }
   void post_neighbor() override
   {
-    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
-    v.npartner->template sync<DeviceType>();
-    v.partner->template sync<DeviceType>();
-    v.valuepartner->template sync<DeviceType>();
+    partner_views<DeviceType>(this).template sync<DeviceType>();
     if (reach > 0.0) {
       auto *list = static_cast<NeighListKokkos<DeviceType> *>(this->pair->list);
       AtomKokkos *akk = (AtomKokkos *) this->atom;
@@ -190,9 +198,7 @@ class FixNeighHistoryPolyhedronKokkos :
     akk->sync(Host, TAG_MASK);
     this->k_firstflag.template sync<LMPHostType>();
     this->k_firstvalue.template sync<LMPHostType>();
-    v.npartner->template sync<LMPHostType>();
-    v.partner->template sync<LMPHostType>();
-    v.valuepartner->template sync<LMPHostType>();
+    v.template sync<LMPHostType>();
     auto *list = static_cast<NeighListKokkos<DeviceType> *>(this->pair->list);
     const int inum = list->inum;
     const auto ilist = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), list->d_ilist);
@@ -255,12 +261,8 @@ class FixNeighHistoryPolyhedronKokkos :
     polydem_compat::reverse_comm_fix_variable(this->comm, this);
     rcomm = RCOMM_NONE;
 
-    v.npartner->template modify<LMPHostType>();
-    v.partner->template modify<LMPHostType>();
-    v.valuepartner->template modify<LMPHostType>();
-    v.npartner->template sync<DeviceType>();
-    v.partner->template sync<DeviceType>();
-    v.valuepartner->template sync<DeviceType>();
+    v.template modify<LMPHostType>();
+    v.template sync<DeviceType>();
     this->maxexchange = (dnum + 1) * this->maxpartner + 1;
   }
 
@@ -272,12 +274,17 @@ class FixNeighHistoryPolyhedronKokkos :
     for (int i = first; i < first + n; i++) m += 1 + (this->dnum + 1) * np(i);
     return m;
   }
-  int pack_reverse_comm(int n, int first, double *buf) override
+  // the host views of the rows: counts, partner tags, values
+  auto host_rows()
   {
     const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
-    const auto np = v.npartner->template view<LMPHostType>();
-    const auto partner = v.partner->template view<LMPHostType>();
-    const auto vp = v.valuepartner->template view<LMPHostType>();
+    return std::make_tuple(v.npartner->template view<LMPHostType>(),
+                           v.partner->template view<LMPHostType>(),
+                           v.valuepartner->template view<LMPHostType>());
+  }
+  int pack_reverse_comm(int n, int first, double *buf) override
+  {
+    const auto [np, partner, vp] = host_rows();
     const int dnum = this->dnum;
     int m = 0;
     for (int i = first; i < first + n; i++) {
@@ -292,10 +299,7 @@ class FixNeighHistoryPolyhedronKokkos :
   }
   void unpack_reverse_comm(int n, int *list, double *buf) override
   {
-    const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
-    const auto np = v.npartner->template view<LMPHostType>();
-    const auto partner = v.partner->template view<LMPHostType>();
-    const auto vp = v.valuepartner->template view<LMPHostType>();
+    const auto [np, partner, vp] = host_rows();
     const int dnum = this->dnum;
     int m = 0;
     for (int i = 0; i < n; i++) {
@@ -329,12 +333,8 @@ class FixNeighHistoryPolyhedronKokkos :
   {
     if (this->npartner) {
       const PartnerViews<DeviceType> v = partner_views<DeviceType>(this);
-      v.npartner->template sync<LMPHostType>();
-      v.partner->template sync<LMPHostType>();
-      v.valuepartner->template sync<LMPHostType>();
-      v.npartner->template modify<LMPHostType>();
-      v.partner->template modify<LMPHostType>();
-      v.valuepartner->template modify<LMPHostType>();
+      v.template sync<LMPHostType>();
+      v.template modify<LMPHostType>();
     }
     FixNeighHistoryKokkos<DeviceType>::grow_arrays(nmax);
   }
