@@ -14,6 +14,7 @@
 #include "polydem_kokkos_masks.h"
 #include "polydem_law_table_kokkos.h"
 #include "polydem_shape_template.h"
+#include "polydem_tally_kokkos.h"
 #include "update.h"
 
 #include <algorithm>
@@ -60,11 +61,8 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
   typedef ArrayTypes<DeviceType> AT;
   typedef WallTally value_type;
   typedef typename DeviceType::execution_space ExecSpace;
-  static constexpr bool per_thread =
-      Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
-  typedef typename std::conditional<per_thread, Kokkos::Experimental::UniqueToken<ExecSpace>,
-                                    int>::type Token;
-  Token token;    // per_thread: the workspace's index
+  typedef polydem_kk::WorkspaceSlot<ExecSpace> Slot;
+  Slot slots;    // the workspace of a particle
 
   Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> hist;
   Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
@@ -90,11 +88,7 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     const int ps = this->pshape(i);
     const auto b = polydem::gather_wall_body(
         *this, i, &shapes(ps), polydem::make_vec3(axes(ps, 0), axes(ps, 1), axes(ps, 2)));
-    int w;
-    if constexpr (per_thread)
-      w = token.acquire();
-    else
-      w = slot;
+    const int w = slots.acquire(slot);
     auto &ws = *reinterpret_cast<WallWorkspace *>(workspace.data() + w * sizeof(WallWorkspace));
     ws.record = pertri;
     polydem::WallNear<double> nl;
@@ -121,7 +115,7 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     };
     const auto r = polydem::wall_particle_contact(b, laws, sc, dt, update != 0, &hist(i, 0), ws,
                                                   P, pn, tally);
-    if constexpr (per_thread) token.release(w);
+    slots.release(w);
     const auto &f = this->f, &torque = this->torque;
     f(i, 0) += r.wf.f.x;
     f(i, 1) += r.wf.f.y;
@@ -206,17 +200,10 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k_hist.template sync<DeviceType>();
 
   const int nlocal = atom->nlocal;
-  const bool device = !std::is_same<DeviceType, LMPHostType>::value ||
-      !std::is_same<LMPDeviceType, LMPHostType>::value;
   typedef WallMeshKernel<DeviceType> Kernel;
-  typename Kernel::Token token{};
-  int want;
-  if constexpr (Kernel::per_thread) {
-    want = token.size();    // one workspace per thread
-  } else {
-    const double budget = device ? WORKSPACE_BUDGET_DEVICE : WORKSPACE_BUDGET_HOST;
-    want = std::max(1, std::min(nlocal, (int) (budget / sizeof(WallWorkspace))));
-  }
+  typename Kernel::Slot slots;
+  const int want = slots.count(
+      std::max(1, std::min(nlocal, (int) (WORKSPACE_BUDGET_DEVICE / sizeof(WallWorkspace)))));
   if (want > nslots) {
     nslots = want;
     d_workspace = Kokkos::View<char *, DeviceType>(
@@ -241,7 +228,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   }
 
   Kernel k;
-  k.token = token;
+  k.slots = slots;
   k.pertri = pertri;
   if (pertri) {
     if ((int) d_trif.extent(0) != geom.ntri())
@@ -276,7 +263,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.groupbit = groupbit;
 
   int batch = nslots;
-  if constexpr (Kernel::per_thread) batch = std::max(1, nlocal);
+  if constexpr (Kernel::Slot::per_thread) batch = std::max(1, nlocal);
   WallTally total;
   for (int i0 = 0; i0 < nlocal; i0 += batch) {
     k.ibase = i0;

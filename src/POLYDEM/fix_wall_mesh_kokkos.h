@@ -45,9 +45,8 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   int pack_restart(int, double *) override;
   void unpack_restart(int, int) override;
 
-  // memory for the clipping workspaces of one batch of particles [bytes]
+  // memory for the clipping workspaces of one batch of particles on GPUs [bytes]
   static constexpr double WORKSPACE_BUDGET_DEVICE = 256.0 * 1024 * 1024;
-  static constexpr double WORKSPACE_BUDGET_HOST = 32.0 * 1024 * 1024;
 
  protected:
   class AtomVecPolyhedronKokkos *avecKK;

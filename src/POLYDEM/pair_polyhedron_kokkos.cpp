@@ -131,14 +131,10 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
   typedef ArrayTypes<DeviceType> AT;
   typedef PolyReduce value_type;
   typedef polydem::OverlapWorkspace<double, MF> Workspace;
-  typedef typename DeviceType::execution_space ExecSpace;
-  static constexpr bool per_thread =
-      Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
-  typedef typename std::conditional<per_thread, Kokkos::Experimental::UniqueToken<ExecSpace>,
-                                    int>::type Token;
+  typedef polydem_kk::WorkspaceSlot<typename DeviceType::execution_space> Slot;
 
   typename AT::t_neighbors_2d neighbors;
-  Token token;    // per_thread: the workspace's index
+  Slot slots;    // the workspace of a pair
   typename AT::t_int_2d firsttouch;
   typename AT::t_float_2d firstshear;
   Kokkos::View<int *[2], DeviceType> pairs;
@@ -160,11 +156,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
   {
     const int i = pairs(p, 0), jj = pairs(p, 1);
     const int j = neighbors(i, jj) & NEIGHMASK;
-    int slot;
-    if constexpr (per_thread)
-      slot = token.acquire();
-    else
-      slot = p - first;
+    const int slot = slots.acquire(p - first);
     Workspace &ws = reinterpret_cast<Workspace *>(workspace.data())[slot];
     const polydem::ShapeView<double> vi = shapes(this->pshape(i)), vj = shapes(this->pshape(j));
     const auto A = polydem::gather_polyhedron_body(*this, i, vi);
@@ -174,7 +166,7 @@ template <class DeviceType, int MF> struct PolyContactFunctor : PolyBodyViews<De
     const auto c = polydem::polyhedron_pair_contact(A, B, laws, dt, shearupdate != 0,
                                                     &firstshear(i, polydem::pair_history_stride(laws) * jj), ws, red.cnt,
                                                     firsttouch(i, jj) != 0);
-    if constexpr (per_thread) token.release(slot);
+    slots.release(slot);
     firsttouch(i, jj) = c.contact;
     if (!c.contact) return;
     polydem_kk::scatter_contact(this->f, this->torque, i, j, newton_pair || j < nlocal, c.cf,
@@ -341,15 +333,13 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
   // CPU back ends: one workspace per thread (the functor's UniqueToken), all
   // pairs in one kernel; GPUs: one workspace per pair of a batch, as many
   // as the budget allows
-  typename Functor::Token token{};
-  int nws, batch;
-  if constexpr (Functor::per_thread) {
-    nws = token.size();
+  typename Functor::Slot slots;
+  int batch;
+  if constexpr (Functor::Slot::per_thread)
     batch = store_contacts ? std::min(npairs, (int) RECORD_BATCH_CPU) : npairs;
-  } else {
-    nws = std::min(npairs, std::max(1, (int) (WORKSPACE_BUDGET_DEVICE / sizeof(Workspace))));
-    batch = nws;
-  }
+  else
+    batch = std::min(npairs, std::max(1, (int) (WORKSPACE_BUDGET_DEVICE / sizeof(Workspace))));
+  const int nws = slots.count(batch);
   if ((double) d_workspace.extent(0) < (double) nws * sizeof(Workspace)) {
     d_workspace = Kokkos::View<char *, DeviceType>();
     d_workspace = Kokkos::View<char *, DeviceType>(
@@ -357,10 +347,10 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
         (size_t) nws * sizeof(Workspace));
   }
   nslots = (int) (d_workspace.extent(0) / sizeof(Workspace));
-  if constexpr (!Functor::per_thread) batch = nslots;
+  if constexpr (!Functor::Slot::per_thread) batch = nslots;
 
   Functor fn;
-  fn.token = token;
+  fn.slots = slots;
   fn.bind_bodies(atomKK, avecKK);
   fn.neighbors = static_cast<NeighListKokkos<DeviceType> *>(list)->d_neighbors;
   fn.firsttouch = fix_historyKK->k_firstflag.template view<DeviceType>();

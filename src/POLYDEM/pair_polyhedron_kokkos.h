@@ -48,9 +48,8 @@ template <class DeviceType> class PairPolyhedronKokkos : public PairPolyhedron {
   }
   double memory_usage() override;
 
-  // device memory for the overlap workspaces of one batch [bytes]
+  // device memory for the overlap workspaces of one batch on GPUs [bytes]
   static constexpr double WORKSPACE_BUDGET_DEVICE = 512.0 * 1024 * 1024;
-  static constexpr double WORKSPACE_BUDGET_HOST = 64.0 * 1024 * 1024;
   // on CPU back ends: one workspace per thread, all pairs in one kernel
   // (batches of this many pairs where a compute asks for contact records)
   static constexpr int RECORD_BATCH_CPU = 4096;

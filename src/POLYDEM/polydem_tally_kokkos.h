@@ -12,6 +12,8 @@
 
 #include <Kokkos_Core.hpp>
 
+#include <type_traits>
+
 namespace polydem_kk {
 
 // energy, virial and NCNT counters of one kernel, summed over threads
@@ -99,6 +101,37 @@ template <class ExecSpace> inline bool needs_atomics()
   return !(Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible &&
            ExecSpace::concurrency() == 1);
 }
+
+// Which preallocated workspace a kernel's work item uses. CPU back ends (the
+// execution space reaches host memory): the thread's (Kokkos's UniqueToken),
+// so that all items run in one kernel with a workspace that stays in the
+// thread's cache; GPUs: the item's slot in its batch. count() is the number
+// of workspaces to allocate (the batch size on GPUs).
+template <class ExecSpace> struct WorkspaceSlot {
+  static constexpr bool per_thread =
+      Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
+  typename std::conditional<per_thread, Kokkos::Experimental::UniqueToken<ExecSpace>, int>::type
+      token{};
+  int count(int batch) const
+  {
+    if constexpr (per_thread)
+      return token.size();
+    else
+      return batch;
+  }
+  KOKKOS_INLINE_FUNCTION int acquire(int slot_in_batch) const
+  {
+    if constexpr (per_thread)
+      return token.acquire();
+    else
+      return slot_in_batch;
+  }
+  KOKKOS_INLINE_FUNCTION void release(int w) const
+  {
+    if constexpr (per_thread) token.release(w);
+    (void) w;
+  }
+};
 
 // forces and torques of one contact to i and, if to_j, to j; with atomics
 // unless the caller runs alone (needs_atomics)
