@@ -48,7 +48,7 @@ PairPolydem::PairPolydem(LAMMPS *lmp, const char *style, const char *tag, int nh
     bridge_eta(nullptr), bridge_smin(nullptr),
     roll_kr(polydem::RollingLaw<double>().kr),
     roll_eta(polydem::RollingLaw<double>().eta), avec(nullptr), fix_dummy(nullptr),
-    fix_history(nullptr), history_id(0)
+    fix_history(nullptr), history_id(0), kk_binsize(0.0)
 {
   if (ncount > MAXCOUNT) error->all(FLERR, "pair_style {}: too many counters", style_name);
   single_enable = 0;
@@ -73,6 +73,11 @@ PairPolydem::~PairPolydem()
   destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta, bridge_eta,
                  bridge_smin);
   modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
+  // the bin size a /kk style chose goes with it (kk_init_list); at the end
+  // of LAMMPS the neighbor class is gone first
+  if (kk_binsize > 0.0 && neighbor && neighbor->binsizeflag &&
+      neighbor->binsize_user == kk_binsize)
+    neighbor->binsizeflag = 0;
 }
 
 /* ----------------------------------------------------------------------

@@ -187,6 +187,7 @@ class PairPolydem : public Pair {
   // to 1.2 x the most neighbors an atom has), so that it and the history
   // arrays sized by its width follow the packing, not LAMMPS's 16
   template <class DeviceType> void kk_init_list(class NeighList *);
+  double kk_binsize;    // the bin size kk_init_after chose (0: none)
 };
 
 }    // namespace LAMMPS_NS

@@ -14,6 +14,7 @@
 #include "kokkos_type.h"
 #include "memory_kokkos.h"
 #include "neigh_list_kokkos.h"
+#include "neighbor.h"
 #include "pair_polydem.h"
 #include "polydem_history_kokkos.h"
 #include "polydem_kokkos_masks.h"
@@ -119,6 +120,20 @@ template <class DeviceType> void PairPolydem::kk_init_after()
       std::is_same<DeviceType, LMPHostType>::value &&
           !std::is_same<DeviceType, LMPDeviceType>::value,
       std::is_same<DeviceType, LMPDeviceType>::value);
+  // Bins as wide as the neighbor cutoff (LAMMPS's own choice for Kokkos on
+  // GPUs, NeighborKokkos::set_binsize_kokkos) on every back end, unless the
+  // user chose a size (neigh_modify binsize, package kokkos binsize).
+  // NBinKokkos keeps at least 16 slots per bin; half-cutoff bins hold about
+  // one grain each, which costs 0.4 kB per particle of dense dodecahedra at
+  // the same speed (bench/RESULTS.md). The size follows the cutoff (every
+  // type pair's is size_cutoff()) at every init, a hair wider, so that the
+  // stencil stays one bin wide: LAMMPS's Kokkos neighbor build does not
+  // survive a stencil that grows between runs with unchanged requests.
+  if (!neighbor->binsizeflag || (kk_binsize > 0.0 && neighbor->binsize_user == kk_binsize)) {
+    kk_binsize = (size_cutoff() + neighbor->skin) * (1.0 + 1e-10);
+    neighbor->binsize_user = kk_binsize;
+    neighbor->binsizeflag = kk_binsize > 0.0 ? 1 : 0;
+  }
 }
 
 /* ----------------------------------------------------------------------

@@ -482,6 +482,48 @@ TEST(PairKokkos, NeighborListAndHistoryWidthFollowThePacking)
   // and the run continues to match plain (DensePackingMatchesPlain)
 }
 
+// Kokkos bins span the neighbor cutoff (LAMMPS's own choice on GPUs) unless
+// the user chose a bin size; the choice follows a changed skin (and the run
+// goes on) and goes with the /kk pair style
+TEST(PairKokkos, BinsSpanTheNeighborCutoff)
+{
+  const std::vector<std::string> scene = {
+      "units lj", "atom_style polyhedron", "atom_modify map array", "comm_modify vel yes",
+      "newton off", "boundary p p p", "lattice sc 1.0", "region box block 0 6 0 6 0 6",
+      "create_box 1 box", "polyhedron_shape dode " + polydem_test::potentials() +
+          "/dodecahedron.shape",
+      "create_atoms 1 box", "polyhedron_set type 1 shape dode scale 0.4 density 1.0",
+      "pair_style polyhedron", "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.02 bin",
+      "fix 1 all nve/polyhedron", "timestep 1.0e-4"};
+  Lmp kk(KK);
+  kk.cmds(scene);
+  kk.cmd("run 0");
+  LAMMPS_NS::Neighbor *nb = kk.lmp->neighbor;
+  const double cut1 = nb->cutneighmax;
+  ASSERT_GT(cut1, 0.0);
+  EXPECT_EQ(nb->binsizeflag, 1);
+  EXPECT_GE(nb->binsize_user, cut1);
+  EXPECT_NEAR(nb->binsize_user, cut1, 1e-9 * cut1);
+  // a larger skin: the bins follow on the next run (with bins left at the
+  // old cutoff, LAMMPS's Kokkos build would overrun its grown stencil)
+  kk.cmd("neighbor 0.1 bin");
+  kk.cmd("run 0");
+  EXPECT_NEAR(nb->cutneighmax - cut1, 0.08, 1e-12);
+  EXPECT_GE(nb->binsize_user, nb->cutneighmax);
+  EXPECT_NEAR(nb->binsize_user, nb->cutneighmax, 1e-9 * cut1);
+  // a /kk style's choice goes with it
+  kk.cmd("pair_style none");
+  EXPECT_EQ(nb->binsizeflag, 0);
+  // the user's bin size is kept (set before the first run: LAMMPS's Kokkos
+  // neighbor build does not survive a stencil grown between runs)
+  Lmp kk2(KK);
+  kk2.cmds(scene);
+  kk2.cmd("neigh_modify binsize 0.3");
+  kk2.cmd("run 0");
+  EXPECT_DOUBLE_EQ(kk2.lmp->neighbor->binsize_user, 0.3);
+  EXPECT_EQ(kk2.lmp->neighbor->binsizeflag, 1);
+}
+
 // per-atom energy and virial (eflag_atom, vflag_atom paths): sums and maxima
 TEST(PairKokkos, PerAtomEnergyAndVirialMatchPlain)
 {
