@@ -346,8 +346,9 @@ BENCHMARK_CAPTURE(gjk_overlap_ws22, cylinder42, pairs<cylinder, true>());
 BENCHMARK_CAPTURE(overlap_ws22, cylinder42_tetra_start, pairs<cylinder, false>());
 
 // Fixed work for instruction counts (repeatable where wall time is not):
-//   valgrind --tool=callgrind --toggle-collect='*fixed_loop*' bench_kernels --fixed 4
-// runs GJK, then the overlap, over each pair set `reps` times; instructions
+//   valgrind --tool=callgrind --toggle-collect='*fixed_loop*' bench_kernels --fixed 4 [SHAPE]
+// runs GJK, then the overlap, over each pair set (or SHAPE: dodecahedron or
+// cylinder42 alone) `reps` times; instructions
 // per call = the inclusive count of gjk_intersect / polyhedron_overlap
 // divided by 512 x reps.
 __attribute__((noinline)) double fixed_loop(PairSet &ps, int reps)
@@ -363,10 +364,13 @@ __attribute__((noinline)) double fixed_loop(PairSet &ps, int reps)
 
 int main(int argc, char **argv)
 {
-  if (argc == 3 && std::string(argv[1]) == "--fixed") {
+  if ((argc == 3 || argc == 4) && std::string(argv[1]) == "--fixed") {
     const int reps = std::atoi(argv[2]);
-    PairSet &d = pairs<dodecahedron, true>(), &c = pairs<cylinder, true>();
-    std::printf("dodecahedron %.17g\ncylinder42 %.17g\n", fixed_loop(d, reps), fixed_loop(c, reps));
+    const std::string only = argc == 4 ? argv[3] : "";
+    if (only != "cylinder42")
+      std::printf("dodecahedron %.17g\n", fixed_loop(pairs<dodecahedron, true>(), reps));
+    if (only != "dodecahedron")
+      std::printf("cylinder42 %.17g\n", fixed_loop(pairs<cylinder, true>(), reps));
     return 0;
   }
   benchmark::Initialize(&argc, argv);
