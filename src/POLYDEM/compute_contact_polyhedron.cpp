@@ -47,11 +47,11 @@ void ComputeContactPolyhedron::init()
 void ComputeContactPolyhedron::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  int n;
-  const double *rec = pair->contact_records(n, "contact/polyhedron");
+  int n, stride;
+  const double *rec = pair->contact_records(n, stride, false, "contact/polyhedron");
   double sum[2] = {0.0, 0.0}, all[2], fmax = 0.0, allmax;    // count, sum of V/V_min
   for (int c = 0; c < n; c++) {
-    const double *r = rec + c * CR_NFIELD;
+    const double *r = rec + c * stride;
     if (!contact_in_group(r, groupbit)) continue;
     const double frac = r[CR_VOL] / r[CR_VMIN];
     sum[0] += 1.0;

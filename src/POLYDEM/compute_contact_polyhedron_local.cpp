@@ -73,11 +73,11 @@ void ComputeContactPolyhedronLocal::init()
 void ComputeContactPolyhedronLocal::compute_local()
 {
   invoked_local = update->ntimestep;
-  int n;
-  const double *rec = pair->contact_records(n, "contact/polyhedron/local");
+  int n, stride;
+  const double *rec = pair->contact_records(n, stride, true, "contact/polyhedron/local");
   int rows = 0;
   for (int c = 0; c < n; c++) {
-    const double *r = rec + c * CR_NFIELD;
+    const double *r = rec + c * stride;
     if (contact_in_group(r, groupbit)) rows++;
   }
   if (rows > nmax) {
@@ -92,7 +92,7 @@ void ComputeContactPolyhedronLocal::compute_local()
   size_local_rows = rows;
   int row = 0;
   for (int c = 0; c < n; c++) {
-    const double *r = rec + c * CR_NFIELD;
+    const double *r = rec + c * stride;
     if (!contact_in_group(r, groupbit)) continue;
     for (size_t k = 0; k < field.size(); k++) {
       const double value = field[k] < 0 ? r[CR_VOL] / r[CR_VMIN] : r[field[k]];

@@ -46,7 +46,8 @@ PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
     PairPolydem(lmp, "polyhedron", "NEIGH_HISTORY_POLY", SIZE_HISTORY, NCOUNT), youngs(nullptr),
     poisson(nullptr), matset(nullptr), restitution(nullptr), friction(nullptr),
     ellipsoid_kn(nullptr), twist(1),
-    pairset(nullptr), overlap_warn(0.05), core(1.0e-4), dt(0.0), contact_step(-1)
+    pairset(nullptr), overlap_warn(0.05), core(1.0e-4), dt(0.0),
+    record_stride(polydem::CR_NFIELD), contact_step(-1)
 {
   ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
 }
@@ -434,9 +435,9 @@ void PairPolyhedron::compute(int eflag, int vflag)
                      c.cf.F_A.z, delx, dely, delz);
       if (store && c.contact == 1 &&
           polydem::contact_owned(newton_pair, j < nlocal, tag[i], tag[j], x[i], x[j])) {
-        contact_data.resize(contact_data.size() + polydem::CR_NFIELD);
-        polydem::fill_contact_record(&contact_data[contact_data.size() - polydem::CR_NFIELD],
-                                     tag[i], tag[j], mask[i], mask[j], c.vmin, c.geo, c.cf);
+        double rec[polydem::CR_NFIELD];
+        polydem::fill_contact_record(rec, tag[i], tag[j], mask[i], mask[j], c.vmin, c.geo, c.cf);
+        contact_data.insert(contact_data.end(), rec, rec + record_stride);
       }
     }
   }
@@ -451,26 +452,34 @@ void PairPolyhedron::compute(int eflag, int vflag)
 
 bool PairPolyhedron::store_contacts_now()
 {
-  bool due = false;
+  // whole records wherever a per-contact compute exists (it may also be
+  // invoked on a step only a summary compute was due for, e.g. by the
+  // library after a run); summaries where there is none
+  bool due = false, full = false;
   for (int k = 0; k < modify->ncompute; k++) {
     Compute *c = modify->compute[k];
-    if ((strcmp(c->style, "contact/polyhedron/local") == 0 ||
-         strcmp(c->style, "contact/polyhedron") == 0) &&
-        c->matchstep(update->ntimestep))
+    const bool local = strcmp(c->style, "contact/polyhedron/local") == 0;
+    full = full || local;
+    if ((local || strcmp(c->style, "contact/polyhedron") == 0) && c->matchstep(update->ntimestep))
       due = true;
   }
-  if (due) contact_data.clear();
+  if (due) {
+    contact_data.clear();
+    record_stride = full ? polydem::CR_NFIELD : polydem::CR_NSUMMARY;
+  }
   return due;
 }
 
-const double *PairPolyhedron::contact_records(int &n, const char *who)
+const double *PairPolyhedron::contact_records(int &n, int &stride, bool full, const char *who)
 {
-  if (contact_step != update->ntimestep)
+  if (contact_step != update->ntimestep || (full && record_stride != polydem::CR_NFIELD))
     error->all(FLERR,
-               "compute {}: pair polyhedron stored no contacts on step {} (the compute can be "
+               "compute {}: pair polyhedron stored no {}contacts on step {} (the compute can be "
                "used only on steps known in advance: thermo, dump, fix ave/*, run 0)",
-               who, update->ntimestep);
-  n = (int) (contact_data.size() / polydem::CR_NFIELD);
+               who, contact_step == update->ntimestep ? "whole records of " : "",
+               update->ntimestep);
+  stride = record_stride;
+  n = (int) (contact_data.size() / record_stride);
   return contact_data.data();
 }
 
@@ -546,5 +555,6 @@ void *PairPolyhedron::extract(const char *str, int &dim)
 
 double PairPolyhedron::memory_usage()
 {
-  return Pair::memory_usage() + (double) sizeof(polydem::OverlapWorkspace<double, 128>);
+  return Pair::memory_usage() + (double) sizeof(polydem::OverlapWorkspace<double, 128>) +
+         (double) contact_data.capacity() * sizeof(double);
 }

@@ -50,7 +50,7 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
   // the current step, each contact once over all ranks, for the contact
   // computes. Stored only on the steps such a compute is due (Compute
   // timeflag/matchstep, as for compute pe); errors naming 'who' otherwise.
-  const double *contact_records(int &n, const char *who) override;
+  const double *contact_records(int &n, int &stride, bool full, const char *who) override;
 
  protected:
   double *youngs, *poisson;    // per type
@@ -66,7 +66,8 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
   double dt;
 
   std::unique_ptr<polydem::OverlapWorkspace<double, 128>> ws;
-  std::vector<double> contact_data;    // CR_NFIELD doubles per stored contact
+  std::vector<double> contact_data;    // record_stride doubles per stored contact
+  int record_stride;                   // CR_NFIELD, or CR_NSUMMARY (summaries only)
   std::vector<polydem::ShapeView<double>> views;    // the templates', per compute
   bigint contact_step;                 // step of contact_data, -1: none
 

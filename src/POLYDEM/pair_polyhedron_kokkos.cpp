@@ -404,7 +404,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::gather_record
   Kokkos::deep_copy(h, d_records);
   for (int p = 0; p < n; p++)
     if (h(p, polydem::CR_ID1) > 0.0)
-      for (int k = 0; k < polydem::CR_NFIELD; k++) contact_data.push_back(h(p, k));
+      for (int k = 0; k < record_stride; k++) contact_data.push_back(h(p, k));
 }
 
 /* ---------------------------------------------------------------------- */
@@ -458,6 +458,7 @@ template <class DeviceType> double PairPolyhedronKokkos<DeviceType>::memory_usag
   double bytes = Pair::memory_usage();
   bytes += (double) d_workspace.extent(0);
   bytes += (double) d_records.extent(0) * polydem::CR_NFIELD * sizeof(double);
+  bytes += (double) contact_data.capacity() * sizeof(double);
   bytes += (double) (d_count.extent(0) + d_offset.extent(0) + 2 * d_pairs.extent(0)) * sizeof(int);
   bytes += shapes.memory_usage();
   return bytes;

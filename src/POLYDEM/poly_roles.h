@@ -65,8 +65,11 @@ class ParticleSource {
 class ContactRecordSource {
  public:
   // the per-contact records (polydem_contact_record.h) of the current
-  // step's force evaluation; an error naming compute 'who' if there are none
-  virtual const double *contact_records(int &n, const char *who) = 0;
+  // step's force evaluation, n records of stride doubles (CR_NFIELD, or
+  // CR_NSUMMARY where no compute asks for whole records);
+  // an error naming compute 'who' if there are none, or if full and the
+  // step has summaries only
+  virtual const double *contact_records(int &n, int &stride, bool full, const char *who) = 0;
   // the pair style of this LAMMPS if it has the role, else an error naming
   // compute 'who'
   static ContactRecordSource *require(LAMMPS *, const char *who);

@@ -29,6 +29,11 @@ enum ContactRecordField {
   CR_ENERGY,     // W(V)
   CR_NFIELD
 };
+// A summary record is the first CR_NSUMMARY fields (IDs, masks, V, V_min):
+// all compute contact/polyhedron reads. The pair stores summaries (48 B
+// instead of 152 B per contact) where no compute contact/polyhedron/local
+// is defined.
+constexpr int CR_NSUMMARY = CR_VMIN + 1;
 
 // Each contact is stored once over all ranks: with newton off a pair with a
 // ghost j is computed on the ranks of both atoms; keep it where tag i < tag j

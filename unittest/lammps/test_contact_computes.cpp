@@ -6,7 +6,11 @@
 // plain vs /kk to 1e-12. Also run under mpirun -np 2.
 
 #include "polydem_allgather.h"
+#include "polydem_contact_record.h"
 #include "polydem_lmp.h"
+
+#include "force.h"
+#include "pair.h"
 
 #include <gtest/gtest.h>
 
@@ -274,6 +278,37 @@ TEST(ContactComputes, KokkosEqualsPlain)
   EXPECT_GT(ftmax, 0.0) << "friction must be active";
   EXPECT_LE(worst, 1e-12);
   for (int s = 0; s < 4; s++) EXPECT_NEAR(p.stats[s], k.stats[s], 1e-12 * std::fabs(p.stats[s]));
+}
+
+// without a compute contact/polyhedron/local the pair keeps summaries (the
+// first CR_NSUMMARY fields of each record), and compute contact/polyhedron
+// reports exactly what it reports from whole records (plain and /kk)
+TEST(ContactComputes, SummariesGiveTheSameStatistics)
+{
+  std::vector<std::vector<std::string>> variants = {{}};
+  if (polydem_test::has_kokkos()) variants.push_back(KK);
+  for (const auto &extra : variants) {
+    SCOPED_TRACE(extra.empty() ? "plain" : "kk");
+    auto summary_only = dense("off");
+    const auto cl = std::find_if(summary_only.begin(), summary_only.end(), [](const std::string &c) {
+      return c.rfind("compute cl ", 0) == 0;
+    });
+    ASSERT_NE(cl, summary_only.end());
+    summary_only.erase(cl);
+    Lmp whole(extra), summary(extra);
+    whole.cmds(dense("off"));
+    summary.cmds(summary_only);
+    whole.cmd("run 20");
+    summary.cmd("run 20");
+    const auto a = stats(whole, "cs"), b = stats(summary, "cs");
+    ASSERT_GT(a[0], 50.0) << "the packing must be in contact";
+    for (int k = 0; k < 4; k++) EXPECT_EQ(a[k], b[k]) << "statistic " << k + 1;
+    // the records' memory: 6 doubles per contact instead of 19 (a margin for
+    // the vectors' growth and this rank's share of the contacts on 2 ranks)
+    const double saved =
+        whole.lmp->force->pair->memory_usage() - summary.lmp->force->pair->memory_usage();
+    EXPECT_GE(saved, 0.1 * a[0] * (polydem::CR_NFIELD - polydem::CR_NSUMMARY) * sizeof(double));
+  }
 }
 
 // on a step no output asked for, the compute errors instead of reporting stale contacts
