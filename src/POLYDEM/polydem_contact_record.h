@@ -14,12 +14,12 @@ namespace polydem {
 
 // field offsets in one record of CR_NFIELD doubles
 enum ContactRecordField {
-  CR_ID1,        // atom ID of i (the atom whose force is F)
-  CR_ID2,        // atom ID of j
   CR_MASK1,      // group masks of i and j (for the compute's group)
   CR_MASK2,
   CR_VOL,        // overlap volume V
   CR_VMIN,       // smaller particle volume (V/VMIN: overlap fraction)
+  CR_ID1,        // atom ID of i (the atom whose force is F)
+  CR_ID2,        // atom ID of j
   CR_AREA,       // contact area A_n = |S_A|
   CR_F,          // 3: force on i from j (elastic + damping + friction)
   CR_N = CR_F + 3,    // 3: unit normal from i towards j
@@ -29,10 +29,10 @@ enum ContactRecordField {
   CR_ENERGY,     // W(V)
   CR_NFIELD
 };
-// A summary record is the first CR_NSUMMARY fields (IDs, masks, V, V_min):
-// all compute contact/polyhedron reads. The pair stores summaries (48 B
-// instead of 152 B per contact) where no compute contact/polyhedron/local
-// is defined.
+// A summary record is the first CR_NSUMMARY fields (masks, V, V_min): all
+// compute contact/polyhedron reads. The pair stores summaries (32 B instead
+// of 152 B per contact) where no compute contact/polyhedron/local is
+// defined.
 constexpr int CR_NSUMMARY = CR_VMIN + 1;
 
 // Each contact is stored once over all ranks: with newton off a pair with a

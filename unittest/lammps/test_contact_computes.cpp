@@ -303,7 +303,7 @@ TEST(ContactComputes, SummariesGiveTheSameStatistics)
     const auto a = stats(whole, "cs"), b = stats(summary, "cs");
     ASSERT_GT(a[0], 50.0) << "the packing must be in contact";
     for (int k = 0; k < 4; k++) EXPECT_EQ(a[k], b[k]) << "statistic " << k + 1;
-    // the records' memory: 6 doubles per contact instead of 19 (a margin for
+    // the records' memory: 4 doubles per contact instead of 19 (a margin for
     // the vectors' growth and this rank's share of the contacts on 2 ranks)
     const double saved =
         whole.lmp->force->pair->memory_usage() - summary.lmp->force->pair->memory_usage();
