@@ -73,7 +73,7 @@ PairPolydem::~PairPolydem()
   destroy_arrays(rolling, cohesion, bridge_vol, bridge_gamma, bridge_theta, bridge_eta,
                  bridge_smin);
   modify->delete_fix(fix_history ? history_fix_id() : dummy_fix_id());
-  // the bin size a /kk style chose goes with it (kk_init_list); at the end
+  // the bin size a /kk style chose goes with it (kk_init_after); at the end
   // of LAMMPS the neighbor class is gone first
   if (kk_binsize > 0.0 && neighbor && neighbor->binsizeflag &&
       neighbor->binsize_user == kk_binsize)
