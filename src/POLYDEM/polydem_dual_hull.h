@@ -181,16 +181,22 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
       w.cviol[l] = v > tol ? v : tol;
       continue;
     }
-    w.conflict[l] = -1;
-    w.cviol[l] = tol;
+    // the furthest vertex beyond plane l (kept in registers: the stores
+    // would be repeated at every new maximum)
+    const T *q = w.pl + 4 * l;
+    const T nx = q[0], ny = q[1], nz = q[2], h = q[3];
+    T best = tol;
+    short bt = -1;
     for (int t = 0; t < w.ntslots; ++t) {
       if (w.tstamp[t] == DUAL_HULL_COPY) continue;
-      const T v = viol(w, l, w.P[t]);
-      if (v > w.cviol[l]) {
-        w.cviol[l] = v;
-        w.conflict[l] = (short) t;
+      const T v = nx * w.P[t].x + ny * w.P[t].y + nz * w.P[t].z - h;
+      if (v > best) {
+        best = v;
+        bt = (short) t;
       }
     }
+    w.conflict[l] = bt;
+    w.cviol[l] = best;
   }
   // expansion (seed Algorithm V); each pass inserts one plane for good
   for (int iter = 0; iter < np; ++iter) {
@@ -308,16 +314,20 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
     // reassign orphaned planes to the new triangles (seed Algorithm IV)
     for (int l = first; l < np; ++l) {
       if (w.conflict[l] != -3) continue;
-      w.conflict[l] = -1;
-      w.cviol[l] = tol;
+      const T *q = w.pl + 4 * l;
+      const T nx = q[0], ny = q[1], nz = q[2], h = q[3];
+      T best = tol;
+      short bt = -1;
       for (int k = 0; k < nh; ++k) {
         const short t = w.hz_tri[k];
-        const T v = viol(w, l, w.P[t]);
-        if (v > w.cviol[l]) {
-          w.cviol[l] = v;
-          w.conflict[l] = t;
+        const T v = nx * w.P[t].x + ny * w.P[t].y + nz * w.P[t].z - h;
+        if (v > best) {
+          best = v;
+          bt = t;
         }
       }
+      w.conflict[l] = bt;
+      w.cviol[l] = best;
     }
   }
   // the bounding planes must be gone, else the input was unbounded
