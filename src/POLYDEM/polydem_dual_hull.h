@@ -65,6 +65,7 @@ template <typename T, int MaxPlanes> struct DualHullWorkspace {
   short hz_tri[MAXP], hz_edge[MAXP], hz_new[MAXP];
   Vec3<T> hz_P[MAXP];
   short new_by_start[MAXP], new_by_end[MAXP];
+  short act[MAXP];    // planes still in conflict, in index order
 };
 
 // Integrals over the intersection polyhedron (coordinates centred on x_o).
@@ -198,15 +199,22 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
     w.conflict[l] = bt;
     w.cviol[l] = best;
   }
+  // the planes in conflict (the others are redundant for good): the loops
+  // over planes below visit only these
+  int nact = 0;
+  for (int l = first; l < np; ++l)
+    if (w.conflict[l] >= 0) w.act[nact++] = (short) l;
   // expansion (seed Algorithm V); each pass inserts one plane for good
   for (int iter = 0; iter < np; ++iter) {
     int apex = -1;
     T best = T(0);
-    for (int l = first; l < np; ++l)
-      if (w.conflict[l] >= 0 && (apex < 0 || w.cviol[l] > best)) {
+    for (int k = 0; k < nact; ++k) {
+      const int l = w.act[k];
+      if (apex < 0 || w.cviol[l] > best) {
         apex = l;
         best = w.cviol[l];
       }
+    }
     if (apex < 0) break;
     // visible set by flood fill from the conflict triangle
     int nvis = 0, nst = 0;
@@ -256,8 +264,8 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
     }
     if (nh == 0) return STATUS_SEPARATED;    // every vertex cut off: empty intersection
     // planes whose conflict triangle is about to vanish must be reassigned
-    for (int l = first; l < np; ++l)
-      if (w.conflict[l] >= 0 && w.tstate[w.conflict[l]] == 2) w.conflict[l] = -3;
+    for (int k = 0; k < nact; ++k)
+      if (w.tstate[w.conflict[w.act[k]]] == 2) w.conflict[w.act[k]] = -3;
     w.conflict[apex] = -2;
     // free visible triangles (seed: removeAllVisibleFaces)
     for (int k = 0; k < nvis; ++k) {
@@ -312,14 +320,19 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
     }
     if (!ok) return STATUS_DEGENERATE;
     // reassign orphaned planes to the new triangles (seed Algorithm IV)
-    for (int l = first; l < np; ++l) {
-      if (w.conflict[l] != -3) continue;
+    int nkeep = 0;
+    for (int k = 0; k < nact; ++k) {
+      const int l = w.act[k];
+      if (w.conflict[l] != -3) {
+        if (w.conflict[l] >= 0) w.act[nkeep++] = (short) l;
+        continue;
+      }
       const T *q = w.pl + 4 * l;
       const T nx = q[0], ny = q[1], nz = q[2], h = q[3];
       T best = tol;
       short bt = -1;
-      for (int k = 0; k < nh; ++k) {
-        const short t = w.hz_tri[k];
+      for (int j = 0; j < nh; ++j) {
+        const short t = w.hz_tri[j];
         const T v = nx * w.P[t].x + ny * w.P[t].y + nz * w.P[t].z - h;
         if (v > best) {
           best = v;
@@ -328,7 +341,9 @@ POLYDEM_FN int dual_hull_expand(DualHullWorkspace<T, MP> &w, T tol, int first, b
       }
       w.conflict[l] = bt;
       w.cviol[l] = best;
+      if (bt >= 0) w.act[nkeep++] = (short) l;
     }
+    nact = nkeep;
   }
   // the bounding planes must be gone, else the input was unbounded
   for (int t = 0; t < w.ntslots; ++t)
