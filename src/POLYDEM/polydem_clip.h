@@ -53,6 +53,7 @@ struct ClipWorkspace {
   T pu[MAX_POLY], pv[MAX_POLY], pz[MAX_POLY];    // polygon (2-D, depth)
   T qu[MAX_POLY], qv[MAX_POLY], qz[MAX_POLY];    // Sutherland-Hodgman ping-pong
   T key[MAX_POLY];                               // sort keys of the section
+  unsigned char behind[MaxFaces];                // faces with a vertex behind the plane
 };
 
 template <typename T, int MaxFaces = MAX_TEMPLATE_FACES, int MaxEdges = 3 * MAX_TEMPLATE_VERTS>
@@ -274,11 +275,26 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
   T V = T(0), Vabs = T(0), Mu = T(0), Mv = T(0), Mz = T(0);
   T Sfu = T(0), Sfv = T(0), Sfs = T(0), Mfu = T(0), Mfv = T(0), Mfs = T(0);
   int cut = 0;
+  // the faces with a vertex behind the plane: through the dual triangulation
+  // where the template has one (each triangle names a vertex and three of its
+  // faces, and the triangles of a vertex name all its faces), else per face
+  if (sv.dual != nullptr) {
+    for (int f = 0; f < sv.nfaces; ++f) ws.behind[f] = 0;
+    for (int t = 0; t < sv.dual[0]; ++t) {
+      const int *q = sv.dual + 1 + DUAL_SEED_STRIDE_K * t;
+      if (ws.vs[q[6]] < T(0)) ws.behind[q[0]] = ws.behind[q[1]] = ws.behind[q[2]] = 1;
+    }
+  } else {
+    for (int f = 0; f < sv.nfaces; ++f) {
+      bool any = false;
+      for (int k = sv.face_start[f]; k < sv.face_start[f + 1] && !any; ++k)
+        any = ws.vs[sv.face_verts[k]] < T(0);
+      ws.behind[f] = any;
+    }
+  }
   for (int f = 0; f < sv.nfaces; ++f) {
+    if (!ws.behind[f]) continue;
     const int f0 = sv.face_start[f], f1 = sv.face_start[f + 1];
-    bool any = false;
-    for (int k = f0; k < f1 && !any; ++k) any = ws.vs[sv.face_verts[k]] < T(0);
-    if (!any) continue;
     // the loop's part behind the plane (z = -s >= 0), then the triangle
     int m = 0;
     {
