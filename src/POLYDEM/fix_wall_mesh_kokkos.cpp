@@ -186,7 +186,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::update_shapes()
 {
   if (avec->ntemplates() == 0)
     error->all(FLERR, "fix wall/mesh/kk: no shape defined (polyhedron_shape)");
-  shapes.update(*avec, false, "wall/mesh/kk");    // the clip kernel needs no dual seed
+  shapes.update(*avec, true, "wall/mesh/kk");    // the clip marks faces through the dual
 }
 
 /* ---------------------------------------------------------------------- */
