@@ -50,6 +50,7 @@ template <typename T, int MaxFaces = MAX_TEMPLATE_FACES, int MaxEdges = 3 * MAX_
 struct ClipWorkspace {
   static constexpr int MAX_POLY = MaxEdges + 4;
   T vu[MaxEdges], vv[MaxEdges], vs[MaxEdges];    // posed vertices (u, v, height)
+  unsigned char uv[MaxEdges];                    // vu, vv computed (only near the plane)
   T pu[MAX_POLY], pv[MAX_POLY], pz[MAX_POLY];    // polygon (2-D, depth)
   T qu[MAX_POLY], qv[MAX_POLY], qz[MAX_POLY];    // Sutherland-Hodgman ping-pong
   T key[MAX_POLY];                               // sort keys of the section
@@ -180,23 +181,35 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
   res.normal = nw;
   // --- posed vertices in the frame (e1, e2, nw) whose origin o is the foot of
   // the particle's centre on the plane: (u, v) in the plane, s = signed
-  // height above it (behind: s < 0)
+  // height above it (behind: s < 0). The heights of all; (u, v) only of the
+  // vertices on or behind the plane and of their edges' other ends, the
+  // only ones the section and the faces' parts behind use.
   const Vec3<T> d0 = a.x - t0;
   const T sx = dot(d0, nw);
   const Vec3<T> o = a.x - sx * nw;
-  int nbehind = 0;
-  for (int i = 0; i < sv.nverts; ++i) {
-    const Vec3<T> r = posed
-        ? make_vec3(posed[3 * i], posed[3 * i + 1], posed[3 * i + 2]) - a.x
-        : a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1], sv.verts[3 * i + 2]));
+  auto rel = [&](int i) {    // vertex i relative to the centre (lab)
+    return posed ? make_vec3(posed[3 * i], posed[3 * i + 1], posed[3 * i + 2]) - a.x
+                 : a.s * matvec(a.R, make_vec3(sv.verts[3 * i], sv.verts[3 * i + 1],
+                                              sv.verts[3 * i + 2]));
+  };
+  auto in_plane = [&](int i, const Vec3<T> &r) {
     ws.vu[i] = dot(r, e1);
     ws.vv[i] = dot(r, e2);
+    ws.uv[i] = 1;
+  };
+  int nbehind = 0;
+  for (int i = 0; i < sv.nverts; ++i) {
+    const Vec3<T> r = rel(i);
     ws.vs[i] = sx + dot(r, nw);
     if (!(ws.vs[i] == ws.vs[i])) {
       clip_result_zero(res, STATUS_DEGENERATE);
       return res;
     }
-    if (ws.vs[i] < T(0)) ++nbehind;
+    ws.uv[i] = 0;
+    if (ws.vs[i] <= T(0)) {
+      in_plane(i, r);
+      if (ws.vs[i] < T(0)) ++nbehind;
+    }
   }
   if (nbehind == 0) {
     res.status = STATUS_SEPARATED;
@@ -211,6 +224,9 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
   for (int k = 0; k < sv.nedges; ++k) {
     const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
     const T si = ws.vs[i], sj = ws.vs[j];
+    if (si > T(0) && sj > T(0)) continue;
+    if (!ws.uv[i]) in_plane(i, rel(i));
+    if (!ws.uv[j]) in_plane(j, rel(j));
     if ((si < T(0)) == (sj < T(0))) continue;
     const T t = si / (si - sj);
     ws.pu[n] = ws.vu[i] + t * (ws.vu[j] - ws.vu[i]);
