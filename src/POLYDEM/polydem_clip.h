@@ -142,6 +142,12 @@ namespace clip_detail {
                                    T *qv, T *qz, int *cut = nullptr)
   {
     for (int e = 0; e < 3 && m > 0; ++e) {
+      // a polygon wholly inside the edge's line passes unchanged (the same
+      // test as sh_pass's): no pass, no copy
+      const T au = tu[e], av = tv[e], eu = tu[(e + 1) % 3] - au, ev = tv[(e + 1) % 3] - av;
+      int i = 0;
+      while (i < m && eu * (iv[i] - av) - ev * (iu[i] - au) >= T(0)) ++i;
+      if (i == m) continue;
       m = sh_pass(iu, iv, iz, m, tu[e], tv[e], tu[(e + 1) % 3], tv[(e + 1) % 3], qu, qv, qz, cut);
       T *su = iu, *sv = iv, *sz = iz;
       iu = qu;
