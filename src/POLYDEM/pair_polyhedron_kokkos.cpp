@@ -308,6 +308,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
   if ((int) d_pairs.extent(0) < npairs)
     d_pairs = Kokkos::View<int *[2], DeviceType>("polyhedron/kk:pairs", npairs + npairs / 5 + 16);
 
+  if (npairs == 0) return;    // nothing to list (a dilute or wall-only step)
   cnt.fill = 1;
   cnt.pairs = d_pairs;
   Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), cnt);

@@ -18,26 +18,27 @@
 
 namespace polydem {
 
-// Exact rotation about body axis k for time h: body-frame angular momentum
-// Lb rotates by -phi about e_k, orientation q by +phi about e_k (body frame),
-// phi = h Lb_k / I_k. Lab-frame L = R(q) Lb is unchanged.
-template <typename T> POLYDEM_FN void free_rotor_substep(int k, T h, const T inertia[3], T Lb[3], T q[4])
+// Exact rotation about body axis K for time h: body-frame angular momentum
+// Lb rotates by -phi about e_K, orientation q by +phi about e_K (body frame),
+// phi = h Lb_K / I_K. Lab-frame L = R(q) Lb is unchanged. K is a constant
+// of the call (no store to a run-time slot of an array that a wider load
+// then reads back: a store-forwarding stall in the hot loop).
+template <int K, typename T> POLYDEM_FN void free_rotor_substep(T h, const T inertia[3], T Lb[3], T q[4])
 {
-  if (!(inertia[k] > T(0))) return;    // massless axis (degenerate template): no rotation
-  const T phi = h * Lb[k] / inertia[k];
+  if (!(inertia[K] > T(0))) return;    // massless axis (degenerate template): no rotation
+  const T phi = h * Lb[K] / inertia[K];
   // one sine and cosine, of the half angle: cos phi = 1 - 2 sin^2(phi/2),
   // sin phi = 2 sin(phi/2) cos(phi/2)
   const T ch = cos(T(0.5) * phi), sh = sin(T(0.5) * phi);
   const T c = T(1) - T(2) * sh * sh, s = T(2) * sh * ch;
-  const int a = (k + 1) % 3, b = (k + 2) % 3;
-  // Lb <- Rot_k(-phi) Lb
+  constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
+  // Lb <- Rot_K(-phi) Lb
   const T la = Lb[a], lb = Lb[b];
   Lb[a] = c * la + s * lb;
   Lb[b] = -s * la + c * lb;
-  // q <- q * (cos(phi/2), sin(phi/2) e_k)
-  T e[3] = {T(0), T(0), T(0)};
-  e[k] = sh;
-  const Quat<T> qq = qmul(make_quat(q[0], q[1], q[2], q[3]), make_quat(ch, e[0], e[1], e[2]));
+  // q <- q * (cos(phi/2), sin(phi/2) e_K)
+  const T ex = K == 0 ? sh : T(0), ey = K == 1 ? sh : T(0), ez = K == 2 ? sh : T(0);
+  const Quat<T> qq = qmul(make_quat(q[0], q[1], q[2], q[3]), make_quat(ch, ex, ey, ez));
   q[0] = qq.w;
   q[1] = qq.x;
   q[2] = qq.y;
@@ -51,11 +52,11 @@ template <typename T> POLYDEM_FN void free_rotor_step(T h, const T inertia[3], T
   Mat3<T> r = quat_to_mat(make_quat(q[0], q[1], q[2], q[3]));
   Vec3<T> lb = matTvec(r, make_vec3(L[0], L[1], L[2]));
   T Lb[3] = {lb.x, lb.y, lb.z};
-  free_rotor_substep(0, T(0.5) * h, inertia, Lb, q);
-  free_rotor_substep(1, T(0.5) * h, inertia, Lb, q);
-  free_rotor_substep(2, h, inertia, Lb, q);
-  free_rotor_substep(1, T(0.5) * h, inertia, Lb, q);
-  free_rotor_substep(0, T(0.5) * h, inertia, Lb, q);
+  free_rotor_substep<0>(T(0.5) * h, inertia, Lb, q);
+  free_rotor_substep<1>(T(0.5) * h, inertia, Lb, q);
+  free_rotor_substep<2>(h, inertia, Lb, q);
+  free_rotor_substep<1>(T(0.5) * h, inertia, Lb, q);
+  free_rotor_substep<0>(T(0.5) * h, inertia, Lb, q);
   const Quat<T> qn = qnormalize(make_quat(q[0], q[1], q[2], q[3]));
   q[0] = qn.w;
   q[1] = qn.x;
