@@ -567,7 +567,7 @@ double FixWallMesh::memory_usage()
   double bytes = (double) atom->nmax * nh * sizeof(double);
   bytes += geom.mesh.tri.size() * sizeof(double);
   bytes += (geom.grid.plane.size() + geom.grid.box.size() + geom.grid.sphere.size()) * sizeof(double);
-  bytes += (geom.grid.start.size() + geom.grid.items.size() + geom.grid.tbin.size()) * sizeof(int);
+  bytes += (geom.grid.start.size() + geom.grid.items.size()) * sizeof(int);
   bytes += near_ref.size() * sizeof(double) + (near_count.size() + near_tri.size()) * sizeof(int) +
       near_gap.size() * sizeof(float);
   return bytes;

@@ -168,7 +168,6 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::init()
   upload(d_box, geom.grid.box, "wall/mesh/kk:box");
   upload(d_start, geom.grid.start, "wall/mesh/kk:start");
   upload(d_items, geom.grid.items, "wall/mesh/kk:items");
-  upload(d_tbin, geom.grid.tbin, "wall/mesh/kk:tbin");
   upload(d_sphere, geom.grid.sphere, "wall/mesh/kk:sphere");
   upload(d_region, geom.regions, "wall/mesh/kk:region");
 
@@ -255,7 +254,6 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.sc.grid.items = d_items.data();
   k.sc.grid.plane = d_plane.data();
   k.sc.grid.box = d_box.data();
-  k.sc.grid.tbin = d_tbin.data();
   k.sc.grid.sphere = d_sphere.data();
   k.sc.grid.region = d_region.data();
   k.dt = update->dt;

@@ -54,7 +54,7 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
 
   // mesh and grid (mesh frame)
   Kokkos::View<double *, DeviceType> d_tri, d_plane, d_box, d_sphere;
-  Kokkos::View<int *, DeviceType> d_start, d_items, d_tbin, d_region;
+  Kokkos::View<int *, DeviceType> d_start, d_items, d_region;
   // shape templates with their semi-axes (0: a polyhedron), as the pair styles
   polydem_kk::DeviceShapes<DeviceType> shapes;
   // the law table's entries on the device, and the table pointing there

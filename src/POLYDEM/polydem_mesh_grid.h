@@ -7,8 +7,12 @@
    Candidate triangles of a sphere (c, r): the bins overlapping the sphere's
    box. A triangle listed in several of these bins is visited once, in the
    first bin of (its bin box) ∩ (the query box), so no visited list is
-   needed. The work per query depends on the triangles near the sphere, not
-   on the mesh size.
+   needed. Along each direction that bin is the triangle's own first bin or
+   the query's first, so each entry of a bin's list carries, beside the
+   triangle, three bits: is this bin the triangle's first along x, y, z
+   (mesh_item). A query decides from the entry alone, without loading the
+   triangle's data, which of the bin's triangles it visits there. The work
+   per query depends on the triangles near the sphere, not on the mesh size.
 ------------------------------------------------------------------------- */
 
 #ifndef POLYDEM_MESH_GRID_H
@@ -25,13 +29,20 @@ template <typename T> struct MeshGridView {
   T h;                  // bin edge [length]
   int n[3];             // bins per direction
   const int *start;     // n0 n1 n2 + 1 offsets into items
-  const int *items;     // triangle indices
+  const int *items;     // mesh_item(t, first): triangle t and its first-bin bits
   const T *plane;       // 4 per triangle: unit normal, offset n . t0
   const T *box;         // 6 per triangle: min xyz, max xyz
-  const int *tbin;      // 3 per triangle: its first bin (i, j, k)
   const int *region = nullptr;    // per triangle: smooth region (mesh_regions, polydem_stl.h), or none
   const T *sphere = nullptr;      // 4 per triangle: a bounding sphere (centre, radius), or none
 };
+
+// at most this many triangles (an entry of a bin's list holds 8 t + 7)
+constexpr int MESH_MAX_TRIANGLES = (1 << 28) - 1;
+
+// entry of a bin's list: triangle t, and in bit d whether the bin is t's
+// first along direction d
+POLYDEM_FN int mesh_item(int t, int first) { return 8 * t + first; }
+POLYDEM_FN int mesh_item_tri(int e) { return e >> 3; }
 
 // bin index of coordinate x along direction d, clamped to [0, n-1]; the
 // host build and the device query use this same expression
@@ -138,14 +149,13 @@ POLYDEM_FN void mesh_for_each_near_dist2(const MeshGridView<T> &g, const Vec3<T>
     for (int j = qlo[1]; j <= qhi[1]; ++j)
       for (int i = qlo[0]; i <= qhi[0]; ++i) {
         const int b = mesh_bin_id<T>(g.n, i, j, k);
+        // this bin is the first of (t's bin box) ∩ (the query box) if, along
+        // each direction, it is t's first bin or the query's first
+        const int qfirst = (i == qlo[0]) | (j == qlo[1]) << 1 | (k == qlo[2]) << 2;
         for (int s = g.start[b]; s < g.start[b + 1]; ++s) {
-          const int t = g.items[s];
-          const int *tlo = g.tbin + 3 * t;
-          // first bin of the intersection of the two bin boxes
-          const int fi = tlo[0] > qlo[0] ? tlo[0] : qlo[0];
-          const int fj = tlo[1] > qlo[1] ? tlo[1] : qlo[1];
-          const int fk = tlo[2] > qlo[2] ? tlo[2] : qlo[2];
-          if (fi != i || fj != j || fk != k) continue;
+          const int e = g.items[s];
+          if (((e | qfirst) & 7) != 7) continue;
+          const int t = mesh_item_tri(e);
           T d2 = T(0);
           if (!mesh_tri_near(g, t, c, r, &d2)) continue;
           f(t, d2);

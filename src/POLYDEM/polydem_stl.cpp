@@ -266,6 +266,9 @@ StlMesh read_stl(const std::string &path, const StlTransform &xf)
     throw StlError(path + ": empty mesh (" + std::to_string(mesh.nread) + " triangles read, " +
                    std::to_string(mesh.ndegenerate) + " zero-area and " +
                    std::to_string(mesh.nduplicate) + " duplicates dropped)");
+  if (mesh.ntri() > MESH_MAX_TRIANGLES)
+    throw StlError(path + ": " + std::to_string(mesh.ntri()) + " triangles, more than the " +
+                   std::to_string(MESH_MAX_TRIANGLES) + " a mesh may have");
   return mesh;
 }
 
@@ -320,7 +323,6 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
   v.h = g.h;
   g.plane.resize(4 * (size_t) nt);
   g.box.resize(6 * (size_t) nt);
-  g.tbin.resize(3 * (size_t) nt);
   g.sphere.resize(4 * (size_t) nt);
   for (int t = 0; t < nt; t++) {
     const double *p = tri.data() + 9 * (size_t) t;
@@ -353,8 +355,6 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
     for (int t = 0; t < nt; t++) {
       int blo[3], bhi[3];
       mesh_tri_bins(v, t, blo, bhi);
-      if (pass == 0)
-        for (int d = 0; d < 3; d++) g.tbin[3 * t + d] = blo[d];
       for (int k = blo[2]; k <= bhi[2]; k++)
         for (int j = blo[1]; j <= bhi[1]; j++)
           for (int i = blo[0]; i <= bhi[0]; i++) {
@@ -362,7 +362,8 @@ MeshGrid build_mesh_grid(const std::vector<double> &tri, double h, long max_bins
             if (pass == 0)
               count[b + 1]++;
             else
-              g.items[g.start[b] + count[b]++] = t;
+              g.items[g.start[b] + count[b]++] =
+                  mesh_item(t, (i == blo[0]) | (j == blo[1]) << 1 | (k == blo[2]) << 2);
           }
     }
     if (pass == 0) {

@@ -88,10 +88,9 @@ struct MeshGrid {
   double h = 1.0;
   int n[3] = {1, 1, 1};
   std::vector<int> start;       // nbins + 1
-  std::vector<int> items;       // triangle indices
+  std::vector<int> items;       // mesh_item(t, first-bin bits), polydem_mesh_grid.h
   std::vector<double> plane;    // 4 per triangle: unit normal, offset
   std::vector<double> box;      // 6 per triangle: bounding box
-  std::vector<int> tbin;        // 3 per triangle: first bin
   std::vector<double> sphere;   // 4 per triangle: centroid, largest vertex distance from it
 };
 

@@ -126,7 +126,6 @@ MeshGridView<double> WallMesh::grid_view() const
   g.items = grid.items.data();
   g.plane = grid.plane.data();
   g.box = grid.box.data();
-  g.tbin = grid.tbin.data();
   g.region = regions.data();
   g.sphere = grid.sphere.data();
   return g;

@@ -451,8 +451,7 @@ TEST(ContactPipeline, WallBodyIsTheComposition)
                                  {mg.lo[0], mg.lo[1], mg.lo[2]},
                                  mg.h,           {mg.n[0], mg.n[1], mg.n[2]},
                                  mg.start.data(), mg.items.data(),
-                                 mg.plane.data(), mg.box.data(),
-                                 mg.tbin.data()};
+                                 mg.plane.data(), mg.box.data()};
   sc.cosmax = std::cos(20.0 * 3.14159265358979323846 / 180.0);
   sc.both = 1;
   sc.depth_warn = 0.25;

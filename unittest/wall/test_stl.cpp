@@ -229,7 +229,7 @@ TEST(MeshGrid, CandidatesEqualBruteForce)
     const MeshGrid g = build_mesh_grid(t, h);
     MeshGridView<double> v{t.data(), (int) (t.size() / 9), {g.lo[0], g.lo[1], g.lo[2]}, g.h,
                            {g.n[0], g.n[1], g.n[2]}, g.start.data(), g.items.data(),
-                           g.plane.data(), g.box.data(), g.tbin.data()};
+                           g.plane.data(), g.box.data()};
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-1.3, 1.3);
     for (int trial = 0; trial < 300; trial++) {
@@ -259,7 +259,7 @@ TEST(MeshGrid, BoundingSpheresKeepTheNearTest)
     ASSERT_EQ(g.sphere.size(), 4 * (t.size() / 9));
     MeshGridView<double> v{t.data(), (int) (t.size() / 9), {g.lo[0], g.lo[1], g.lo[2]}, g.h,
                            {g.n[0], g.n[1], g.n[2]}, g.start.data(), g.items.data(),
-                           g.plane.data(), g.box.data(), g.tbin.data()};
+                           g.plane.data(), g.box.data()};
     MeshGridView<double> vs = v;
     vs.sphere = g.sphere.data();
     // every vertex within its triangle's sphere

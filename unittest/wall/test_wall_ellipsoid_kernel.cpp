@@ -55,7 +55,6 @@ template <typename T> struct Mesh {
     v.items = g.items.data();
     v.plane = plane.data();
     v.box = box.data();
-    v.tbin = g.tbin.data();
     region = mesh_regions(t, std::cos(20.0 * M_PI / 180.0), 1e-12);
     v.region = region.data();
   }
