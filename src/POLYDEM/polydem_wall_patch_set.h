@@ -100,7 +100,7 @@ struct WallWorkspace {
 template <typename T> struct WallNear {
   T *ref;        // 13: x_ref (3), R_ref row-major (9), mesh frame; s_v, the list's validity
   int *count;    // entries; NEAR_REBUILD: build now; NEAR_OVERFLOW: no list until invalidated
-  int *tri;      // cap triangle indices
+  int *tri;      // cap entries: t, or -1 - t where t stays within r (WallNearBuild)
   float *gap;    // cap e_t [length], rounded down
   int cap;
   T skin;        // [length]

@@ -473,6 +473,9 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
 // e_t (or a lower bound of it) of the triangles left out, starting at the
 // query's extra reach S. A full list drops its largest e_t for a smaller one
 // (valid then shrinks to the dropped value), so it keeps the cap smallest.
+// A triangle that stays within r of the centre for every motion the list
+// allows (d_t + S below r by more than the round-off of the distance test)
+// is kept as -1 - t: the steps skip that test for it (wall_near_visit).
 template <typename T, int MF, int ME> struct WallNearBuild {
   const MeshGridView<T> *g;
   const WallWorkspace<T, MF, ME> *ws;
@@ -498,8 +501,10 @@ template <typename T, int MF, int ME> struct WallNearBuild {
       return;
     }
     const float e = float(gap * T(1 - 1e-6));    // float rounding is < 1e-7 relative
+    const T margin = T(1e-9) * r + T(1e-12) * (fabs(c.x) + fabs(c.y) + fabs(c.z));
+    const int code = sqrt(d2) + (reach - r) + margin < r ? -1 - t : t;
     if (n < near->cap) {
-      near->tri[n] = t;
+      near->tri[n] = code;
       near->gap[n++] = e;
       return;
     }
@@ -507,7 +512,7 @@ template <typename T, int MF, int ME> struct WallNearBuild {
     for (int k = 1; k < n; ++k) kmax = near->gap[k] > near->gap[kmax] ? k : kmax;
     if (near->gap[kmax] > e) {
       valid = T(near->gap[kmax]) < valid ? T(near->gap[kmax]) : valid;
-      near->tri[kmax] = t;
+      near->tri[kmax] = code;
       near->gap[kmax] = e;
     } else {
       valid = T(e) < valid ? T(e) : valid;
@@ -579,8 +584,14 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     m = slack;
   }
   const int n = *near.count;
-  for (int e = 0; e < n; ++e)
-    if (T(near.gap[e]) <= m && mesh_tri_near(g, near.tri[e], a.x, r)) acc(near.tri[e]);
+  for (int e = 0; e < n; ++e) {
+    if (!(T(near.gap[e]) <= m)) continue;
+    const int code = near.tri[e];
+    if (code < 0)    // within r of the centre while the list is valid
+      acc(-1 - code);
+    else if (mesh_tri_near(g, code, a.x, r))
+      acc(code);
+  }
   return true;
 }
 
