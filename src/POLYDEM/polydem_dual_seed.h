@@ -125,6 +125,20 @@ inline std::vector<int> build_vertex_adjacency(int nverts, int nedges, const int
   return out;
 }
 
+// Do dual's triangles come as the fans of the vertices in vertex order,
+// vertex v's (degree - 2) long with the degree of vadj (dual_fan_first)?
+// True for the two built from one closed convex template.
+inline bool dual_fans_match(const std::vector<int> &dual, const std::vector<int> &vadj,
+                            int nverts)
+{
+  if (dual.empty() || (int) vadj.size() < nverts + 1 || vadj[0] != nverts + 1) return false;
+  int t = 0;
+  for (int v = 0; v < nverts; ++v)
+    for (int k = 0; k < vadj[v + 1] - vadj[v] - 2; ++k, ++t)
+      if (t >= dual[0] || dual[1 + DUAL_SEED_STRIDE * t + 6] != v) return false;
+  return t == dual[0];
+}
+
 }    // namespace polydem
 
 #endif

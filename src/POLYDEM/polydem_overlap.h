@@ -153,6 +153,15 @@ namespace overlap_detail {
     // projections n . (p - x0) of every vertex: A's in tviol[0..nva), B's after
     T *pa = w.tviol, *pb = w.tviol + nva;
     T sA = -T(1e30), sB = T(1e30);
+    // A template's dual triangles are the fans of its vertices in vertex
+    // order (polydem_dual_seed.h), vertex v's the dual_fan_first(v) ..
+    // + degree - 3: where both have the vertex adjacency, the kept part of A
+    // and B's reaching faces are found from the vertices concerned, not by
+    // a scan of every triangle. act and freelist are scratch until the hull
+    // starts (dual_hull_expand sets them up).
+    const bool fans = va.vadj != nullptr && vb.vadj != nullptr && vb.dual != nullptr;
+    short *low = w.act;
+    int nlow = 0;
     {
       const Vec3<T> na = a.s * matTvec(a.R, n), nb = b.s * matTvec(b.R, n);
       const T ca = dot(n, a.x - x0), cb = dot(n, b.x - x0);
@@ -165,6 +174,8 @@ namespace overlap_detail {
         const T *v = vb.verts + 3 * i;
         pb[i] = cb + nb.x * v[0] + nb.y * v[1] + nb.z * v[2];
         sB = pb[i] < sB ? pb[i] : sB;
+        low[nlow] = (short) i;    // B's vertices that reach below sA + tol
+        nlow += pb[i] <= sA + tol;
       }
     }
     if (sB > sA + tol) return STATUS_SEPARATED;    // n separates them
@@ -186,10 +197,24 @@ namespace overlap_detail {
     const int *seed = va.dual;
     const int nt = seed[0];
     short *map = w.stack;
+    short *kept = w.freelist;    // the kept triangles, ascending
     int nk = 0;
-    for (int t = 0; t < nt; ++t) {
-      const int iv = seed[1 + DUAL_SEED_STRIDE_K * t + 6];
-      map[t] = cut - pa[iv] <= tol ? (short) nk++ : (short) -1;
+    if (fans) {
+      for (int t = 0; t < nt; ++t) map[t] = -1;
+      for (int i = 0; i < nva; ++i) {
+        if (!(cut - pa[i] <= tol)) continue;
+        const int t0 = dual_fan_first(va, i), t1 = t0 + va.vadj[i + 1] - va.vadj[i] - 2;
+        for (int t = t0; t < t1; ++t) {
+          kept[nk] = (short) t;
+          map[t] = (short) nk++;
+        }
+      }
+    } else {
+      for (int t = 0; t < nt; ++t) {
+        const int iv = seed[1 + DUAL_SEED_STRIDE_K * t + 6];
+        kept[nk] = (short) t;
+        map[t] = cut - pa[iv] <= tol ? (short) nk++ : (short) -1;
+      }
     }
     if (nk == 0) return STATUS_SEPARATED;
     // A's planes on the kept part are posed once (w.hz_new[l] = 1 marks them,
@@ -202,9 +227,9 @@ namespace overlap_detail {
     int nka = 0;    // A's kept planes, listed in w.hz_tri
     int ns = nk;    // slots: kept ones first, then the ring of new ones on pi
     for (int i = 0; i <= ipi; ++i) w.new_by_start[i] = w.new_by_end[i] = -1;
-    for (int t = 0; t < nt; ++t) {
-      const short k = map[t];
-      if (k < 0) continue;
+    for (int kk = 0; kk < nk; ++kk) {
+      const int t = kept[kk];
+      const short k = (short) kk;
       const int *q = seed + 1 + DUAL_SEED_STRIDE_K * t;
       const int iv = q[6];
       w.tstate[k] = 1;
@@ -276,7 +301,17 @@ namespace overlap_detail {
     const Vec3<T> xb = b.x - x0;
     np = ipi + 1;
     short *reach = w.hz_edge;
-    if (vb.dual != nullptr && fb <= MP) {
+    if (fans && fb <= MP) {
+      for (int f = 0; f < fb; ++f) reach[f] = 0;
+      for (int k = 0; k < nlow; ++k) {
+        const int i = low[k];
+        const int t0 = dual_fan_first(vb, i), t1 = t0 + vb.vadj[i + 1] - vb.vadj[i] - 2;
+        for (int t = t0; t < t1; ++t) {
+          const int *q = vb.dual + 1 + DUAL_SEED_STRIDE_K * t;
+          reach[q[0]] = reach[q[1]] = reach[q[2]] = 1;
+        }
+      }
+    } else if (vb.dual != nullptr && fb <= MP) {
       for (int f = 0; f < fb; ++f) reach[f] = 0;
       const int *sb = vb.dual;
       for (int t = 0; t < sb[0]; ++t) {

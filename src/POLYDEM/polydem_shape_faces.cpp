@@ -59,6 +59,10 @@ void PolyShapeTemplate::make_float_copy()
   dual_ =
       build_dual_seed(nverts(), nfaces(), planes_.data(), face_start_.data(), face_verts_.data());
   vadj_ = build_vertex_adjacency(nverts(), nedges(), edges_.data());
+  // the overlap kernel walks the dual triangulation by the vertices' fans
+  // (dual_fan_first) where both exist: a template where they disagree (not
+  // a closed convex polyhedron) keeps neither fast path's shortcut
+  if (!dual_.empty() && !vadj_.empty() && !dual_fans_match(dual_, vadj_, nverts())) vadj_.clear();
   verts_f_.assign(verts_.begin(), verts_.end());
   planes_f_.assign(planes_.begin(), planes_.end());
 }

@@ -87,6 +87,14 @@ template <typename T> POLYDEM_FN int vertex_adjacency_ints(const ShapeView<T> &v
   return v.vadj ? v.vadj[v.nverts] : 0;
 }
 
+// First dual triangle of vertex v's fan: the dual triangulation lists the
+// fans in vertex order, v's with degree - 2 triangles, the degree read from
+// the vertex adjacency (both checked to agree at load: dual_fans_match)
+template <typename T> POLYDEM_FN int dual_fan_first(const ShapeView<T> &s, int v)
+{
+  return s.vadj[v] - (s.nverts + 1) - 2 * v;
+}
+
 // Pose of one particle: position, orientation, scale.
 template <typename T> struct Pose {
   Vec3<T> x;

@@ -4,6 +4,7 @@
 #include "cgal_ref.h"
 #include "pair_gen.h"
 
+#include "polydem_dual_seed.h"
 #include "polydem_gjk.h"
 #include "polydem_mesh_grid.h"
 #include "polydem_overlap.h"
@@ -386,6 +387,48 @@ TEST(KernelOverlap, LocalizedSeededAndTetraStartAgree)
   EXPECT_GE(localized, 0.99 * n);
   EXPECT_LE(e_full, 1e-12);
   EXPECT_LE(e_tetra, 1e-12);
+}
+
+// The localized start finds A's kept part and B's reaching faces from the
+// vertices' fans of the dual triangulation (dual_fan_first) where the
+// templates have their vertex adjacency, else by a scan of every dual
+// triangle: both give the same hull, so the results are equal bit for bit.
+// Every template of the pool has fans in vertex order (dual_fans_match),
+// and a triangulation out of that order is refused.
+TEST(KernelOverlap, FanWalkEqualsTriangleScan)
+{
+  for (size_t k = 0; k < pool().d.size(); ++k) {
+    const ShapeData &s = pool().data[k];
+    ASSERT_TRUE(dual_fans_match(s.dual, s.vadj, s.nverts())) << k;
+    std::vector<int> swapped = s.dual;    // two fans' vertex fields exchanged
+    std::swap(swapped[1 + 6], swapped[1 + DUAL_SEED_STRIDE * (swapped[0] - 1) + 6]);
+    EXPECT_FALSE(dual_fans_match(swapped, s.vadj, s.nverts())) << k;
+  }
+  std::mt19937_64 rng(11);
+  static OverlapWorkspace<double> ws1, ws2;
+  int n = 0, localized = 0;
+  for (int i = 0; i < scale_count(1000); ++i) {
+    const Pair p = random_pair(pool(), rng);
+    const ShapeView<double> &va = pool().d[p.a]->view, &vb = pool().d[p.b]->view;
+    ShapeView<double> sa = va, sb = vb;
+    sa.vadj = sb.vadj = nullptr;    // no fans: the scans
+    const OverlapResult<double> r1 = polyhedron_overlap(make_posed(va, p.pa), make_posed(vb, p.pb), ws1);
+    const OverlapResult<double> r2 = polyhedron_overlap(make_posed(sa, p.pa), make_posed(sb, p.pb), ws2);
+    ASSERT_EQ(r1.status, r2.status);
+    ASSERT_EQ(r1.localized, r2.localized);
+    EXPECT_EQ(r1.volume, r2.volume);
+    for (int d = 0; d < 3; ++d) {
+      EXPECT_EQ(r1.centroid[d], r2.centroid[d]);
+      EXPECT_EQ(r1.S_A[d], r2.S_A[d]);
+      EXPECT_EQ(r1.M_A[d], r2.M_A[d]);
+      EXPECT_EQ(r1.M_B[d], r2.M_B[d]);
+    }
+    n += r1.status == STATUS_OK;
+    localized += r1.localized;
+  }
+  std::printf("[ fan walk vs triangle scan ] %d overlapping pairs, %d localized: bit for bit\n", n,
+              localized);
+  EXPECT_GT(localized, 0);
 }
 
 // Aligned unit cubes pressed face to face (side planes coincident, merged

@@ -140,6 +140,9 @@ ShapeData make_shape(const std::vector<std::array<double, 3>> &in)
   s.dual = polydem::build_dual_seed(s.nverts(), nf, s.planes.data(), s.face_start.data(),
                                     s.face_verts.data());
   s.vadj = polydem::build_vertex_adjacency(s.nverts(), (int) s.edges.size() / 2, s.edges.data());
+  // as the templates (polydem_shape_faces.cpp): no adjacency where the fans disagree
+  if (!s.dual.empty() && !s.vadj.empty() && !polydem::dual_fans_match(s.dual, s.vadj, s.nverts()))
+    s.vadj.clear();
   return s;
 }
 
