@@ -51,12 +51,16 @@ template <class DeviceType, int MODE> struct FixNVEPolyhedronKokkosFunctor {
   KOKKOS_INLINE_FUNCTION void operator()(const int i) const
   {
     if (!(mask(i) & groupbit)) return;
+    // each atom's values read once into locals and written once (the Views
+    // may alias, so the compiler would reload them after every store)
+    double L[3] = {angmom(i, 0), angmom(i, 1), angmom(i, 2)};
     if (MODE != FixNVEPolyhedronKokkos<DeviceType>::OMEGA_ONLY) {
       const double dtfm = dtf / rmass(i);
       for (int k = 0; k < 3; k++) {
-        v(i, k) += dtfm * f(i, k);
-        if (MODE == FixNVEPolyhedronKokkos<DeviceType>::INITIAL) x(i, k) += dtv * v(i, k);
-        angmom(i, k) += dtf * torque(i, k);
+        const double vk = v(i, k) + dtfm * f(i, k);
+        v(i, k) = vk;
+        if (MODE == FixNVEPolyhedronKokkos<DeviceType>::INITIAL) x(i, k) += dtv * vk;
+        L[k] += dtf * torque(i, k);
       }
     }
     // principal moments I_k = m s^2 J_k / V (as PolyShapeLibrary::inertia)
@@ -64,13 +68,13 @@ template <class DeviceType, int MODE> struct FixNVEPolyhedronKokkosFunctor {
     const double J[3] = {props(t, 1), props(t, 2), props(t, 3)};
     double inertia[3];
     polydem::scaled_moments(rmass(i), pscale(i), props(t, 0), J, inertia);
-    double L[3] = {angmom(i, 0), angmom(i, 1), angmom(i, 2)};
     double q[4] = {quat(i, 0), quat(i, 1), quat(i, 2), quat(i, 3)};
     if (MODE == FixNVEPolyhedronKokkos<DeviceType>::INITIAL) {
       polydem::free_rotor_step(dtv, inertia, L, q);
-      for (int k = 0; k < 3; k++) angmom(i, k) = L[k];
       for (int k = 0; k < 4; k++) quat(i, k) = q[k];
     }
+    if (MODE != FixNVEPolyhedronKokkos<DeviceType>::OMEGA_ONLY)
+      for (int k = 0; k < 3; k++) angmom(i, k) = L[k];
     double w[3];
     polydem::omega_from_angmom(inertia, L, q, w);
     for (int k = 0; k < 3; k++) omega(i, k) = w[k];
