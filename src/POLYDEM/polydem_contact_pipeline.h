@@ -379,6 +379,27 @@ POLYDEM_FN void add_part_force(PairContactResult<T> &r, const ContactForce<T> &c
   r.cf.capped |= cf.capped;
 }
 
+// Bit k of bits is set where part k of body (n parts; a convex body: itself)
+// has a bounding sphere that meets other's, scaled by 1 + 1e-9.
+template <typename T>
+POLYDEM_FN void part_reach_bits(const PosedShape<T> &body, const PosedShape<T> &other, int n,
+                                unsigned &bits)
+{
+  const ShapeView<T> &v = *body.view;
+  const T ro = posed_radius(other);
+  for (int k = 0; k < n; ++k) {
+    Vec3<T> x = body.x;
+    T r = posed_radius(body);
+    if (view_is_composite(v)) {
+      const ShapePart<T> &p = v.parts[k];
+      x = body.x + body.s * matvec(body.R, make_vec3(p.x[0], p.x[1], p.x[2]));
+      r = body.s * p.view->radius;
+    }
+    const T reach = (r + ro) * T(1.000000001);
+    if (norm2(x - other.x) < reach * reach) bits |= 1u << k;
+  }
+}
+
 // A pair of which one or both are composites, in a table with part slots
 // (tab.nslot > 0): every pair of parts whose bounding spheres meet is a
 // contact of its own, with its history in the slot keyed 1 + (part of the
@@ -403,17 +424,37 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   const int stride = 1 + tab.nhist;
   T deepest = T(-1), volume = T(0), area = T(0), deepest_alg = T(-1);
   bool by_volume = false;    // a part contact by overlap volume (else algebraic only)
+  // the parts that can reach the other body: a part whose bounding sphere
+  // misses the other body's (which holds all its parts' corners) touches
+  // none of its parts (a bit per part; 1e-9 of margin for round-off)
+  unsigned reach_a = 0u, reach_b = 0u;
+  part_reach_bits(A.shape, B.shape, na, reach_a);
+  part_reach_bits(B.shape, A.shape, nb, reach_b);
+  // the keys that hold a slot (1 + 16 ka + kb <= 256): a part pair out of
+  // reach without a slot has nothing to do
+  unsigned long long held[4] = {0ull, 0ull, 0ull, 0ull};
+  for (int k = 0; k < tab.nslot; ++k) {
+    const T v = hist[k * stride];
+    if (v >= T(1) && v <= T(MAX_COMPOSITE_PARTS * MAX_COMPOSITE_PARTS)) {
+      const int bit = (int) v - 1;
+      held[bit >> 6] |= 1ull << (bit & 63);
+    }
+  }
   // the part pairs in the lower tag's order, whichever body is A: slots are
   // taken in the same order on every rank (and given up alike when they run out)
   for (int idx = 0; idx < na * nb; ++idx) {
     const int ka = a_low ? idx / nb : idx % na, kb = a_low ? idx % nb : idx / na;
+    const int ikey = a_low ? ka * MAX_COMPOSITE_PARTS + kb : kb * MAX_COMPOSITE_PARTS + ka;
+    const bool has_slot = (held[ikey >> 6] >> (ikey & 63)) & 1ull;
+    if (!has_slot && !((reach_a >> ka) & 1u && (reach_b >> kb) & 1u)) continue;
     const PosedShape<T> a = posed_part(A.shape, ka);
     {
       const PosedShape<T> b = posed_part(B.shape, kb);
-      const T key = T(1 + (a_low ? ka * MAX_COMPOSITE_PARTS + kb : kb * MAX_COMPOSITE_PARTS + ka));
+      const T key = T(1 + ikey);
       T *slot = nullptr;
-      for (int k = 0; k < tab.nslot; ++k)
-        if (hist[k * stride] == key) slot = hist + k * stride;
+      if (has_slot)
+        for (int k = 0; k < tab.nslot; ++k)
+          if (hist[k * stride] == key) slot = hist + k * stride;
       const T reach = a.s * a.view->radius + b.s * b.view->radius;
       const bool algebraic = algebraic_pair(a, b);
       OverlapResult<T> ov;

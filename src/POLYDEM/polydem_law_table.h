@@ -67,10 +67,14 @@ template <typename T> POLYDEM_FN int pair_history_stride(const LawTable<T> &t)
 }
 
 // keyed part contacts a pair keeps when the largest template has maxparts
-// parts: every pair of parts, at most 16 (more are counted, without history)
+// parts: every pair of parts, at most the larger of 16 and 3 maxparts (two
+// rings of 12 sectors lying flat on each other: each sector on up to three;
+// more are counted, without history)
 inline int part_contact_slots(int maxparts)
 {
-  return maxparts > 1 ? (maxparts * maxparts < 16 ? maxparts * maxparts : 16) : 0;
+  if (maxparts <= 1) return 0;
+  const int cap = 3 * maxparts > 16 ? 3 * maxparts : 16;
+  return maxparts * maxparts < cap ? maxparts * maxparts : cap;
 }
 
 // the table over nentry entries (zero: the caller fills them), its settings
