@@ -100,6 +100,38 @@ namespace {
     return r;
   }
 
+  void add_moments(RawMoments &a, const RawMoments &b)
+  {
+    a.V += b.V;
+    for (int i = 0; i < 3; ++i) {
+      a.m1[i] += b.m1[i];
+      for (int j = 0; j < 3; ++j) a.m2[i][j] += b.m2[i][j];
+    }
+  }
+
+  // the largest volume two convex parts share (exact: the hull of the
+  // corners of their Nef intersection, itself convex), over the smaller
+  // part's volume
+  double largest_shared_fraction(const std::vector<Nef> &nefs, const std::vector<Mesh> &hulls)
+  {
+    double worst = 0.0;
+    for (size_t a = 0; a < nefs.size(); ++a)
+      for (size_t b = a + 1; b < nefs.size(); ++b) {
+        const Nef both = nefs[a] * nefs[b];
+        std::vector<K::Point_3> pts;
+        for (auto v = both.vertices_begin(); v != both.vertices_end(); ++v)
+          pts.push_back(v->point());
+        if (pts.size() < 4) continue;
+        Mesh h;
+        CGAL::convex_hull_3(pts.begin(), pts.end(), h);
+        if (h.number_of_faces() < 4) continue;    // coplanar: no volume
+        const double v = mesh_moments(h).V;
+        const double vmin = std::min(mesh_moments(hulls[a]).V, mesh_moments(hulls[b]).V);
+        worst = std::max(worst, v / vmin);
+      }
+    return worst;
+  }
+
   Mat3<double> rotation_of(const Quat<double> &q)
   {
     return quat_to_mat(q);
@@ -368,22 +400,32 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
     // the union of the polyhedral parts, exactly
     RawMoments raw;
     Nef joined;
+    std::vector<Mesh> hulls;
+    std::vector<Nef> nefs;
     int npoly = 0;
     for (const auto &p : parts) {
       if (p.shape->is_ellipsoid()) continue;
       const auto pts = placed_vertices(p);
-      Mesh hull;
-      CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
-      Nef one(hull);
+      hulls.emplace_back();
+      CGAL::convex_hull_3(pts.begin(), pts.end(), hulls.back());
+      nefs.emplace_back(hulls.back());
       if (npoly++ == 0)
-        joined = one;
+        joined = nefs.back();
       else
-        joined += one;
+        joined += nefs.back();
     }
-    if (npoly > 0) {
-      if (!joined.is_simple())
+    if (npoly > 0 && !joined.is_simple()) {
+      // parts that meet face to face once their corners are rounded to
+      // doubles (the pieces of a decomposed surface, sectors turned by
+      // irrational angles) can meet in slivers that leave the union not a
+      // 2-manifold: if no two parts share more than 1e-9 of the smaller
+      // one's volume they are taken as disjoint, and their moments summed
+      const double shared = largest_shared_fraction(nefs, hulls);
+      if (!(shared <= 1e-9))
         throw ShapeError(head + ": the union of the polyhedral parts is not a 2-manifold "
                          "(parts that meet only along an edge or at a corner?)");
+      for (const auto &h : hulls) add_moments(raw, mesh_moments(h));
+    } else if (npoly > 0) {
       Mesh boundary;
       CGAL::convert_nef_polyhedron_to_polygon_mesh(joined, boundary, true);
       raw = mesh_moments(boundary);

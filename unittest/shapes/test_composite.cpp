@@ -92,6 +92,25 @@ TEST(Composite, OverlappingCubesGiveTheUnionsMassProperties)
 
 // an L of three unit cubes meeting face to face: V = 3, centroid (1/3, 1/3, 0),
 // inertia about it by the parallel-axis theorem
+// two unit cubes that meet only along an edge (centres (0,0,0) and (1,1,0)):
+// the union is no 2-manifold, but the parts share no volume, so they are a
+// rigid body of two disjoint parts: volume 2, centroid (1/2, 1/2, 0),
+// principal moments 1/3, 4/3, 4/3 (2 (1/6 + 1/4) -+ 1/2 in the xy plane,
+// 2 (1/6 + 1/2) about z)
+TEST(Composite, CubesMeetingAlongAnEdge)
+{
+  const auto t = PolyShapeTemplate::composite({part(cube(), 0, 0, 0), part(cube(), 1, 1, 0)}, "edge");
+  expect_rel(t.volume(), 2.0, 1e-14, "volume");
+  EXPECT_FALSE(t.decomposed());
+  EXPECT_EQ(t.nparts(), 2);
+  EXPECT_NEAR(t.input_centroid()[0], 0.5, 1e-15);
+  EXPECT_NEAR(t.input_centroid()[1], 0.5, 1e-15);
+  const auto m = moments(t);
+  expect_rel(m[0], 1.0 / 3, 1e-13, "moment");
+  expect_rel(m[1], 4.0 / 3, 1e-13, "moment");
+  expect_rel(m[2], 4.0 / 3, 1e-13, "moment");
+}
+
 TEST(Composite, LShapeOfTouchingCubes)
 {
   const auto t = PolyShapeTemplate::composite(
@@ -256,6 +275,38 @@ std::string l_prism_stl(const std::string &path, int drop = -1)
   return path;
 }
 
+// a ring (genus 1): regular 12-gons of vertex radius 1 (outside) and 0.75
+// (inside), z in [-0.5, 0.5], as an ASCII STL (outward)
+std::string ring_stl(const std::string &path)
+{
+  const int n = 12;
+  auto corner = [&](double r, int k, double z) {
+    const double a = (2 * (k % n) - 1) * M_PI / n;
+    return std::array<double, 3>{r * std::cos(a), r * std::sin(a), z};
+  };
+  std::ofstream f(path);
+  f.precision(17);
+  auto add = [&](std::array<double, 3> a, std::array<double, 3> b, std::array<double, 3> c) {
+    f << " facet normal 0 0 0\n  outer loop\n";
+    for (const auto &p : {a, b, c}) f << "   vertex " << p[0] << " " << p[1] << " " << p[2] << "\n";
+    f << "  endloop\n endfacet\n";
+  };
+  f << "solid ring\n";
+  for (int k = 0; k < n; k++) {
+    const double R = 1.0, r = 0.75, h = 0.5;
+    add(corner(R, k, -h), corner(R, k + 1, -h), corner(R, k + 1, h));    // outside
+    add(corner(R, k, -h), corner(R, k + 1, h), corner(R, k, h));
+    add(corner(r, k, -h), corner(r, k, h), corner(r, k + 1, h));    // inside (the hole)
+    add(corner(r, k, -h), corner(r, k + 1, h), corner(r, k + 1, -h));
+    add(corner(r, k, h), corner(R, k, h), corner(R, k + 1, h));    // top
+    add(corner(r, k, h), corner(R, k + 1, h), corner(r, k + 1, h));
+    add(corner(r, k, -h), corner(R, k + 1, -h), corner(R, k, -h));    // bottom
+    add(corner(r, k, -h), corner(r, k + 1, -h), corner(R, k + 1, -h));
+  }
+  f << "endsolid ring\n";
+  return path;
+}
+
 }    // namespace
 
 // a non-convex surface decomposed into convex parts (CGAL convex_decomposition_3):
@@ -286,4 +337,29 @@ TEST(Composite, ConvexDecompositionOfAnLPrism)
   for (int k = 0; k < 3; k++) EXPECT_EQ(b->moments()[k], t->moments()[k]);
   EXPECT_FALSE(shape_composite_from_surface(l_prism_stl(dir + "L_open.stl", 3), 1.0, "Lo", record, err));
   EXPECT_NE(err.find("not closed"), std::string::npos) << err;
+}
+
+// a surface with a hole: the ring of 12-gons is cut into its 12 sectors; the
+// volume, principal moments and bounding radius against the closed forms
+// (prism of the polygonal annulus: area A = 3 (R^2 - r^2), polar moment
+// J = n rho^4 sin(30 deg) (2 + cos(30 deg)) / 12 per polygon, I_axis = J h,
+// I_across = J h / 2 + A h^3 / 12 for length h = 1; the farthest corner
+// sqrt(R^2 + 1/4))
+TEST(Composite, ConvexDecompositionOfARing)
+{
+  const std::string dir = ::testing::TempDir();
+  std::string record, err;
+  auto t = shape_composite_from_surface(ring_stl(dir + "ring.stl"), 1.0, "ring", record, err);
+  ASSERT_TRUE(t) << err;
+  EXPECT_EQ(t->nparts(), 12);
+  const double A = 3.0 * (1.0 - 0.5625);
+  const double J = 12.0 * (1.0 - std::pow(0.75, 4)) * 0.5 * (2.0 + std::cos(M_PI / 6)) / 12.0;
+  expect_rel(t->volume(), A, 1e-13, "volume");
+  for (int i = 0; i < 3; i++) EXPECT_NEAR(t->input_centroid()[i], 0.0, 1e-14);
+  const auto m = moments(*t);    // principal, ascending: two across, one along the axis
+  expect_rel(m[0], J / 2 + A / 12, 1e-13, "moment across");
+  expect_rel(m[1], J / 2 + A / 12, 1e-13, "moment across");
+  expect_rel(m[2], J, 1e-13, "moment along the axis");
+  expect_rel(t->radius(), std::sqrt(1.25), 1e-14, "bounding radius");
+  EXPECT_NEAR(t->union_fraction(), 1.0, 1e-14);
 }
