@@ -380,7 +380,8 @@ POLYDEM_FN void add_part_force(PairContactResult<T> &r, const ContactForce<T> &c
 }
 
 // Bit k of bits is set where part k of body (n parts; a convex body: itself)
-// has a bounding sphere that meets other's, scaled by 1 + 1e-9.
+// has a bounding sphere, and a composite's part also a bounding box
+// (ShapePart mid, half), that meets other's bounding sphere scaled by 1 + 1e-9.
 template <typename T>
 POLYDEM_FN void part_reach_bits(const PosedShape<T> &body, const PosedShape<T> &other, int n,
                                 unsigned &bits)
@@ -396,8 +397,83 @@ POLYDEM_FN void part_reach_bits(const PosedShape<T> &body, const PosedShape<T> &
       r = body.s * p.view->radius;
     }
     const T reach = (r + ro) * T(1.000000001);
-    if (norm2(x - other.x) < reach * reach) bits |= 1u << k;
+    if (!(norm2(x - other.x) < reach * reach)) continue;
+    if (view_is_composite(v)) {
+      // the other sphere against the part's box (in the part's frame, unit
+      // scale): a box out of its reach holds a part out of it
+      const ShapePart<T> &p = v.parts[k];
+      const Vec3<T> d = other.x - x;
+      const Vec3<T> e = make_vec3(body.R.m[0][0] * d.x + body.R.m[1][0] * d.y + body.R.m[2][0] * d.z,
+                                  body.R.m[0][1] * d.x + body.R.m[1][1] * d.y + body.R.m[2][1] * d.z,
+                                  body.R.m[0][2] * d.x + body.R.m[1][2] * d.y + body.R.m[2][2] * d.z);
+      T out2 = T(0);
+      for (int i = 0; i < 3; ++i) {
+        const T u = (p.R[0][i] * e.x + p.R[1][i] * e.y + p.R[2][i] * e.z) / body.s - p.mid[i];
+        const T o = (u < T(0) ? -u : u) - p.half[i];
+        if (o > T(0)) out2 += o * o;
+      }
+      const T ru = ro / body.s * T(1.000000001);
+      if (!(out2 < ru * ru)) continue;
+    }
+    bits |= 1u << k;
   }
+}
+
+// Whether the bounding boxes of posed parts a and b (ShapePart mid, half in
+// each part's frame) are apart along one of the 15 axes of the separating
+// axis test (the 3 + 3 box axes and their 9 cross products), with a
+// relative margin of 1e-9: apart boxes hold apart parts.
+template <typename T> struct PartBox {
+  T mid[3], half[3];
+};
+
+// part k's box of a body (a composite: ShapePart's; a convex body: the cube
+// about its bounding sphere, an ellipsoid's semi-axes), unit scale
+template <typename T> POLYDEM_FN PartBox<T> part_box(const PosedShape<T> &body, int k)
+{
+  const ShapeView<T> &v = *body.view;
+  PartBox<T> r;
+  for (int i = 0; i < 3; ++i) {
+    r.mid[i] = view_is_composite(v) ? v.parts[k].mid[i] : T(0);
+    r.half[i] = view_is_composite(v) ? v.parts[k].half[i]
+                                     : (view_is_ellipsoid(v) ? v.axes[i] : v.radius);
+  }
+  return r;
+}
+
+template <typename T>
+POLYDEM_FN bool part_boxes_apart(const PosedShape<T> &a, const PartBox<T> &pa,
+                                 const PosedShape<T> &b, const PartBox<T> &pb)
+{
+  const Vec3<T> ca = a.x + a.s * matvec(a.R, make_vec3(pa.mid[0], pa.mid[1], pa.mid[2]));
+  const Vec3<T> cb = b.x + b.s * matvec(b.R, make_vec3(pb.mid[0], pb.mid[1], pb.mid[2]));
+  const T ha[3] = {a.s * pa.half[0], a.s * pa.half[1], a.s * pa.half[2]};
+  const T hb[3] = {b.s * pb.half[0], b.s * pb.half[1], b.s * pb.half[2]};
+  const Vec3<T> d = cb - ca;
+  T C[3][3], A[3][3], t[3];    // C = Ra^T Rb, A = |C|, t = Ra^T d
+  for (int i = 0; i < 3; ++i) {
+    t[i] = a.R.m[0][i] * d.x + a.R.m[1][i] * d.y + a.R.m[2][i] * d.z;
+    for (int j = 0; j < 3; ++j) {
+      C[i][j] = a.R.m[0][i] * b.R.m[0][j] + a.R.m[1][i] * b.R.m[1][j] + a.R.m[2][i] * b.R.m[2][j];
+      A[i][j] = (C[i][j] < T(0) ? -C[i][j] : C[i][j]) + T(1e-12);
+    }
+  }
+  const T m = T(1) + T(1e-9);
+  auto apart = [m](T dist, T ra, T rb) { return (dist < T(0) ? -dist : dist) > (ra + rb) * m; };
+  for (int i = 0; i < 3; ++i)    // a's axes
+    if (apart(t[i], ha[i], hb[0] * A[i][0] + hb[1] * A[i][1] + hb[2] * A[i][2])) return true;
+  for (int j = 0; j < 3; ++j)    // b's axes
+    if (apart(t[0] * C[0][j] + t[1] * C[1][j] + t[2] * C[2][j],
+              ha[0] * A[0][j] + ha[1] * A[1][j] + ha[2] * A[2][j], hb[j]))
+      return true;
+  for (int i = 0; i < 3; ++i)    // a_i x b_j
+    for (int j = 0; j < 3; ++j) {
+      const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+      if (apart(t[i2] * C[i1][j] - t[i1] * C[i2][j], ha[i1] * A[i2][j] + ha[i2] * A[i1][j],
+                hb[j1] * A[i][j2] + hb[j2] * A[i][j1]))
+        return true;
+    }
+  return false;
 }
 
 // A pair of which one or both are composites, in a table with part slots
@@ -440,6 +516,8 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
       held[bit >> 6] |= 1ull << (bit & 63);
     }
   }
+  PosedShape<T> a = A.shape, b = B.shape;
+  int posed_a = -1, posed_b = -1;
   // the part pairs in the lower tag's order, whichever body is A: slots are
   // taken in the same order on every rank (and given up alike when they run out)
   for (int idx = 0; idx < na * nb; ++idx) {
@@ -447,9 +525,16 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
     const int ikey = a_low ? ka * MAX_COMPOSITE_PARTS + kb : kb * MAX_COMPOSITE_PARTS + ka;
     const bool has_slot = (held[ikey >> 6] >> (ikey & 63)) & 1ull;
     if (!has_slot && !((reach_a >> ka) & 1u && (reach_b >> kb) & 1u)) continue;
-    const PosedShape<T> a = posed_part(A.shape, ka);
+    // a part is posed when its index changes (the outer one's once per row)
+    if (ka != posed_a) {
+      a = posed_part(A.shape, ka);
+      posed_a = ka;
+    }
+    if (kb != posed_b) {
+      b = posed_part(B.shape, kb);
+      posed_b = kb;
+    }
     {
-      const PosedShape<T> b = posed_part(B.shape, kb);
       const T key = T(1 + ikey);
       T *slot = nullptr;
       if (has_slot)
@@ -462,7 +547,7 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
       if (norm2(a.x - b.x) < reach * reach) {
         if (algebraic)
           ov.status = STATUS_OK;    // decided by the algebraic contact below
-        else
+        else if (slot || !part_boxes_apart(a, part_box(A.shape, ka), b, part_box(B.shape, kb)))
           ov = convex_overlap(a, b, ws, count, slot != nullptr);
       }
       if (ov.status != STATUS_OK) {

@@ -583,6 +583,27 @@ PolyShapeTemplate PolyShapeTemplate::composite(const std::vector<InputPart> &par
     b.q[3] = q.z;
   }
 
+  // each contact part's bounding box in its own frame
+  for (size_t k = 0; k < body.size(); ++k) {
+    const auto &ps = *contact[k].shape;
+    if (ps.is_ellipsoid()) {
+      for (int i = 0; i < 3; ++i) {
+        body[k].mid[i] = 0.0;
+        body[k].half[i] = ps.semi_axes()[i];
+      }
+      continue;
+    }
+    for (int i = 0; i < 3; ++i) {
+      double lo = ps.vertex(0)[i], hi = lo;
+      for (int v = 1; v < ps.nverts(); ++v) {
+        lo = std::min(lo, ps.vertex(v)[i]);
+        hi = std::max(hi, ps.vertex(v)[i]);
+      }
+      body[k].mid[i] = 0.5 * (lo + hi);
+      body[k].half[i] = 0.5 * (hi - lo);
+    }
+  }
+
   auto views = std::make_shared<std::vector<ShapeView<double>>>();
   for (const auto &p : contact) {
     views->push_back(p.shape->view());

@@ -63,6 +63,11 @@ template <typename T> struct ShapePart {
   T x[3];
   T R[3][3];
   T q[4];    // R as a unit quaternion (w, x, y, z)
+  // the part's bounding box in its own frame (unit scale): centre mid,
+  // half-extents half (an ellipsoid's: its semi-axes); by default a box
+  // that holds everything (the composite template sets the real one)
+  T mid[3] = {T(0), T(0), T(0)};
+  T half[3] = {T(3e38), T(3e38), T(3e38)};
 };
 
 template <typename T> POLYDEM_FN bool view_is_composite(const ShapeView<T> &v)
