@@ -7,7 +7,8 @@ coloured by shape.
                                 [--mesh wall.stl ...]
 
 --mesh draws the edges of STL walls (ASCII or binary) as a light wireframe.
-The functions read_vtk, read_stl and draw serve other scripts (examples).
+The functions read_vtk, read_stl, read_dump, rotation, faces_colors and draw
+serve other scripts (examples).
 """
 import argparse
 import sys
@@ -60,6 +61,30 @@ def read_stl(path):
     n = int.from_bytes(data[80:84], "little")
     rec = np.frombuffer(data[84:84 + 50 * n], dtype=np.uint8).reshape(n, 50)
     return rec[:, 12:48].copy().view("<f4").reshape(n, 3, 3).astype(float)
+
+
+def read_dump(path):
+    """Positions (n x 3) and quaternions (n x 4, w i j k) of a dump custom
+    file of columns id x y z qw qi qj qk (its last snapshot's rows)."""
+    rows, take = [], False
+    for line in open(path):
+        if line.startswith("ITEM:"):
+            take = line.startswith("ITEM: ATOMS")
+            if take:
+                rows = []
+            continue
+        if take:
+            rows.append([float(v) for v in line.split()])
+    a = np.array(rows)
+    return a[:, 1:4], a[:, 4:8]
+
+
+def rotation(q):
+    """Rotation matrix (body to lab) of a quaternion w, i, j, k."""
+    w, x, y, z = q / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
 def faces_colors(pts, polys, cell, color_by="shape"):

@@ -13,36 +13,19 @@ the solid fraction per 1 mm layer and the bulk value between 2 arm lengths
 above the floor and 2 arm lengths below the bed's surface (where the
 profile falls to half its plateau).
 """
-import argparse
+import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from render_vtk import read_dump, rotation  # noqa: E402,F401
+from packing_grid import bed_main, bulk_of_profile  # noqa: E402
 
 L = 0.03        # periodic box side [m]
 S = 0.002       # scale: arms 6 x 2 x 2 mm
 ARM = 3 * S     # cross size [m]
 RB = S * np.sqrt(1.5 ** 2 + 0.5 ** 2 + 0.5 ** 2)    # bounding radius
-
-
-def read_dump(path):
-    rows, take = [], False
-    for line in open(path):
-        if line.startswith("ITEM: ATOMS"):
-            take = True
-            continue
-        if line.startswith("ITEM:"):
-            take = False
-            continue
-        if take:
-            rows.append([float(v) for v in line.split()])
-    a = np.array(rows)
-    return a[:, 1:4], a[:, 4:8]
-
-
-def rotation(q):
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
 def inside(pts, x, q):
@@ -76,21 +59,14 @@ def profile(x, q, zmax, per_mm=20000, seed=1):
 
 
 def bulk(zs, phi):
-    plateau = np.median(phi[(zs > 2 * ARM) & (phi > 0.5 * phi.max())])
-    top = zs[np.flatnonzero(phi > 0.5 * plateau).max()]
-    sel = (zs > 2 * ARM) & (zs < top - 2 * ARM)
-    return phi[sel].mean(), phi[sel].std() / np.sqrt(max(1, sel.sum() // 3)), top, sel.sum()
+    return bulk_of_profile(zs, phi, 2 * ARM, 3)
+
+
+def describe(x, mean, err, top, n):
+    return (f"{len(x)} crosses; bed surface (half plateau) {1e3 * top:.1f} mm; bulk solid fraction "
+            f"{mean:.4f} +- {err:.4f} over {n} layers of 1 mm; mean over the bed "
+            f"{len(x) * 7 * S ** 3 / (L * L * top):.4f}")
 
 
 if __name__ == "__main__":
-    ap = argparse.ArgumentParser()
-    ap.add_argument("dump", nargs="?", default="pack.120000.txt")
-    ap.add_argument("--profile", default="phi_z.txt")
-    a = ap.parse_args()
-    x, q = read_dump(a.dump)
-    zs, phi = profile(x, q, x[:, 2].max() + RB)
-    np.savetxt(a.profile, np.column_stack([zs, phi]), header="z [m]  solid fraction", fmt="%.6g")
-    mean, err, top, n = bulk(zs, phi)
-    print(f"{len(x)} crosses; bed surface (half plateau) {1e3 * top:.1f} mm; bulk solid fraction "
-          f"{mean:.4f} +- {err:.4f} over {n} layers of 1 mm; mean over the bed "
-          f"{len(x) * 7 * S ** 3 / (L * L * top):.4f}")
+    bed_main("pack.120000.txt", profile, RB, bulk, describe)

@@ -8,18 +8,13 @@ solid fraction per 1 mm layer (analyze.py) and the bulk value.
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # noqa: E402
+import numpy as np
 
 here = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(here, "..", "..", "tools"))
-sys.path.insert(0, here)
+sys.path[:0] = [os.path.join(here, "..", "..", "tools"), here]
+from analyze import ARM, bulk, profile, read_dump  # noqa: E402
+from packing_grid import bed_figure  # noqa: E402
 from render_vtk import read_vtk  # noqa: E402
-from analyze import bulk, profile, read_dump  # noqa: E402
 
 vtk = sys.argv[1] if len(sys.argv) > 1 else "pack.120000.vtk"
 dump = sys.argv[2] if len(sys.argv) > 2 else "pack.120000.txt"
@@ -43,29 +38,8 @@ for k, p in enumerate(polys):
 x, q = read_dump(dump)
 zs, phi = profile(x, q, x[:, 2].max() + 0.004)
 mean, err, top, nl = bulk(zs, phi)
-
-fig = plt.figure(figsize=(11, 5.2))
-a = fig.add_subplot(1, 2, 1, projection="3d")
-a.add_collection3d(Poly3DCollection(verts, facecolors=colors, edgecolors=(0, 0, 0, 0.25),
-                                    linewidths=0.15))
-a.set_xlim(-0.004, 0.034)
-a.set_ylim(-0.004, 0.034)
-a.set_zlim(0, 0.038)
-a.set_box_aspect((1, 1, 1))
-a.view_init(elev=18, azim=-62)
-a.set_xlabel("x [m]")
-a.set_ylabel("y [m]")
-a.set_zlabel("z [m]")
-a.set_title(f"{len(x)} crosses settled (3 bars 6 x 2 x 2 mm each)")
-b = fig.add_subplot(1, 2, 2)
-b.plot(phi, 1e3 * zs, "-", color="tab:blue")
-b.axvline(mean, color="k", ls="--", lw=1, label=f"bulk {mean:.3f} ± {err:.3f}")
-b.axhspan(1e3 * 2 * 0.006, 1e3 * (top - 2 * 0.006), color="0.9", label="bulk layers")
-b.set_xlabel("solid fraction of the layer")
-b.set_ylabel("height z [mm]")
-b.set_xlim(0, 0.6)
-b.legend(loc="upper right")
-b.set_title("solid fraction per 1 mm layer (Monte Carlo, exact shapes)")
-fig.tight_layout()
-fig.savefig("composite_pack.png", dpi=110)
+bed_figure("composite_pack.png", verts, colors, 0.03, 0.004, 0.038, (18, -62),
+           f"{len(x)} crosses settled (3 bars 6 x 2 x 2 mm each)", zs, phi, (mean, err, top),
+           2 * ARM, 0.6, "solid fraction of the layer",
+           "solid fraction per 1 mm layer (Monte Carlo, exact shapes)")
 print(f"wrote composite_pack.png; bulk solid fraction {mean:.4f} +- {err:.4f}")

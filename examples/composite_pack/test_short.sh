@@ -9,9 +9,7 @@ set -euo pipefail
 # shellcheck source=SCRIPTDIR/../scratch.sh
 . "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
-cp "$here/bar.shape" "$here/floor.stl" .
-sed 's/^dump /# dump /' "$here/in.composite_pack" > in.short
-"$1" -in in.short -screen none -log log.short -var steps 400
+short_run "$1" in.composite_pack 400 bar.shape floor.stl
 ok=0
 grep -q "composite of 3 parts, volume 7 (0.7777777778 of the parts' sum), 5 contact parts" log.short || { echo "FAIL: the cross's volume or contact parts"; ok=1; }
 grep -q "principal moments/density 5.166666667 5.166666667 5.166666667" log.short || { echo "FAIL: the cross's moments"; ok=1; }

@@ -15,37 +15,20 @@ floor and 2 below the bed's surface (where the profile falls to half its
 plateau). Prints it with the void fraction 1 - phi and the envelope
 (cylinder) fraction phi / 0.4375.
 """
-import argparse
+import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tools"))
+from render_vtk import read_dump, rotation  # noqa: E402,F401
+from packing_grid import bed_main, bulk_of_profile  # noqa: E402
 
 L = 0.048         # periodic box side [m]
 S = 0.008         # ring outer diameter = length [m]
 RI = 0.375        # inner radius / S (wall 1/8 of the diameter)
 SOLID = 1.0 - (2 * RI) ** 2    # solid share of the ring's envelope: 0.4375
 VRING = np.pi / 4 * SOLID * S ** 3
-
-
-def read_dump(path):
-    rows, take = [], False
-    for line in open(path):
-        if line.startswith("ITEM: ATOMS"):
-            take = True
-            continue
-        if line.startswith("ITEM:"):
-            take = False
-            continue
-        if take:
-            rows.append([float(v) for v in line.split()])
-    a = np.array(rows)
-    return a[:, 1:4], a[:, 4:8]
-
-
-def rotation(q):
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
 def ring_points(n, rng):
@@ -66,24 +49,16 @@ def profile(x, q, zmax, per_ring=20000, seed=1):
 
 
 def bulk(zs, phi):
-    plateau = np.median(phi[(zs > 2 * S) & (phi > 0.5 * phi.max())])
-    top = zs[np.flatnonzero(phi > 0.5 * plateau).max()]
-    sel = (zs > 2 * S) & (zs < top - 2 * S)
-    # layers closer than a ring size are correlated: the error of the mean
-    # counts one independent value per 8 layers
-    return phi[sel].mean(), phi[sel].std() / np.sqrt(max(1, sel.sum() // 8)), top, sel.sum()
+    # layers closer than a ring size are correlated: one independent value per 8
+    return bulk_of_profile(zs, phi, 2 * S, 8)
+
+
+def describe(x, mean, err, top, n):
+    return (f"{len(x)} rings; bed surface (half plateau) {1e3 * top:.1f} mm; bulk solid fraction "
+            f"{mean:.4f} +- {err:.4f} over {n} layers of 1 mm: void fraction {1 - mean:.4f}, "
+            f"envelope fraction {mean / SOLID:.4f}; mean over the bed "
+            f"{len(x) * VRING / (L * L * top):.4f}")
 
 
 if __name__ == "__main__":
-    ap = argparse.ArgumentParser()
-    ap.add_argument("dump", nargs="?", default="pack.180000.txt")
-    ap.add_argument("--profile", default="phi_z.txt")
-    a = ap.parse_args()
-    x, q = read_dump(a.dump)
-    zs, phi = profile(x, q, x[:, 2].max() + S)
-    np.savetxt(a.profile, np.column_stack([zs, phi]), header="z [m]  solid fraction", fmt="%.6g")
-    mean, err, top, n = bulk(zs, phi)
-    print(f"{len(x)} rings; bed surface (half plateau) {1e3 * top:.1f} mm; bulk solid fraction "
-          f"{mean:.4f} +- {err:.4f} over {n} layers of 1 mm: void fraction {1 - mean:.4f}, "
-          f"envelope fraction {mean / SOLID:.4f}; mean over the bed "
-          f"{len(x) * VRING / (L * L * top):.4f}")
+    bed_main("pack.180000.txt", profile, S, bulk, describe)

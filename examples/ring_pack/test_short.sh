@@ -14,14 +14,13 @@ set -euo pipefail
 # shellcheck source=SCRIPTDIR/../scratch.sh
 . "$(dirname "$0")/../scratch.sh"    # here: this folder; scratch: removed on exit
 cd "$scratch"
-cp "$here/ring.stl" "$here/floor.stl" .
-sed 's/^dump /# dump /' "$here/in.ring_pack" > in.short
-"$1" -in in.short -screen none -log log.short -var steps 400
-ok=0
-grep -q "composite of 12 parts (convex decomposition of ring.stl), volume 1.75929188[5-7]e-07 (1 of the parts' sum), 12 contact parts" log.short || { echo "FAIL: the ring's volume or pieces"; ok=1; }
-grep -q "bounding radius 0.00572321245[5-7]" log.short || { echo "FAIL: the ring's bounding radius"; ok=1; }
-grep -q "principal moments/density 2.03832099[7-9]e-12 2.03832099[7-9]e-12 2.20006398[3-5]e-12" log.short || { echo "FAIL: the ring's moments"; ok=1; }
-grep -q "ins: 250 particle(s) inserted" log.short || { echo "FAIL: not 250 rings placed"; ok=1; }
-if grep -q "WARNING" log.short; then echo "FAIL: a warning in the log"; ok=1; fi
-grep "composite of 12 parts" log.short
-exit $ok
+short_run "$1" in.ring_pack 400 ring.stl floor.stl
+status=0
+for want in "composite of 12 parts (convex decomposition of ring.stl), volume 1.75929188[5-7]e-07 (1 of the parts' sum), 12 contact parts" \
+            "bounding radius 0.00572321245[5-7]" \
+            "principal moments/density 2.03832099[7-9]e-12 2.03832099[7-9]e-12 2.20006398[3-5]e-12" \
+            "ins: 250 particle(s) inserted"; do
+  grep -q "$want" log.short || { echo "FAIL: not in the log: $want"; status=1; }
+done
+! grep "WARNING" log.short || { echo "FAIL: a warning in the log"; status=1; }
+exit $status

@@ -347,13 +347,13 @@ TEST(Composite, ConvexDecompositionOfAnLPrism)
 // sqrt(R^2 + 1/4))
 TEST(Composite, ConvexDecompositionOfARing)
 {
-  const std::string dir = ::testing::TempDir();
-  std::string record, err;
-  auto t = shape_composite_from_surface(ring_stl(dir + "ring.stl"), 1.0, "ring", record, err);
-  ASSERT_TRUE(t) << err;
-  EXPECT_EQ(t->nparts(), 12);
   const double A = 3.0 * (1.0 - 0.5625);
   const double J = 12.0 * (1.0 - std::pow(0.75, 4)) * 0.5 * (2.0 + std::cos(M_PI / 6)) / 12.0;
+  std::string record, err;
+  const auto t =
+      shape_composite_from_surface(ring_stl(::testing::TempDir() + "ring.stl"), 1.0, "ring", record, err);
+  ASSERT_TRUE(t) << err;
+  EXPECT_EQ(t->nparts(), 12);
   expect_rel(t->volume(), A, 1e-13, "volume");
   for (int i = 0; i < 3; i++) EXPECT_NEAR(t->input_centroid()[i], 0.0, 1e-14);
   const auto m = moments(*t);    // principal, ascending: two across, one along the axis
