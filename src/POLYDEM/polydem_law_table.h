@@ -67,14 +67,12 @@ template <typename T> POLYDEM_FN int pair_history_stride(const LawTable<T> &t)
 }
 
 // keyed part contacts a pair keeps when the largest template has maxparts
-// parts: every pair of parts, at most the larger of 16 and 3 maxparts (two
-// rings of 12 sectors lying flat on each other: each sector on up to three;
-// more are counted, without history)
+// parts: every pair of parts, at most 16 (more are counted, without
+// history). A fixed cap keeps the history's size when composites with more
+// parts are defined between runs (and restart files readable).
 inline int part_contact_slots(int maxparts)
 {
-  if (maxparts <= 1) return 0;
-  const int cap = 3 * maxparts > 16 ? 3 * maxparts : 16;
-  return maxparts * maxparts < cap ? maxparts * maxparts : cap;
+  return maxparts > 1 ? (maxparts * maxparts < 16 ? maxparts * maxparts : 16) : 0;
 }
 
 // the table over nentry entries (zero: the caller fills them), its settings
