@@ -419,10 +419,7 @@ POLYDEM_FN void part_reach_bits(const PosedShape<T> &body, const PosedShape<T> &
   }
 }
 
-// Whether the bounding boxes of posed parts a and b (ShapePart mid, half in
-// each part's frame) are apart along one of the 15 axes of the separating
-// axis test (the 3 + 3 box axes and their 9 cross products), with a
-// relative margin of 1e-9: apart boxes hold apart parts.
+// a part's bounding box in its own frame, unit scale
 template <typename T> struct PartBox {
   T mid[3], half[3];
 };
@@ -441,6 +438,10 @@ template <typename T> POLYDEM_FN PartBox<T> part_box(const PosedShape<T> &body, 
   return r;
 }
 
+// Whether the bounding boxes of posed parts a and b (ShapePart mid, half in
+// each part's frame) are apart along one of the 15 axes of the separating
+// axis test (the 3 + 3 box axes and their 9 cross products), with a
+// relative margin of 1e-9: apart boxes hold apart parts.
 template <typename T>
 POLYDEM_FN bool part_boxes_apart(const PosedShape<T> &a, const PartBox<T> &pa,
                                  const PosedShape<T> &b, const PartBox<T> &pb)
@@ -477,9 +478,9 @@ POLYDEM_FN bool part_boxes_apart(const PosedShape<T> &a, const PartBox<T> &pa,
 }
 
 // A pair of which one or both are composites, in a table with part slots
-// (tab.nslot > 0): every pair of parts whose bounding spheres meet is a
-// contact of its own, with its history in the slot keyed 1 + (part of the
-// lower-tag body) x MAX_COMPOSITE_PARTS + (part of the other); the forces
+// (tab.nslot > 0): every pair of parts that may touch (part_reach_bits,
+// bounding spheres, part_boxes_apart) is a contact of its own, with its
+// history in the slot keyed 1 + (part of the lower-tag body) x MAX_COMPOSITE_PARTS + (part of the other); the forces
 // and torques are summed on the bodies. The result's geometry is that of
 // the deepest part contact with the summed volume and area (of the part
 // contacts by overlap volume; if there are none, the deepest algebraic one's,
@@ -501,8 +502,8 @@ composite_pair_contact(const PolyhedronBody<T> &A, const PolyhedronBody<T> &B,
   T deepest = T(-1), volume = T(0), area = T(0), deepest_alg = T(-1);
   bool by_volume = false;    // a part contact by overlap volume (else algebraic only)
   // the parts that can reach the other body: a part whose bounding sphere
-  // misses the other body's (which holds all its parts' corners) touches
-  // none of its parts (a bit per part; 1e-9 of margin for round-off)
+  // or box misses the other body's sphere (which holds all its parts'
+  // corners) touches none of its parts (a bit per part; 1e-9 of margin)
   unsigned reach_a = 0u, reach_b = 0u;
   part_reach_bits(A.shape, B.shape, na, reach_a);
   part_reach_bits(B.shape, A.shape, nb, reach_b);
