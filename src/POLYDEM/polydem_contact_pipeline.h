@@ -480,8 +480,9 @@ POLYDEM_FN bool part_boxes_apart(const PosedShape<T> &a, const PartBox<T> &pa,
 // A pair of which one or both are composites, in a table with part slots
 // (tab.nslot > 0): every pair of parts that may touch (part_reach_bits,
 // bounding spheres, part_boxes_apart) is a contact of its own, with its
-// history in the slot keyed 1 + (part of the lower-tag body) x MAX_COMPOSITE_PARTS + (part of the other); the forces
-// and torques are summed on the bodies. The result's geometry is that of
+// history in the slot keyed 1 + (part of the lower-tag body) x
+// MAX_COMPOSITE_PARTS + (part of the other); the forces and torques are
+// summed on the bodies. The result's geometry is that of
 // the deepest part contact with the summed volume and area (of the part
 // contacts by overlap volume; if there are none, the deepest algebraic one's,
 // its overlap length over its smallest semi-axis in vmin). A part pair
