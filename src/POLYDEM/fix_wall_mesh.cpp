@@ -400,7 +400,7 @@ double FixWallMesh::compute_scalar()
 }
 
 /* ----------------------------------------------------------------------
-   pertriangle: row = triangle (as used, after merging), columns 1-3 the
+   pertriangle: row = triangle (in the order as read and merged), columns 1-3 the
    force of the particles on it (lab frame), 4 its normal pressure
    -F . n / area (n the triangle's outward normal, lab frame)
 ------------------------------------------------------------------------- */
@@ -413,15 +413,16 @@ double FixWallMesh::compute_array(int i, int j)
                   MPI_SUM, world);
     tri_reduced = 1;
   }
-  if (j < 3) return tri_global[3 * (size_t) i + j];
+  const size_t t = (size_t) geom.tri_of_row[i];    // rows in the order as read
+  if (j < 3) return tri_global[3 * t + j];
   const auto mp = mesh_pose();
-  const double *pl = &geom.grid.plane[4 * (size_t) i];
+  const double *pl = &geom.grid.plane[4 * t];
   const auto n = polydem::matvec(mp.R, polydem::make_vec3(pl[0], pl[1], pl[2]));
-  const double *q = &geom.mesh.tri[9 * (size_t) i];
+  const double *q = &geom.mesh.tri[9 * t];
   const auto e1 = polydem::make_vec3(q[3] - q[0], q[4] - q[1], q[5] - q[2]);
   const auto e2 = polydem::make_vec3(q[6] - q[0], q[7] - q[1], q[8] - q[2]);
   const double area = 0.5 * polydem::norm(polydem::cross(e1, e2));
-  const double *f = &tri_global[3 * (size_t) i];
+  const double *f = &tri_global[3 * t];
   return -(f[0] * n.x + f[1] * n.y + f[2] * n.z) / area;
 }
 
@@ -566,6 +567,7 @@ double FixWallMesh::memory_usage()
 {
   double bytes = (double) atom->nmax * nh * sizeof(double);
   bytes += geom.mesh.tri.size() * sizeof(double);
+  bytes += (geom.regions.size() + geom.row.size() + geom.tri_of_row.size()) * sizeof(int);
   bytes += (geom.grid.plane.size() + geom.grid.box.size() + geom.grid.sphere.size()) * sizeof(double);
   bytes += (geom.grid.start.size() + geom.grid.items.size()) * sizeof(int);
   bytes += near_ref.size() * sizeof(double) + (near_count.size() + near_tri.size()) * sizeof(int) +

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace polydem {
 
@@ -88,12 +89,56 @@ void WallMesh::load(const std::string &file, const StlTransform &xf, double merg
   regions = mesh_regions(mesh.tri, cosmax, 1e-9 * diag);
   nregions = 0;
   for (size_t t = 0; t < regions.size(); t++) nregions += regions[t] >> 1 == (int) t;
+  // spatial order, in cells of the smallest automatic bin; the regions keep
+  // their values (keys of the patches and their history, as before)
+  row = spatial_order(mesh.tri, 2.0 * median_edge());
+  tri_of_row.assign(row.size(), 0);
+  std::vector<double> tri(mesh.tri.size());
+  std::vector<int> reg(regions.size());
+  for (size_t t = 0; t < row.size(); t++) {
+    const size_t o = (size_t) row[t];
+    tri_of_row[o] = (int) t;
+    std::copy(mesh.tri.begin() + 9 * o, mesh.tri.begin() + 9 * o + 9, tri.begin() + 9 * t);
+    reg[t] = regions[o];
+  }
+  mesh.tri.swap(tri);
+  regions.swap(reg);
   grid = MeshGrid();
 }
 
-double WallMesh::automatic_bin(double rmax) const
+std::vector<int> spatial_order(const std::vector<double> &tri, double cell)
 {
-  // median edge: robust when merged regions make a few very large triangles
+  const size_t n = tri.size() / 9;
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (size_t k = 0; k < tri.size(); k++) {
+    lo[k % 3] = std::min(lo[k % 3], tri[k]);
+    hi[k % 3] = std::max(hi[k % 3], tri[k]);
+  }
+  // at most 2^20 cells along each direction: the key is 3 x 20 bits
+  constexpr double CELLS = 1048575.0;
+  double h = cell;
+  for (int d = 0; d < 3; d++) h = std::max(h, (hi[d] - lo[d]) / CELLS);
+  if (!(h > 0.0)) h = 1.0;    // a single point (no zero-area triangles reach here)
+  std::vector<std::pair<unsigned long long, int>> key(n);
+  for (size_t t = 0; t < n; t++) {
+    unsigned long long k = 0;
+    for (int d = 2; d >= 0; d--) {
+      const double *p = &tri[9 * t + d];
+      const double m = std::min(p[0], std::min(p[3], p[6]));
+      const double u = std::min(CELLS, std::max(0.0, std::floor((m - lo[d]) / h)));
+      k = (k << 20) | (unsigned long long) u;
+    }
+    key[t] = {k, (int) t};
+  }
+  std::sort(key.begin(), key.end());    // ties: the order as given
+  std::vector<int> order(n);
+  for (size_t t = 0; t < n; t++) order[t] = key[t].second;
+  return order;
+}
+
+double WallMesh::median_edge() const
+{
+  // robust when merged regions make a few very large triangles
   std::vector<double> edges;
   for (int t = 0; t < ntri(); t++)
     for (int e = 0; e < 3; e++) {
@@ -101,8 +146,14 @@ double WallMesh::automatic_bin(double rmax) const
       edges.push_back(sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
                            (p[2] - q[2]) * (p[2] - q[2])));
     }
+  if (edges.empty()) return 0.0;
   std::nth_element(edges.begin(), edges.begin() + edges.size() / 2, edges.end());
-  return std::max(0.5 * rmax, 2.0 * edges[edges.size() / 2]);
+  return edges[edges.size() / 2];
+}
+
+double WallMesh::automatic_bin(double rmax) const
+{
+  return std::max(0.5 * rmax, 2.0 * median_edge());
 }
 
 bool WallMesh::set_grid(double h)

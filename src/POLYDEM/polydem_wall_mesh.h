@@ -20,6 +20,15 @@
 
 namespace polydem {
 
+// The order in which a wall keeps its triangles: by the cell (edge `cell`)
+// of their bounding box's lowest corner, cells in the bin grid's order (x
+// fastest, then y, then z), the order as given within a cell. A bin's
+// triangles then lie together in memory, whatever order the file has: a
+// query reads a few runs of adjacent triangles, not one cache line per
+// triangle (the 150k-triangle bench bowl shuffled at random cost 1.4 times
+// the bowl in row order). Returns order[new] = old.
+std::vector<int> spatial_order(const std::vector<double> &tri, double cell);
+
 // The mesh frame is the lab frame at the time the wall was defined; at time
 // t since then the mesh has moved by pose(t).
 struct MeshMotion {
@@ -51,6 +60,10 @@ class WallMesh {
   StlMesh mesh;                // the triangles in the mesh frame, after merging
   MergeStats merged;           // what coplanar merging did
   std::vector<int> regions;    // per triangle: smooth region (mesh_regions)
+  // the triangles are kept in spatial order (spatial_order); row[t] is
+  // triangle t's place in the order as read and merged (pertriangle's
+  // rows), tri_of_row the inverse
+  std::vector<int> row, tri_of_row;
   int nregions = 0;
   double diag = 0.0;           // bounding-box diagonal
   double cosmax = 1.0;         // cos(patch angle): neighbours in one smooth region
@@ -59,10 +72,12 @@ class WallMesh {
 
   // read the STL file (StlError if it cannot), merge coplanar regions
   // (tolerance merge_tol x diag; < 0: off) and find the smooth regions of
-  // the patch angle (degrees)
+  // the patch angle (degrees); the regions are found in the file's order,
+  // then the triangles are put in spatial order
   void load(const std::string &file, const StlTransform &xf, double merge_tol,
             double patch_angle_deg);
   int ntri() const { return mesh.ntri(); }
+  double median_edge() const;
   // bin edge for particles of largest bounding radius rmax: max(rmax / 2,
   // twice the median triangle edge), so that a query scans little beyond
   // the sphere's box and a bin holds a few triangles

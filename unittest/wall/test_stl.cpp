@@ -4,10 +4,12 @@
 // a brute-force search.
 #include "polydem_mesh_grid.h"
 #include "polydem_stl.h"
+#include "polydem_wall_mesh.h"
 #include "wall_meshes.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -739,4 +741,74 @@ TEST(MeshRegions, SeedAngleConnectivityAndFlips)
     for (const int k : sectors) runs += sectors.count((k + ns - 1) % ns) ? 0 : 1;
     EXPECT_EQ(runs, 1) << "region of seed " << s;
   }
+}
+
+// The wall keeps its triangles in spatial order (WallMesh::load,
+// spatial_order): a mesh read in shuffled order is stored cell by cell (cells
+// of twice the median edge, by the lowest corner of each triangle's box, x
+// fastest), the order as read within a cell; row / tri_of_row map each
+// stored triangle to its place in the file and back, and each keeps the
+// smooth region (the patch key) found in the file's order. A bowl of 40 x 40
+// cells, with a patch angle small enough to cut it into several regions.
+TEST(WallMeshOrder, ShuffledFileStoredByCell)
+{
+  const Tris ordered = bowl(0, 1, 0, 1, 0, 2.0, 40);
+  const int n = (int) ordered.size() / 9;
+  std::vector<int> perm(n);
+  for (int t = 0; t < n; t++) perm[t] = t;
+  std::mt19937 rng(7);
+  std::shuffle(perm.begin(), perm.end(), rng);
+  Tris shuffled(ordered.size());
+  for (int t = 0; t < n; t++)
+    for (int k = 0; k < 9; k++) shuffled[9 * t + k] = ordered[9 * perm[t] + k];
+  const std::string path = tmpdir() + "/shuffled_bowl.stl";
+  write_binary(path, shuffled);
+  const Tris as_read = read_stl(path, StlTransform()).tri;
+  const double cosmax = std::cos(5.0 * M_PI / 180.0);
+  WallMesh m;
+  m.load(path, StlTransform(), -1.0, 5.0);    // merge no, patch angle 5 degrees
+  ASSERT_EQ(m.ntri(), n);
+  const std::vector<int> file_regions = mesh_regions(as_read, cosmax, 1e-9 * m.diag);
+  std::set<int> keys(file_regions.begin(), file_regions.end());
+  EXPECT_GE(keys.size(), 4u);
+
+  // the cell of each stored triangle's lowest corner
+  double lo[3] = {1e300, 1e300, 1e300};
+  for (size_t k = 0; k < as_read.size(); k++) lo[k % 3] = std::min(lo[k % 3], as_read[k]);
+  const double h = 2.0 * m.median_edge();
+  auto cell = [&](int t) {
+    std::array<long, 3> c;
+    for (int d = 0; d < 3; d++) {
+      const double *p = &m.mesh.tri[9 * t + d];
+      c[2 - d] = (long) std::floor((std::min(p[0], std::min(p[3], p[6])) - lo[d]) / h);
+    }
+    return c;    // z, y, x: compared as a tuple, x fastest
+  };
+  std::vector<int> seen(n, 0);
+  for (int t = 0; t < n; t++) {
+    const int r = m.row[t];
+    ASSERT_GE(r, 0);
+    ASSERT_LT(r, n);
+    seen[r]++;
+    EXPECT_EQ(m.tri_of_row[r], t);
+    for (int k = 0; k < 9; k++) ASSERT_EQ(m.mesh.tri[9 * t + k], as_read[9 * r + k]) << t;
+    EXPECT_EQ(m.regions[t], file_regions[r]) << t;
+    if (t > 0) {
+      EXPECT_LE(cell(t - 1), cell(t)) << t;
+      if (cell(t - 1) == cell(t)) EXPECT_LT(m.row[t - 1], r) << t;
+    }
+  }
+  for (int r = 0; r < n; r++) EXPECT_EQ(seen[r], 1) << r;
+  // the stored order is local: consecutive triangles lie within a few cells
+  // (the file's order jumps across the bowl)
+  auto gap = [&](const Tris &t, int a) {
+    double s = 0.0;
+    for (int d = 0; d < 3; d++) s += std::fabs(t[9 * a + d] - t[9 * (a + 1) + d]);
+    return s;
+  };
+  double stored = 0.0, file = 0.0;
+  for (int t = 0; t + 1 < n; t++) stored += gap(m.mesh.tri, t), file += gap(as_read, t);
+  std::printf("[ stl      ] mean step between consecutive triangles: stored %.4g, file %.4g "
+              "(cell %.4g)\n", stored / (n - 1), file / (n - 1), h);
+  EXPECT_LT(stored / (n - 1), 0.1 * file / (n - 1));
 }

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -285,78 +286,92 @@ double pertri_fn()
 // round-off), every triangle under the face carries the uniform pressure
 // F_n / L^2 of the flat-wall contact (1e-9), partly covered ones in proportion
 // to the covered area, and triangles away from the face nothing, also after
-// the cuboid has moved to a place that overlaps the first in part.
+// the cuboid has moved to a place that overlaps the first in part. Rows
+// follow the file's order, also when the file lists the triangles shuffled
+// (the wall stores them in spatial order).
 TEST(WallMesh, PerTriangleForces)
 {
-  const Tris tris = flat(0, 3 * L, -L, L, 0, 12, 8);
-  const std::string stl = tmpdir() + "/pertri.stl";
-  write_ascii(stl, tris);
-  Lmp l;
-  l.cmds(pertri_scene(stl));
-  auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
-  const double Fn = pertri_fn();
-  // xc: the face's centre; each position after a run 0 (the second one
-  // overlaps the first in part: rows of the first must be cleared)
-  auto check = [&](double xc) {
-    l.cmd("run 0");
-    ASSERT_EQ(fix->size_array_rows, (int) tris.size() / 9);
-    const double x0 = xc - L / 2, x1 = x0 + L, y0 = 0.0021 - L / 2, y1 = y0 + L;
-    double sum[3] = {0, 0, 0}, pmax_err = 0, share_err = 0, outside = 0;
-    int nfull = 0, npart = 0;
-    for (int t = 0; t < fix->size_array_rows; t++) {
-      for (int c = 0; c < 3; c++) sum[c] += fix->compute_array(t, c);
-      const double *q = &tris[9 * t];
-      const double area = 0.5 * std::fabs((q[3] - q[0]) * (q[7] - q[1]) - (q[6] - q[0]) * (q[4] - q[1]));
-      // covered area: the triangle clipped to the face's rectangle (Sutherland-Hodgman in 2D)
-      std::vector<std::array<double, 2>> poly = {{q[0], q[1]}, {q[3], q[4]}, {q[6], q[7]}};
-      auto clip = [&](int axis, double v, bool keep_above) {
-        std::vector<std::array<double, 2>> out;
+  for (const bool shuffle : {false, true}) {
+    Tris tris = flat(0, 3 * L, -L, L, 0, 12, 8);
+    if (shuffle) {
+      const int n = (int) tris.size() / 9;
+      std::vector<int> perm(n);
+      for (int t = 0; t < n; t++) perm[t] = t;
+      std::mt19937 rng(3);
+      std::shuffle(perm.begin(), perm.end(), rng);
+      const Tris in = tris;
+      for (int t = 0; t < n; t++)
+        for (int k = 0; k < 9; k++) tris[9 * t + k] = in[9 * perm[t] + k];
+    }
+    const std::string stl = tmpdir() + "/pertri.stl";
+    write_ascii(stl, tris);
+    Lmp l;
+    l.cmds(pertri_scene(stl));
+    auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+    const double Fn = pertri_fn();
+    // xc: the face's centre; each position after a run 0 (the second one
+    // overlaps the first in part: rows of the first must be cleared)
+    auto check = [&](double xc) {
+      l.cmd("run 0");
+      ASSERT_EQ(fix->size_array_rows, (int) tris.size() / 9);
+      const double x0 = xc - L / 2, x1 = x0 + L, y0 = 0.0021 - L / 2, y1 = y0 + L;
+      double sum[3] = {0, 0, 0}, pmax_err = 0, share_err = 0, outside = 0;
+      int nfull = 0, npart = 0;
+      for (int t = 0; t < fix->size_array_rows; t++) {
+        for (int c = 0; c < 3; c++) sum[c] += fix->compute_array(t, c);
+        const double *q = &tris[9 * t];
+        const double area = 0.5 * std::fabs((q[3] - q[0]) * (q[7] - q[1]) - (q[6] - q[0]) * (q[4] - q[1]));
+        // covered area: the triangle clipped to the face's rectangle (Sutherland-Hodgman in 2D)
+        std::vector<std::array<double, 2>> poly = {{q[0], q[1]}, {q[3], q[4]}, {q[6], q[7]}};
+        auto clip = [&](int axis, double v, bool keep_above) {
+          std::vector<std::array<double, 2>> out;
+          for (size_t i = 0; i < poly.size(); i++) {
+            const auto &a = poly[i], &b = poly[(i + 1) % poly.size()];
+            const bool ina = keep_above ? a[axis] >= v : a[axis] <= v;
+            const bool inb = keep_above ? b[axis] >= v : b[axis] <= v;
+            if (ina) out.push_back(a);
+            if (ina != inb) {
+              const double u = (v - a[axis]) / (b[axis] - a[axis]);
+              out.push_back({a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])});
+            }
+          }
+          poly = out;
+        };
+        clip(0, x0, true), clip(0, x1, false), clip(1, y0, true), clip(1, y1, false);
+        double cov = 0.0;
         for (size_t i = 0; i < poly.size(); i++) {
           const auto &a = poly[i], &b = poly[(i + 1) % poly.size()];
-          const bool ina = keep_above ? a[axis] >= v : a[axis] <= v;
-          const bool inb = keep_above ? b[axis] >= v : b[axis] <= v;
-          if (ina) out.push_back(a);
-          if (ina != inb) {
-            const double u = (v - a[axis]) / (b[axis] - a[axis]);
-            out.push_back({a[0] + u * (b[0] - a[0]), a[1] + u * (b[1] - a[1])});
-          }
+          cov += 0.5 * (a[0] * b[1] - b[0] * a[1]);
         }
-        poly = out;
-      };
-      clip(0, x0, true), clip(0, x1, false), clip(1, y0, true), clip(1, y1, false);
-      double cov = 0.0;
-      for (size_t i = 0; i < poly.size(); i++) {
-        const auto &a = poly[i], &b = poly[(i + 1) % poly.size()];
-        cov += 0.5 * (a[0] * b[1] - b[0] * a[1]);
+        cov = std::fabs(cov);
+        const double p = fix->compute_array(t, 3);
+        if (cov > (1 - 1e-12) * area) {
+          nfull++;
+          pmax_err = std::fmax(pmax_err, std::fabs(p / (Fn / (L * L)) - 1));
+        } else if (cov > 1e-9 * area) {
+          npart++;
+          share_err = std::fmax(share_err, std::fabs(p * area - Fn * cov / (L * L)) / (Fn * area / (L * L)));
+        } else
+          outside = std::fmax(outside, std::fabs(p));
       }
-      cov = std::fabs(cov);
-      const double p = fix->compute_array(t, 3);
-      if (cov > (1 - 1e-12) * area) {
-        nfull++;
-        pmax_err = std::fmax(pmax_err, std::fabs(p / (Fn / (L * L)) - 1));
-      } else if (cov > 1e-9 * area) {
-        npart++;
-        share_err = std::fmax(share_err, std::fabs(p * area - Fn * cov / (L * L)) / (Fn * area / (L * L)));
-      } else
-        outside = std::fmax(outside, std::fabs(p));
-    }
-    std::printf("[ wall     ] pertriangle: %d triangles under the face, %d partly: pressure %.4g "
-                "(max rel. error %.2g, partly covered %.2g of a full share), sum %.6g %.6g %.6g vs "
-                "mesh force %.6g %.6g %.6g\n", nfull, npart, Fn / (L * L), pmax_err, share_err,
-                sum[0], sum[1], sum[2], fix->compute_vector(0), fix->compute_vector(1),
-                fix->compute_vector(2));
-    EXPECT_GT(nfull, 10);
-    EXPECT_GT(npart, 10);
-    EXPECT_LT(pmax_err, 1e-9);
-    EXPECT_LT(share_err, 1e-9);
-    EXPECT_EQ(outside, 0.0);
-    for (int c = 0; c < 3; c++)
-      EXPECT_NEAR(sum[c], fix->compute_vector(c), 1e-12 * Fn) << c;
-    EXPECT_NEAR(sum[2], -Fn, 1e-9 * Fn);
-  };
-  check(1.5 * L + 0.0013);
-  l.cmd("displace_atoms all move " + num(-0.6 * L) + " 0 0 units box");
-  check(0.9 * L + 0.0013);
+      std::printf("[ wall     ] pertriangle: %d triangles under the face, %d partly: pressure %.4g "
+                  "(max rel. error %.2g, partly covered %.2g of a full share), sum %.6g %.6g %.6g vs "
+                  "mesh force %.6g %.6g %.6g\n", nfull, npart, Fn / (L * L), pmax_err, share_err,
+                  sum[0], sum[1], sum[2], fix->compute_vector(0), fix->compute_vector(1),
+                  fix->compute_vector(2));
+      EXPECT_GT(nfull, 10);
+      EXPECT_GT(npart, 10);
+      EXPECT_LT(pmax_err, 1e-9);
+      EXPECT_LT(share_err, 1e-9);
+      EXPECT_EQ(outside, 0.0);
+      for (int c = 0; c < 3; c++)
+        EXPECT_NEAR(sum[c], fix->compute_vector(c), 1e-12 * Fn) << c;
+      EXPECT_NEAR(sum[2], -Fn, 1e-9 * Fn);
+    };
+    check(1.5 * L + 0.0013);
+    l.cmd("displace_atoms all move " + num(-0.6 * L) + " 0 0 units box");
+    check(0.9 * L + 0.0013);
+  }
 }
 
 // more triangles under one particle than the per-triangle record holds
