@@ -272,10 +272,12 @@ void FixWallMesh::compute_forces(bool update)
     r[2] += fz;
   };
   // near lists index local atoms: stale after exchange/sort (reneighboring)
-  // and at setup (anything may have changed between runs)
+  // and at setup (anything may have changed between runs); one list per
+  // composite part (polydem::wall_part_near), nlists per atom
   const bool stale = !update || neighbor->ago == 0;
-  if (near_cap > 0 && (stale || (int) near_count.size() < nlocal)) {
-    const size_t n = std::max<size_t>(nlocal, near_count.size());
+  const size_t nlists = near_lists();
+  if (near_cap > 0 && (stale || near_count.size() < nlists * nlocal)) {
+    const size_t n = nlists * std::max<size_t>(nlocal, near_count.size() / nlists);
     near_ref.resize(13 * n);
     near_tri.resize((size_t) near_cap * n);
     near_gap.resize((size_t) near_cap * n);
@@ -297,10 +299,10 @@ void FixWallMesh::compute_forces(bool update)
                                                        : polydem::make_vec3(0.0, 0.0, 0.0));
     polydem::WallNear<double> *pn = nullptr;
     if (near_cap > 0) {
-      nl.ref = &near_ref[13 * (size_t) i];
-      nl.count = &near_count[i];
-      nl.tri = &near_tri[(size_t) near_cap * i];
-      nl.gap = &near_gap[(size_t) near_cap * i];
+      nl.ref = &near_ref[13 * nlists * i];
+      nl.count = &near_count[nlists * i];
+      nl.tri = &near_tri[near_cap * nlists * i];
+      nl.gap = &near_gap[near_cap * nlists * i];
       pn = &nl;
     }
     // the contact (polydem_wall_pipeline.h; a composite's parts one by

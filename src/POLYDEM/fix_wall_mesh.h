@@ -90,6 +90,8 @@ class FixWallMesh : public Fix, public InsertionObstacle {
 
   double **hist;     // per atom: nh values
   int nh;            // WALL_HIST_SIZE per part of the largest template (composites)
+  // near lists per atom: one per part of the largest template
+  int near_lists() const { return nh / polydem::WALL_HIST_SIZE; }
   // the law table (polydem_law_table.h), built in init: per particle type
   // (1..ntypes) the particle's E, nu, the wall's E, nu (polyhedra), k_n
   // (ellipsoids), mu and the damping law; core, twist, k_t / k_n and

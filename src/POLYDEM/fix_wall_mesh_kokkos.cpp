@@ -73,7 +73,7 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
   Kokkos::View<int *, DeviceType> near_count;
   Kokkos::View<int **, Kokkos::LayoutRight, DeviceType> near_tri;
   Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> near_gap;
-  int near_cap;
+  int near_cap, near_lists;    // entries per list, lists per atom (composite parts)
   Kokkos::View<double *[3], DeviceType> trif;    // pertriangle: force on each triangle
   int pertri;
   polydem::WallScene<double> sc;    // grid pointers into device memory
@@ -95,7 +95,7 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     polydem::WallNear<double> *pn = nullptr;
     if (near_cap > 0) {
       nl.ref = &near_ref(i, 0);
-      nl.count = &near_count(i);
+      nl.count = &near_count(near_lists * i);
       nl.tri = &near_tri(i, 0);
       nl.gap = &near_gap(i, 0);
       nl.cap = near_cap;
@@ -210,18 +210,22 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
         (size_t) nslots * sizeof(WallWorkspace));
   }
 
-  // near lists of local atoms: stale after reneighboring and at setup
+  // near lists of local atoms: stale after reneighboring and at setup; one
+  // per composite part (polydem::wall_part_near), nlists per atom
   const bool stale = !stepping || neighbor->ago == 0;
-  if (near_cap > 0 && (stale || (int) d_near_count.extent(0) < nlocal)) {
-    const int n = std::max<int>(std::max(1, nlocal), d_near_count.extent(0));
-    if ((int) d_near_count.extent(0) < n) {
+  const int nlists = near_lists();
+  if (near_cap > 0 && (stale || (int) d_near_ref.extent(0) < nlocal)) {
+    const int n = std::max<int>(std::max(1, nlocal), d_near_ref.extent(0));
+    if ((int) d_near_ref.extent(0) < n) {
       d_near_ref = decltype(d_near_ref)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
-                                                          "wall/mesh/kk:near_ref"), n, 13);
-      d_near_count = decltype(d_near_count)("wall/mesh/kk:near_count", n);
+                                                          "wall/mesh/kk:near_ref"), n, 13 * nlists);
+      d_near_count = decltype(d_near_count)("wall/mesh/kk:near_count", (size_t) n * nlists);
       d_near_tri = decltype(d_near_tri)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
-                                                          "wall/mesh/kk:near_tri"), n, near_cap);
+                                                          "wall/mesh/kk:near_tri"), n,
+                                        (size_t) near_cap * nlists);
       d_near_gap = decltype(d_near_gap)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
-                                                          "wall/mesh/kk:near_gap"), n, near_cap);
+                                                          "wall/mesh/kk:near_gap"), n,
+                                        (size_t) near_cap * nlists);
     }
     Kokkos::deep_copy(d_near_count, polydem::NEAR_REBUILD);
   }
@@ -242,6 +246,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   k.near_tri = d_near_tri;
   k.near_gap = d_near_gap;
   k.near_cap = near_cap;
+  k.near_lists = nlists;
   k.bind_bodies(atomKK, avecKK);
   k.hist = k_hist.template view<DeviceType>();
   k.shapes = shapes.views;

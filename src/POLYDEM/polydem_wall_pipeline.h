@@ -132,10 +132,22 @@ template <typename T> POLYDEM_FN WallBody<T> wall_part_body(const WallBody<T> &b
   return r;
 }
 
+// part k's near list: a particle's lists lie one after the other (the
+// caller gives each particle room for as many lists as a composite has parts)
+template <typename T> POLYDEM_FN WallNear<T> wall_part_near(const WallNear<T> &n, int k)
+{
+  WallNear<T> r = n;
+  r.ref += 13 * k;
+  r.count += k;
+  r.tri += n.cap * k;
+  r.gap += n.cap * k;
+  return r;
+}
+
 // One particle on the mesh, convex or composite: a composite's parts are
 // particles of their own on the wall (each with WALL_HIST_SIZE values of
-// hist, part k at k WALL_HIST_SIZE; no near list), their forces summed and
-// their torques moved to the grain's centre. after(body, result, P) is
+// hist, part k at k WALL_HIST_SIZE, and near list k, wall_part_near), their
+// forces summed and their torques moved to the grain's centre. after(body, result, P) is
 // called for each convex body with its own result (the caller's tally and
 // per-triangle forces); the returned force and torque act on the grain.
 template <typename T, int MF, int ME, typename After>
@@ -156,10 +168,14 @@ wall_particle_contact(const WallBody<T> &b, const LawTable<T> &tab, const WallSc
   sum.near_built = sum.near_overflow = 0;
   for (int k = 0; k < b.shape->nparts; ++k) {
     const WallBody<T> bp = wall_part_body(b, k);
-    const WallContactResult<T> r =
-        wall_body_contact(bp, tab, sc, dt, update, hist + k * WALL_HIST_SIZE, ws, P,
-                          (WallNear<T> *) nullptr);
+    WallNear<T> nk;
+    if (near) nk = wall_part_near(*near, k);
+    const WallContactResult<T> r = wall_body_contact(bp, tab, sc, dt, update,
+                                                     hist + k * WALL_HIST_SIZE, ws, P,
+                                                     near ? &nk : (WallNear<T> *) nullptr);
     after(bp, r, P);
+    sum.near_built += r.near_built;
+    sum.near_overflow += r.near_overflow;
     sum.wf.f += r.wf.f;
     sum.wf.tau += r.wf.tau + cross(bp.pose.x - b.pose.x, r.wf.f);
     sum.wf.energy += r.wf.energy;

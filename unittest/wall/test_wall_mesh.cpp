@@ -178,80 +178,90 @@ TEST(WallMesh, MergedMeshGivesTheSameForces)
 // forces, torques and trajectories as the grid query of every step
 // (cache 0), also when lists overflow (cache 3: those particles query the
 // grid) and when they are rebuilt often (small skin); and the lists are
-// reused (far fewer builds than particle-steps).
+// reused (far fewer builds than particle-steps). The same with every second
+// grain a composite of two dodecahedra, whose parts keep a list each.
 TEST(WallMesh, NearListsGiveTheSameForces)
 {
-  const double B = 0.06, Rc = 0.06, z0 = 0.002;
-  const std::string stl = tmpdir() + "/near_bowl.stl";
-  write_binary(stl, bowl(0, B, 0, B, z0, Rc, 40));
-  const std::string data = tmpdir() + "/near_bowl.data";
-  {
-    std::mt19937_64 rng(8);
-    std::uniform_real_distribution<double> g(-1.0, 1.0);
-    std::ofstream o(data);
-    o.precision(17);
-    o << "near lists\n\n18 atoms\n1 atom types\n" << -0.5 * B << " " << 1.5 * B
-      << " xlo xhi\n" << -0.5 * B << " " << 1.5 * B << " ylo yhi\n" << -0.5 * B << " " << B
-      << " zlo zhi\n\nAtoms # polyhedron\n\n";
-    int id = 0;
-    for (int k = 0; k < 2; k++)
-      for (int j = 0; j < 3; j++)
-        for (int i = 0; i < 3; i++) {
-          const double x = (i + 0.5) * B / 3, y = (j + 0.5) * B / 3;
-          const double zb = z0 + ((x - B / 2) * (x - B / 2) + (y - B / 2) * (y - B / 2)) / (2 * Rc);
-          double q[4], qn = 0;
-          for (double &c : q) c = g(rng), qn += c * c;
-          o << ++id << " 1 1 0.004 1500 " << x << " " << y << " " << zb + 0.0058 + 0.0115 * k;
-          for (double c : q) o << " " << c / std::sqrt(qn);
-          o << "\n";
-        }
-    o << "\nVelocities\n\n";
-    for (int i = 1; i <= 18; i++)
-      o << i << " " << 0.3 * g(rng) << " " << 0.3 * g(rng) << " -0.3 " << 3e-7 * g(rng) << " "
-        << 3e-7 * g(rng) << " " << 3e-7 * g(rng) << "\n";
-  }
-  struct Out {
-    std::map<long, std::vector<double>> atoms;
-    double contacts = 0, builds = 0, overflows = 0;
-  };
-  auto run = [&](const std::string &cache) {
-    Lmp l;
-    l.cmds(scene_setup(data));
-    l.cmds({"fix w all wall/mesh " + stl + " friction 0.5 restitution 0.5 " + cache,
-            "thermo_modify lost error"});
-    auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
-    Out o;
-    for (int k = 0; k < 6; k++) {    // 1,200 steps; every run starts with fresh lists
-      l.cmd(k == 5 ? "run 700" : "run 100");
-      o.contacts = std::fmax(o.contacts, fix->compute_vector(6));
+  for (const bool composites : {false, true}) {
+    const double B = 0.06, Rc = 0.06, z0 = 0.002;
+    const std::string stl = tmpdir() + "/near_bowl.stl";
+    write_binary(stl, bowl(0, B, 0, B, z0, Rc, 40));
+    const std::string data = tmpdir() + "/near_bowl.data";
+    {
+      std::mt19937_64 rng(8);
+      std::uniform_real_distribution<double> g(-1.0, 1.0);
+      std::ofstream o(data);
+      o.precision(17);
+      o << "near lists\n\n18 atoms\n1 atom types\n" << -0.5 * B << " " << 1.5 * B
+        << " xlo xhi\n" << -0.5 * B << " " << 1.5 * B << " ylo yhi\n" << -0.5 * B << " " << B
+        << " zlo zhi\n\nAtoms # polyhedron\n\n";
+      int id = 0;
+      for (int k = 0; k < 2; k++)
+        for (int j = 0; j < 3; j++)
+          for (int i = 0; i < 3; i++) {
+            const double x = (i + 0.5) * B / 3, y = (j + 0.5) * B / 3;
+            const double zb = z0 + ((x - B / 2) * (x - B / 2) + (y - B / 2) * (y - B / 2)) / (2 * Rc);
+            double q[4], qn = 0;
+            for (double &c : q) c = g(rng), qn += c * c;
+            o << ++id << " 1 1 0.004 1500 " << x << " " << y << " " << zb + 0.0058 + 0.0115 * k;
+            for (double c : q) o << " " << c / std::sqrt(qn);
+            o << "\n";
+          }
+      o << "\nVelocities\n\n";
+      for (int i = 1; i <= 18; i++)
+        o << i << " " << 0.3 * g(rng) << " " << 0.3 * g(rng) << " -0.3 " << 3e-7 * g(rng) << " "
+          << 3e-7 * g(rng) << " " << 3e-7 * g(rng) << "\n";
     }
-    int dim;
-    o.builds = (double) *(LAMMPS_NS::bigint *) fix->extract("near_builds", dim);
-    o.overflows = (double) *(LAMMPS_NS::bigint *) fix->extract("near_overflows", dim);
-    auto *a = l.lmp->atom;
-    for (int i = 0; i < a->nlocal; i++) {
-      std::vector<double> r;
-      for (double *arr : {a->f[i], a->torque[i], a->x[i], a->v[i]})
-        for (int c = 0; c < 3; c++) r.push_back(arr[c]);
-      o.atoms[(long) a->tag[i]] = r;
+    struct Out {
+      std::map<long, std::vector<double>> atoms;
+      double contacts = 0, builds = 0, overflows = 0;
+    };
+    auto run = [&](const std::string &cache) {
+      Lmp l;
+      std::vector<std::string> setup = scene_setup(data);
+      if (composites)
+        setup.insert(setup.begin() + 7,
+                     {"polyhedron_shape comp composite part d -1.45 0 0 part d 1.45 0.3 0 quat "
+                      "0.9 0.3 0.2 0.1",
+                      "variable odd atom id%2", "group odd variable odd",
+                      "polyhedron_set group odd shape comp scale 0.0018"});
+      l.cmds(setup);
+      l.cmds({"fix w all wall/mesh " + stl + " friction 0.5 restitution 0.5 " + cache,
+              "thermo_modify lost error"});
+      auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+      Out o;
+      for (int k = 0; k < 6; k++) {    // 1,200 steps; every run starts with fresh lists
+        l.cmd(k == 5 ? "run 700" : "run 100");
+        o.contacts = std::fmax(o.contacts, fix->compute_vector(6));
+      }
+      int dim;
+      o.builds = (double) *(LAMMPS_NS::bigint *) fix->extract("near_builds", dim);
+      o.overflows = (double) *(LAMMPS_NS::bigint *) fix->extract("near_overflows", dim);
+      auto *a = l.lmp->atom;
+      for (int i = 0; i < a->nlocal; i++) {
+        std::vector<double> r;
+        for (double *arr : {a->f[i], a->torque[i], a->x[i], a->v[i]})
+          for (int c = 0; c < 3; c++) r.push_back(arr[c]);
+        o.atoms[(long) a->tag[i]] = r;
+      }
+      return o;
+    };
+    const Out ref = run("cache 0");
+    EXPECT_EQ(ref.builds, 0.0);
+    EXPECT_GE(ref.contacts, 5.0);    // most of the lower layer lies on the floor
+    for (const std::string c : {"", "cache 3", "cache/skin 0.005", "cache 200 cache/skin 0.5"}) {
+      const Out o = run(c);
+      ASSERT_EQ(o.atoms.size(), ref.atoms.size());
+      const auto [fmax, df, dx] = record_diff(ref.atoms, o.atoms);
+      std::printf("[ wall     ] near lists '%s'%s: %.0f builds in 21,600 particle-steps, %.0f "
+                  "overflows; max |d f,torque| %.3g of %.3g, max |d x,v| %.3g\n", c.c_str(),
+                  composites ? " (composites)" : "", o.builds, o.overflows, df, fmax, dx);
+      EXPECT_LE(df, 1e-12 * fmax) << c;
+      EXPECT_LE(dx, 1e-12) << c;
+      EXPECT_GT(o.builds, 18.0) << c;
+      if (c == "cache 3") EXPECT_GT(o.overflows, 0.0);
+      if (c == "") EXPECT_LT(o.builds, 0.2 * 21600) << "lists are not reused";
     }
-    return o;
-  };
-  const Out ref = run("cache 0");
-  EXPECT_EQ(ref.builds, 0.0);
-  EXPECT_GE(ref.contacts, 5.0);    // most of the lower layer lies on the floor
-  for (const std::string c : {"", "cache 3", "cache/skin 0.005", "cache 200 cache/skin 0.5"}) {
-    const Out o = run(c);
-    ASSERT_EQ(o.atoms.size(), ref.atoms.size());
-    const auto [fmax, df, dx] = record_diff(ref.atoms, o.atoms);
-    std::printf("[ wall     ] near lists '%s': %.0f builds in 21,600 particle-steps, %.0f "
-                "overflows; max |d f,torque| %.3g of %.3g, max |d x,v| %.3g\n", c.c_str(),
-                o.builds, o.overflows, df, fmax, dx);
-    EXPECT_LE(df, 1e-12 * fmax) << c;
-    EXPECT_LE(dx, 1e-12) << c;
-    EXPECT_GT(o.builds, 18.0) << c;
-    if (c == "cache 3") EXPECT_GT(o.overflows, 0.0);
-    if (c == "") EXPECT_LT(o.builds, 0.2 * 21600) << "lists are not reused";
   }
 }
 
