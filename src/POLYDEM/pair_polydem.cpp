@@ -35,7 +35,8 @@ using MathConst::MY_PI;
 // bridges (files of -3 are read with none), -5 the stiffness of ellipsoid
 // pairs in pair_style polyhedron (files of -4 are read with none), -6 the
 // viscous part of liquid bridges (files of -5 are read with none)
-static constexpr double RESTART_VERSION = -6.0;
+static constexpr double RESTART_VERSION = -7.0;
+static constexpr double RESTART_VERSION_NO_PART_SLOTS = -6.0;
 static constexpr double RESTART_VERSION_NO_VISCOUS = -5.0;
 static constexpr double RESTART_VERSION_NO_ELLIPSOID_KN = -4.0;
 static constexpr double RESTART_VERSION_NO_BRIDGE = -3.0;
@@ -256,7 +257,8 @@ void PairPolydem::choose_history_size()
   nhistory = slots > 0 ? slots * (1 + nhistory_contact) : nhistory_contact;
   const char *why = "rolling resistance (pair_coeff ... rolling mu_r) is on for some type pair "
                     "in one and off for all in the other, or composite shapes (part contacts "
-                    "kept per pair) are defined in one and not in the other";
+                    "kept per pair) are defined in one and not in the other, or their number "
+                    "(pair_style polyhedron part/slots) differs";
   if (fix_history && nhistory_fix != nhistory)
     error->all(FLERR, "pair_style {}: the contact history of the previous run keeps {} values "
                "per pair, this run needs {}: {}; define pair_style again to start without "
@@ -404,7 +406,7 @@ void PairPolydem::RestartFields::flag_as_double(int &v)
 void PairPolydem::write_restart_settings(FILE *fp)
 {
   double version = RESTART_VERSION;
-  RestartFields io(this, fp, false, 6);
+  RestartFields io(this, fp, false, 7);
   io(version);
   settings_fields(io);
   rolling_settings_fields(io);
@@ -415,13 +417,15 @@ void PairPolydem::read_restart_settings(FILE *fp)
   double version = 0.0;
   RestartFields head(this, fp, true, 0);
   head(version);
-  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_VISCOUS &&
+  if (version != RESTART_VERSION && version != RESTART_VERSION_NO_PART_SLOTS &&
+      version != RESTART_VERSION_NO_VISCOUS &&
       version != RESTART_VERSION_NO_ELLIPSOID_KN &&
       version != RESTART_VERSION_NO_BRIDGE && version != RESTART_VERSION_NO_ROLLING)
     error->all(FLERR, "pair_style {}: this restart file was written by an older POLYDEM ({}); "
                "restart it with that version, or write a data file there and start from it",
                style_name, restart_version_text());
-  restart_format = version == RESTART_VERSION                  ? 6
+  restart_format = version == RESTART_VERSION                  ? 7
+      : version == RESTART_VERSION_NO_PART_SLOTS                 ? 6
       : version == RESTART_VERSION_NO_VISCOUS                    ? 5
       : version == RESTART_VERSION_NO_ELLIPSOID_KN               ? 4
       : version == RESTART_VERSION_NO_BRIDGE                     ? 3
@@ -434,7 +438,7 @@ void PairPolydem::read_restart_settings(FILE *fp)
 void PairPolydem::write_restart(FILE *fp)
 {
   write_restart_settings(fp);
-  RestartFields io(this, fp, false, 6);
+  RestartFields io(this, fp, false, 7);
   coeff_fields(io);
 }
 

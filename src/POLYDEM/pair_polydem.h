@@ -57,6 +57,8 @@ class PairPolydem : public Pair {
     bool has_ellipsoid_kn() const { return version >= 5; }
     // ... and the viscous part of the liquid bridges (since format 6)
     bool has_bridge_viscous() const { return version >= 6; }
+    // ... and pair_style polyhedron's part/slots (since format 7)
+    bool has_part_slots() const { return version >= 7; }
 
    private:
     PairPolydem *pair;

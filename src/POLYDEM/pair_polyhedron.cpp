@@ -46,7 +46,7 @@ PairPolyhedron::PairPolyhedron(LAMMPS *lmp) :
     PairPolydem(lmp, "polyhedron", "NEIGH_HISTORY_POLY", SIZE_HISTORY, NCOUNT), youngs(nullptr),
     poisson(nullptr), matset(nullptr), restitution(nullptr), friction(nullptr),
     ellipsoid_kn(nullptr), twist(1),
-    pairset(nullptr), overlap_warn(0.05), core(1.0e-4), dt(0.0),
+    pairset(nullptr), overlap_warn(0.05), core(1.0e-4), part_slots(16), dt(0.0),
     record_stride(polydem::CR_NFIELD), contact_step(-1)
 {
   ws = std::make_unique<polydem::OverlapWorkspace<double, 128>>();
@@ -87,6 +87,7 @@ void PairPolyhedron::settings(int narg, char **arg)
   overlap_warn = 0.05;
   core = 1.0e-4;
   twist = 1;
+  part_slots = 16;
   roll_kr = polydem::RollingLaw<double>().kr;
   roll_eta = polydem::RollingLaw<double>().eta;
   for (int iarg = 0; iarg < narg; iarg += 2) {
@@ -102,6 +103,16 @@ void PairPolyhedron::settings(int narg, char **arg)
       if (!(core >= 0.0 && core < 1.0))
         error->all(FLERR, "pair_style polyhedron: core must be in [0, 1), got '{}'",
                    arg[iarg + 1]);
+      continue;
+    }
+    if (strcmp(arg[iarg], "part/slots") == 0) {
+      if (iarg + 1 >= narg) error->all(FLERR, "pair_style polyhedron: part/slots needs a value");
+      const double v = polydem_parse::numeric(FLERR, arg[iarg + 1], lmp);
+      constexpr int most = polydem::MAX_COMPOSITE_PARTS * polydem::MAX_COMPOSITE_PARTS;
+      if (!(v >= 1.0 && v <= most) || v != (int) v)
+        error->all(FLERR, "pair_style polyhedron: part/slots must be an integer from 1 to {}, "
+                   "got '{}'", most, arg[iarg + 1]);
+      part_slots = (int) v;
       continue;
     }
     if (strcmp(arg[iarg], "overlap/warn") == 0) {
@@ -283,7 +294,8 @@ void PairPolyhedron::init_style()
 
 int PairPolyhedron::history_slots()
 {
-  return polydem::part_contact_slots(PolyShapeLibrary::of(lmp, "pair_style polyhedron")->max_parts());
+  return polydem::part_contact_slots(PolyShapeLibrary::of(lmp, "pair_style polyhedron")->max_parts(),
+                                     part_slots);
 }
 
 /* ----------------------------------------------------------------------
@@ -494,7 +506,7 @@ void PairPolyhedron::report_counters()
                         "GJK non-convergences (overlap computed anyway)",
                         "overlaps beyond overlap/warn of the smaller particle volume",
                         "part contacts of composites beyond the pair's history slots (friction "
-                        "without history)",
+                        "without history; pair_style polyhedron part/slots raises the number)",
                         "contact-steps under a liquid bridge law of grains that get no bridge "
                         "(bridges act between spheres and convex polyhedra, also as parts of "
                         "composites, not on ellipsoids of unequal semi-axes)",
@@ -514,6 +526,10 @@ void PairPolyhedron::settings_fields(RestartFields &io)
   io(overlap_warn);
   io(core);
   io.flag_as_double(twist);
+  if (io.has_part_slots())
+    io(part_slots);
+  else
+    part_slots = 16;    // the fixed number of older files
 }
 
 const char *PairPolyhedron::restart_version_text() const

@@ -63,6 +63,7 @@ class PairPolyhedron : public PairPolydem, public ContactRecordSource {
   int **pairset;               // explicit e, mu for an unlike pair
   double overlap_warn;         // warn for V > overlap_warn * smaller particle volume
   double core;                 // quadratic W below V0 = core * smaller particle volume
+  int part_slots;              // part/slots: keyed part contacts per pair of composites
   double dt;
 
   std::unique_ptr<polydem::OverlapWorkspace<double, 128>> ws;

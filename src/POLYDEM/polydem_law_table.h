@@ -67,12 +67,13 @@ template <typename T> POLYDEM_FN int pair_history_stride(const LawTable<T> &t)
 }
 
 // keyed part contacts a pair keeps when the largest template has maxparts
-// parts: every pair of parts, at most 16 (more are counted, without
-// history). A fixed cap keeps the history's size when composites with more
-// parts are defined between runs (and restart files readable).
-inline int part_contact_slots(int maxparts)
+// parts: every pair of parts, at most cap (pair_style polyhedron part/slots,
+// default 16; more are counted, without history). A fixed cap keeps the
+// history's size when composites with more parts are defined between runs
+// (and restart files readable).
+inline int part_contact_slots(int maxparts, int cap = 16)
 {
-  return maxparts > 1 ? (maxparts * maxparts < 16 ? maxparts * maxparts : 16) : 0;
+  return maxparts > 1 ? (maxparts * maxparts < cap ? maxparts * maxparts : cap) : 0;
 }
 
 // the table over nentry entries (zero: the caller fills them), its settings

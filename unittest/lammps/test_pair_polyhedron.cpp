@@ -504,6 +504,10 @@ TEST(PairPolyhedron, BadCoefficients)
   l.expect_error("pair_style polyhedron bogus 1", "unknown keyword 'bogus'");
   l.expect_error("pair_style polyhedron core 1.5", "core must be in [0, 1)");
   l.expect_error("pair_style polyhedron core -1", "core must be in [0, 1)");
+  for (const char *bad : {"0", "257", "2.5"})
+    l.expect_error(std::string("pair_style polyhedron part/slots ") + bad,
+                   "part/slots must be an integer from 1 to 256");
+  l.expect_error("pair_style polyhedron part/slots", "part/slots needs a value");
   {
     Lmp a;
     a.cmds({"units si", "atom_style polyhedron", "region box block 0 1 0 1 0 1",
@@ -790,18 +794,50 @@ TEST(PairPolyhedron, EllipsoidSceneRestartIsExact)
 
 // composites (issue 29): a third of the grains a dumbbell of two cubes and a
 // sphere, their part contacts keyed in the history slots, written to and
-// read from the restart file with the composite's record
+// read from the restart file with the composite's record; also with fewer
+// slots than part pairs (part/slots 4 of 9), which the restart file keeps
 TEST(PairPolyhedron, CompositeSceneRestartIsExact)
 {
-  expect_restart_exact({"polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
-                        "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 "
-                        "quat 0.92 0.38 0 0 part ball 0 1.3 0",
-                        "variable third atom id%3==0", "group third variable third",
-                        "polyhedron_set group third shape dumb scale 0.4 density 2.0",
-                        "velocity all create 2.0 5151 loop geom", "pair_style polyhedron",
-                        "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.01 bin",
-                        "neigh_modify every 1 delay 0 check yes"},
-                       "composite");
+  for (const std::string slots : {"", " part/slots 4"})
+    expect_restart_exact({"polyhedron_shape ball ellipsoid 0.5 0.5 0.5",
+                          "polyhedron_shape dumb composite part cube -0.4 0 0 part cube 0.4 0 0 "
+                          "quat 0.92 0.38 0 0 part ball 0 1.3 0",
+                          "variable third atom id%3==0", "group third variable third",
+                          "polyhedron_set group third shape dumb scale 0.4 density 2.0",
+                          "velocity all create 2.0 5151 loop geom", "pair_style polyhedron" + slots,
+                          "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.01 bin",
+                          "neigh_modify every 1 delay 0 check yes"},
+                         slots.empty() ? "composite" : "composite, part/slots 4");
+}
+
+// Two slabs of 3 x 3 unit cubes (1.05 apart), the upper one shifted by half
+// a spacing along x and y and pressed 0.01 into the lower: 5 x 5 = 25 pairs
+// of parts overlap. With the default 16 history slots per pair, 9 part
+// contacts go without history (counted each step); part/slots 25 keeps all;
+// part/slots out of range: BadCoefficients.
+TEST(PairPolyhedron, PartSlotsKeepEveryPartContact)
+{
+  std::string slab = "polyhedron_shape slab composite";
+  for (int i = -1; i <= 1; i++)
+    for (int j = -1; j <= 1; j++) slab += " part cube " + num(1.05 * i) + " " + num(1.05 * j) + " 0";
+  auto noslot = [&](const std::string &slots) {
+    Lmp l;
+    l.cmds({"units lj", "atom_style polyhedron", "atom_modify map array", "boundary f f f",
+            "comm_modify vel yes", "region box block -5 5 -5 5 -5 5", "create_box 1 box",
+            "polyhedron_shape cube " + potentials() + "/cube.shape", slab,
+            "create_atoms 1 single 0 0 0", "create_atoms 1 single 0.525 0.525 0.99",
+            "polyhedron_set group all shape slab density 1.0", "pair_style polyhedron" + slots,
+            "pair_coeff * * 1.0e4 0.3 0.7 0.5", "neighbor 0.1 bin", "fix 1 all nve/polyhedron",
+            "timestep 1.0e-6", "run 1"});
+    int dim;
+    const double *c = (double *) l.lmp->force->pair->extract("counters", dim);
+    return c[polydem::PP_NOSLOT];
+  };
+  const double deflt = noslot(""), all = noslot(" part/slots 25");
+  std::printf("[ pair     ] slabs of 9 cubes, 25 part contacts: %.0f without history (16 slots), "
+              "%.0f with part/slots 25\n", deflt, all);
+  EXPECT_EQ(deflt, 9.0);
+  EXPECT_EQ(all, 0.0);
 }
 
 // composites (issue 29): two grains, each two dodecahedra (one turned),
