@@ -283,14 +283,92 @@ template <typename T> struct WallEllipsoidAccumulate {
   }
 };
 
+// grid visitor of a sphere's near-list build: keeps (t, e_t), e_t = d_t - r
+// (d_t the triangle's distance from the centre), for e_t <= skin; valid =
+// the smallest e_t of the triangles left out (at most the query's extra
+// reach); a full list keeps the cap smallest (near_list_keep).
+template <typename T> struct SphereNearBuild {
+  WallNear<T> *near;
+  T r, skin, valid;
+  int n;
+  POLYDEM_FN void operator()(int t, T d2)
+  {
+    const T ds = sqrt(d2) - r;
+    if (ds > skin) {
+      valid = ds < valid ? ds : valid;
+      return;
+    }
+    const float e = float(ds - T(1e-6) * fabs(ds));    // rounded down (float: < 1e-7 relative)
+    near_list_keep(*near, n, t, e, valid);
+  }
+};
+
+// Visits, through a near list, every triangle within r of the centre c of a
+// sphere that moves without regard to its rotation (an ellipsoid's bounding
+// sphere, widened by a liquid bridge's reach): the triangles the grid query
+// mesh_for_each_near(g, c, r) finds. A triangle within r of c now was
+// within r + m of the list's centre, m = |c - c_ref|, so while m stays below
+// the smallest e_t left out only the entries with e_t <= m are tested. The
+// list is rebuilt past that (from the grid, NEAR_REACH skins beyond r).
+// False if it cannot be used (overflow: more than cap triangles within
+// skin/16; a pose not finite): the caller queries the grid. The entries are
+// visited in the order of the build's grid query, so a patch can take its
+// triangles in another order than this step's grid query would: the same
+// contacts, to round-off.
+template <typename T, typename F>
+POLYDEM_FN bool wall_sphere_near_visit(const MeshGridView<T> &g, const Vec3<T> &c, T r,
+                                       WallNear<T> &near, F &acc)
+{
+  near.built = 0;
+  if (*near.count == NEAR_OVERFLOW) return false;
+  if (!(norm2(c) < T(1e300)) || !(r > T(0))) return false;
+  T amax = fabs(c.x) > fabs(c.y) ? fabs(c.x) : fabs(c.y);
+  amax = fabs(c.z) > amax ? fabs(c.z) : amax;
+  const T slack = T(1e-7) * r + T(1e-13) * amax;    // round-off of the distances [length]
+  T m = T(0);
+  if (*near.count >= 0) {
+    m = norm(c - make_vec3(near.ref[0], near.ref[1], near.ref[2])) + slack;
+    if (!(m <= near.ref[12])) *near.count = NEAR_REBUILD;
+  }
+  if (*near.count == NEAR_REBUILD) {
+    SphereNearBuild<T> b;
+    b.near = &near;
+    b.r = r;
+    b.skin = near.skin;
+    b.valid = T(NEAR_REACH) * b.skin;
+    b.n = 0;
+    near.built = 1;
+    mesh_for_each_near_dist2(g, c, r + b.valid, b);
+    if (!(b.valid * T(1 - 1e-6) >= T(0.0625) * b.skin)) {
+      *near.count = NEAR_OVERFLOW;
+      return false;
+    }
+    near.ref[12] = b.valid * T(1 - 1e-6);
+    *near.count = b.n;
+    near.ref[0] = c.x;
+    near.ref[1] = c.y;
+    near.ref[2] = c.z;
+    m = slack;
+  }
+  const int n = *near.count;
+  for (int e = 0; e < n; ++e) {
+    if (!(T(near.gap[e]) <= m)) continue;
+    const int t = near.tri[e];
+    if (mesh_tri_near(g, t, c, r)) acc(t);
+  }
+  return true;
+}
+
 // Patches of ellipsoid e (mesh frame) against the mesh: every triangle
-// within its bounding sphere (the grid; no near lists). sides: which side
-// of each triangle acts (null: the front only). reach > 0 (spheres with a
-// liquid bridge law): also the bridge patches within that gap.
+// within its bounding sphere (the grid, or the near list near when given:
+// wall_sphere_near_visit). sides: which side of each triangle acts (null:
+// the front only). reach > 0 (spheres with a liquid bridge law): also the
+// bridge patches within that gap.
 template <typename T>
 POLYDEM_FN void wall_ellipsoid_patches(const WallEllipsoid<T> &e, const MeshGridView<T> &g,
                                        T cosmax, WallPatches<T> &out,
-                                       const WallSides<T> *sides = nullptr, T reach = T(0))
+                                       const WallSides<T> *sides = nullptr, T reach = T(0),
+                                       WallNear<T> *near = nullptr)
 {
   out.n = out.noverflow = out.ndegenerate = out.nmerged = out.ntri = out.nunrecorded = 0;
   WallEllipsoidAccumulate<T> acc;
@@ -303,7 +381,9 @@ POLYDEM_FN void wall_ellipsoid_patches(const WallEllipsoid<T> &e, const MeshGrid
   acc.rb = e.ax.z > acc.rb ? e.ax.z : acc.rb;
   acc.vol = T(4.18879020478639098462) * e.ax.x * e.ax.y * e.ax.z;    // 4/3 pi abc
   acc.reach = reach > T(0) ? reach : T(0);
-  mesh_for_each_near(g, e.c, acc.rb + acc.reach, acc);
+  const T r = acc.rb + acc.reach;
+  if (!(near && near->cap > 0 && wall_sphere_near_visit(g, e.c, r, *near, acc)))
+    mesh_for_each_near(g, e.c, r, acc);
 }
 
 // ellipsoid patches -> contacts of the contact layer (lab frame)
@@ -361,7 +441,7 @@ template <typename T> POLYDEM_FN void sphere_cap_contacts(WallContacts<T> &C, T 
 }
 
 // Everything for one ellipsoid (semi-axes ax [length], lab pose x, q;
-// velocity v, spin w): pose into the mesh frame, patches, forces back in the
+// velocity v, spin w; near its near list or null): pose into the mesh frame, patches, forces back in the
 // lab frame (wall_contact_forces, the contact point's mass with the solid
 // ellipsoid's moments I_x = m (b^2 + c^2) / 5, ...). law: ellipsoid_law;
 // or, for a sphere with sphere_volume, wall_polyhedron_law (sphere_cap_contacts).
@@ -372,7 +452,7 @@ POLYDEM_FN WallForce<T>
 wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T> &mp,
                         const MeshGridView<T> &g, const ContactLaw<T> &law, T m, T dt, T cosmax,
                         int both, const Vec3<T> &v, const Vec3<T> &w, T *hist, bool update,
-                        WallPatches<T> &P, bool sphere_volume = false)
+                        WallPatches<T> &P, bool sphere_volume = false, WallNear<T> *near = nullptr)
 {
   WallEllipsoid<T> e;
   e.c = mesh_point(mp, lab.x);
@@ -380,7 +460,7 @@ wall_ellipsoid_particle(const Vec3<T> &ax, const Pose<T> &lab, const MeshPose<T>
   e.ax = ax;
   const WallSides<T> sides = wall_kept_sides(hist, mp, both);
   const T reach = law.bridge.volume > T(0) ? law.bridge.rupture : T(0);
-  wall_ellipsoid_patches(e, g, cosmax, P, &sides, reach);
+  wall_ellipsoid_patches(e, g, cosmax, P, &sides, reach, near);
   WallContacts<T> C = wall_ellipsoid_contacts(P, mp);
   if (sphere_volume) sphere_cap_contacts(C, ax.x);
   return wall_contact_forces(C, mp, law, m, ellipsoid_inverse_moments(m, ax),

@@ -107,6 +107,28 @@ template <typename T> struct WallNear {
   int built;     // out: 1 if the list was (re)built by this call
 };
 constexpr int NEAR_REACH = 8;    // query reach r + NEAR_REACH x skin at a build
+
+// a build's new entry (code, e_t) among the n kept so far: appended while
+// there is room; a full list keeps the cap smallest e_t, and valid (the
+// smallest e_t left out) takes the one dropped
+template <typename T>
+POLYDEM_FN void near_list_keep(WallNear<T> &near, int &n, int code, float e, T &valid)
+{
+  if (n < near.cap) {
+    near.tri[n] = code;
+    near.gap[n++] = e;
+    return;
+  }
+  int kmax = 0;    // full: the entry with the largest e_t
+  for (int k = 1; k < n; ++k) kmax = near.gap[k] > near.gap[kmax] ? k : kmax;
+  if (near.gap[kmax] > e) {
+    valid = T(near.gap[kmax]) < valid ? T(near.gap[kmax]) : valid;
+    near.tri[kmax] = code;
+    near.gap[kmax] = e;
+  } else {
+    valid = T(e) < valid ? T(e) : valid;
+  }
+}
 constexpr int NEAR_REBUILD = -1;
 constexpr int NEAR_OVERFLOW = -2;
 

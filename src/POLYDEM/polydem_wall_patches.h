@@ -503,20 +503,7 @@ template <typename T, int MF, int ME> struct WallNearBuild {
     const float e = float(gap * T(1 - 1e-6));    // float rounding is < 1e-7 relative
     const T margin = T(1e-9) * r + T(1e-12) * (fabs(c.x) + fabs(c.y) + fabs(c.z));
     const int code = sqrt(d2) + (reach - r) + margin < r ? -1 - t : t;
-    if (n < near->cap) {
-      near->tri[n] = code;
-      near->gap[n++] = e;
-      return;
-    }
-    int kmax = 0;    // full: the entry with the largest e_t
-    for (int k = 1; k < n; ++k) kmax = near->gap[k] > near->gap[kmax] ? k : kmax;
-    if (near->gap[kmax] > e) {
-      valid = T(near->gap[kmax]) < valid ? T(near->gap[kmax]) : valid;
-      near->tri[kmax] = code;
-      near->gap[kmax] = e;
-    } else {
-      valid = T(e) < valid ? T(e) : valid;
-    }
+    near_list_keep(*near, n, code, e, valid);
   }
 };
 

@@ -82,7 +82,7 @@ POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const La
   const T V = sv.volume * s * s * s;
   const T dts = update ? dt : T(0);
   r.near_built = r.near_overflow = 0;
-  if (b.axes.x > T(0)) {    // an ellipsoid: the grid query (no near list, no workspace)
+  if (b.axes.x > T(0)) {    // an ellipsoid: its bounding sphere's near list (no workspace)
     const Vec3<T> ax = make_vec3(s * b.axes.x, s * b.axes.y, s * b.axes.z);
     // spheres of a volume-law scene by their cap volume; other ellipsoids
     // by the linear law (LawEntry::kn)
@@ -94,8 +94,18 @@ POLYDEM_FN WallContactResult<T> wall_body_contact(const WallBody<T> &b, const La
       law.bridge.R = T(2) * ax.x;
     else
       law.bridge.volume = T(0);
+    if (near) {
+      T rb = ax.x > ax.y ? ax.x : ax.y;
+      rb = ax.z > rb ? ax.z : rb;
+      near->skin = sc.near_skin * rb;
+      near->built = 0;
+    }
     r.wf = wall_ellipsoid_particle(ax, b.pose, sc.mp, sc.grid, law, b.m, dts, sc.cosmax, sc.both,
-                                   b.v, b.w, hist, update, P, cap);
+                                   b.v, b.w, hist, update, P, cap, near);
+    if (near) {
+      r.near_built = near->built;
+      r.near_overflow = near->built && *near->count == NEAR_OVERFLOW;
+    }
   } else {
     if (near) {
       near->skin = sc.near_skin * sv.radius * s;

@@ -179,10 +179,13 @@ TEST(WallMesh, MergedMeshGivesTheSameForces)
 // (cache 0), also when lists overflow (cache 3: those particles query the
 // grid) and when they are rebuilt often (small skin); and the lists are
 // reused (far fewer builds than particle-steps). The same with every second
-// grain a composite of two dodecahedra, whose parts keep a list each.
+// grain a composite of two dodecahedra, whose parts keep a list each, and
+// with every second grain a sphere (an ellipsoid's list: its bounding
+// sphere's triangles).
 TEST(WallMesh, NearListsGiveTheSameForces)
 {
-  for (const bool composites : {false, true}) {
+  for (const std::string mix : {"", "composites", "spheres"}) {
+    const bool composites = mix == "composites";
     const double B = 0.06, Rc = 0.06, z0 = 0.002;
     const std::string stl = tmpdir() + "/near_bowl.stl";
     write_binary(stl, bowl(0, B, 0, B, z0, Rc, 40));
@@ -225,6 +228,10 @@ TEST(WallMesh, NearListsGiveTheSameForces)
                       "0.9 0.3 0.2 0.1",
                       "variable odd atom id%2", "group odd variable odd",
                       "polyhedron_set group odd shape comp scale 0.0018"});
+      if (mix == "spheres")
+        setup.insert(setup.begin() + 7,
+                     {"polyhedron_shape ball ellipsoid 0.5 0.5 0.5", "variable odd atom id%2",
+                      "group odd variable odd", "polyhedron_set group odd shape ball scale 0.009"});
       l.cmds(setup);
       l.cmds({"fix w all wall/mesh " + stl + " friction 0.5 restitution 0.5 " + cache,
               "thermo_modify lost error"});
@@ -255,7 +262,7 @@ TEST(WallMesh, NearListsGiveTheSameForces)
       const auto [fmax, df, dx] = record_diff(ref.atoms, o.atoms);
       std::printf("[ wall     ] near lists '%s'%s: %.0f builds in 21,600 particle-steps, %.0f "
                   "overflows; max |d f,torque| %.3g of %.3g, max |d x,v| %.3g\n", c.c_str(),
-                  composites ? " (composites)" : "", o.builds, o.overflows, df, fmax, dx);
+                  mix.empty() ? "" : (" (" + mix + ")").c_str(), o.builds, o.overflows, df, fmax, dx);
       EXPECT_LE(df, 1e-12 * fmax) << c;
       EXPECT_LE(dx, 1e-12) << c;
       EXPECT_GT(o.builds, 18.0) << c;
