@@ -312,9 +312,10 @@ template <typename T> struct SphereNearBuild {
 // list is rebuilt past that (from the grid, NEAR_REACH skins beyond r).
 // False if it cannot be used (overflow: more than cap triangles within
 // skin/16; a pose not finite): the caller queries the grid. The entries are
-// visited in the order of the build's grid query, so a patch can take its
-// triangles in another order than this step's grid query would: the same
-// contacts, to round-off.
+// visited in the order of the build's grid query, which is this step's
+// unless the query's bins have shifted since: then a patch may be named by
+// another of its facets (its first), as the grid query's own order does
+// from step to step.
 template <typename T, typename F>
 POLYDEM_FN bool wall_sphere_near_visit(const MeshGridView<T> &g, const Vec3<T> &c, T r,
                                        WallNear<T> &near, F &acc)
