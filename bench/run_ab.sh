@@ -7,7 +7,9 @@
 # Suite "walls": wall_mesh/in.floor on the flat 10k floor and on the curved
 # 10k and 150k bowls (cache 128) instead. Suite "kk": the dense case plain,
 # -sf kk with newton pair off and with newton on (one thread each), and the
-# /kk runs' cost relative to plain within each binary.
+# /kk runs' cost relative to plain within each binary (-sf kk with newton
+# pair off against plain with newton pair off, as both then compute the pairs
+# across periodic images twice).
 # Prints microseconds per particle-step (CPU time) of each run and the ratio
 # B/A of the medians.
 #   bash bench/run_ab.sh lmpA lmpB [rounds] [default|walls|kk]
@@ -59,7 +61,7 @@ floor() {    # lmp which name [args]: 225 dodecahedra on the 10k floor
 
 cases="dense densekk floor"
 [ "$suite" = walls ] && cases="floor10k bowl10k bowl150k"
-[ "$suite" = kk ] && cases="dense densekk densekkon floor floorkk"
+[ "$suite" = kk ] && cases="dense densenoff densekk densekkon floor floorkk"
 for r in $(seq "$rounds"); do
   for which in A B; do
     lmp=${!which}
@@ -69,7 +71,10 @@ for r in $(seq "$rounds"); do
     fi
     dense dense
     dense densekk -k on -sf kk -pk kokkos newton off
-    if [ "$suite" = kk ]; then dense densekkon -k on -sf kk -pk kokkos newton on; fi
+    if [ "$suite" = kk ]; then
+      dense densenoff -var newton off
+      dense densekkon -k on -sf kk -pk kokkos newton on
+    fi
     floor floor
     if [ "$suite" = kk ]; then floor floorkk -k on -sf kk; fi
   done
@@ -83,10 +88,11 @@ for case in $cases; do
 done
 if [ "$suite" = kk ]; then
   for which in A B; do
-    for case in densekk densekkon floorkk; do
-      p=$(echo "${res[${case%%kk*}_$which]}" | median)
+    for pair in densekk:densenoff densekkon:dense floorkk:floor; do
+      case=${pair%%:*}
+      p=$(echo "${res[${pair##*:}_$which]}" | median)
       k=$(echo "${res[${case}_$which]}" | median)
-      printf "%s: %-9s / plain = %.3f (medians)\n" "$which" "$case" "$(echo "$k / $p" | bc -l)"
+      printf "%s: %-9s / %-9s = %.3f (medians)\n" "$which" "$case" "${pair##*:}" "$(echo "$k / $p" | bc -l)"
     done
   done
 fi
