@@ -17,13 +17,10 @@
 # Environment: POLYDEM_JOBS (default 2), CXX (default c++).
 set -euo pipefail
 {
-if [ $# -ne 2 ]; then
-  echo "usage: $0 CACHE_DIR openmp|tsan" >&2
-  exit 2
-fi
-here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-mkdir -p "$1"
-cache=$(cd "$1" && pwd)
+# here, cache (CACHE_DIR, absolute): kokkos-cache.sh
+kokkos_cache_usage="CACHE_DIR openmp|tsan"
+# shellcheck source=SCRIPTDIR/kokkos-cache.sh
+. "$(dirname "${BASH_SOURCE[0]}")/kokkos-cache.sh" "$@"
 variant=$2
 jobs=${POLYDEM_JOBS:-2}
 cxx=$(command -v "${CXX:-c++}")

@@ -50,3 +50,47 @@ debian_mirror() {
   fi
   printf '%s\n' "${mirror%/}"
 }
+
+# private_apt_init NAME TYPE DIR SUITE: an apt configuration of its own under
+# DIR/.apt: one sources file of TYPE (deb or deb-src) for SUITE of
+# debian_mirror's archive, signed by Debian's archive keyring, its own lists
+# and cache, an empty dpkg status (so that the system's sources, cache, locks
+# and installed packages play no part); then apt-get update. NAME: the calling
+# script, for messages. Returns 1 where the keyring or the archive is missing.
+private_apt_init() {
+  keyring=/usr/share/keyrings/debian-archive-keyring.gpg
+  if [ ! -r "$keyring" ]; then
+    echo "$1: $keyring missing (apt-get install debian-archive-keyring)" >&2
+    return 1
+  fi
+  mirror=$(debian_mirror "$1") || return 1
+  private_apt_dir=$3/.apt
+  sources=polydem.sources
+  [ "$2" = deb-src ] && sources=polydem-src.sources
+  mkdir -p "$private_apt_dir/sources.list.d" "$private_apt_dir/lists/partial" \
+    "$private_apt_dir/cache/archives/partial"
+  cat > "$private_apt_dir/sources.list.d/$sources" << EOF
+Types: $2
+URIs: $mirror
+Suites: $4
+Components: main
+Signed-By: $keyring
+EOF
+  echo "$1: apt-get update (private $2 list: $mirror $4)" >&2
+  private_apt -q update >&2
+}
+
+# private_apt ARGS...: apt-get ARGS with private_apt_init's configuration
+# (as root without apt's _apt sandbox user, which cannot write into a user's
+# directory)
+private_apt() {
+  if [ "$(id -u)" = 0 ]; then
+    set -- -o APT::Sandbox::User=root "$@"
+  fi
+  apt-get -o Dir::Etc::SourceList=/dev/null \
+    -o Dir::Etc::SourceParts="$private_apt_dir/sources.list.d" \
+    -o Dir::State::Lists="$private_apt_dir/lists" \
+    -o Dir::State::status=/dev/null \
+    -o Dir::Cache="$private_apt_dir/cache" \
+    -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache= "$@"
+}

@@ -27,10 +27,8 @@ destdir=$2
 shift 2
 pkgs="$*"    # Debian package names: no blanks
 
-# debian_mirror: POLYDEM_DEBIAN_MIRROR or the system's own archive URI
+# private_apt_init, private_apt: an apt of our own (debian-archive-uri.sh)
 . "$(dirname "$0")/debian-archive-uri.sh"
-mirror=$(debian_mirror fetch-debian-deb) || exit 1
-keyring=/usr/share/keyrings/debian-archive-keyring.gpg
 
 mkdir -p "$destdir"
 destdir=$(cd "$destdir" && pwd)
@@ -40,38 +38,13 @@ if [ -f "$destdir/.fetched" ] && [ "$(cat "$destdir/.fetched")" = "$want" ]; the
   echo "$destdir/root"
   exit 0
 fi
-if [ ! -r "$keyring" ]; then
-  echo "fetch-debian-deb: $keyring missing (apt-get install debian-archive-keyring)" >&2
-  exit 1
-fi
-
-apt_dir="$destdir/.apt"
-mkdir -p "$apt_dir/sources.list.d" "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/debs"
-cat > "$apt_dir/sources.list.d/polydem.sources" << EOF
-Types: deb
-URIs: $mirror
-Suites: $suite
-Components: main
-Signed-By: $keyring
-EOF
-# Dir::State::status=/dev/null: resolve against an empty dpkg database, so
-# the system's installed packages play no part
-set -- -o Dir::Etc::SourceList=/dev/null \
-  -o Dir::Etc::SourceParts="$apt_dir/sources.list.d" \
-  -o Dir::State::Lists="$apt_dir/lists" \
-  -o Dir::State::status=/dev/null \
-  -o Dir::Cache="$apt_dir/cache" \
-  -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=
-if [ "$(id -u)" = 0 ]; then
-  set -- "$@" -o APT::Sandbox::User=root
-fi
-
-echo "fetch-debian-deb: apt-get update (private deb list: $mirror $suite)" >&2
-apt-get "$@" -q update >&2
+private_apt_init fetch-debian-deb deb "$destdir" "$suite" || exit 1
+apt_dir=$private_apt_dir
+mkdir -p "$apt_dir/debs"
 rm -f "$apt_dir/debs/"*.deb
 echo "fetch-debian-deb: apt-get download $pkgs ($suite)" >&2
 # shellcheck disable=SC2086
-(cd "$apt_dir/debs" && apt-get "$@" -q download $pkgs) >&2
+(cd "$apt_dir/debs" && private_apt -q download $pkgs) >&2
 
 rm -rf "$destdir/root"
 mkdir -p "$destdir/root"

@@ -31,10 +31,8 @@ destdir=$3
 
 suite=${POLYDEM_DEBIAN_SUITE:-bookworm}
 
-# debian_mirror: POLYDEM_DEBIAN_MIRROR or the system's own archive URI
+# private_apt_init, private_apt: an apt of our own (debian-archive-uri.sh)
 . "$(dirname "$0")/debian-archive-uri.sh"
-mirror=$(debian_mirror fetch-debian-source) || exit 1
-keyring=/usr/share/keyrings/debian-archive-keyring.gpg
 
 # upstream version: drop the epoch and the Debian revision
 upver=${version#*:}
@@ -63,43 +61,13 @@ if [ -f "$stamp" ] && [ -n "$(list_origs)" ]; then
   exit 0
 fi
 
-if [ ! -r "$keyring" ]; then
-  echo "fetch-debian-source: $keyring missing (apt-get install debian-archive-keyring)" >&2
-  exit 1
-fi
-
-apt_dir="$destdir/.apt"
-mkdir -p "$apt_dir/sources.list.d" "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial"
-cat > "$apt_dir/sources.list.d/polydem-src.sources" <<EOF
-Types: deb-src
-URIs: $mirror
-Suites: $suite
-Components: main
-Signed-By: $keyring
-EOF
-
-# Dir::Cache keeps apt from writing (or locking) the system cache; apt's own
-# locks on the private directories serialise concurrent runs on one DESTDIR;
-# APT::Sandbox::User=root avoids the _apt user, which cannot write into a
-# user's directory when we run as root.
-set -- \
-  -o Dir::Etc::SourceList=/dev/null \
-  -o Dir::Etc::SourceParts="$apt_dir/sources.list.d" \
-  -o Dir::State::Lists="$apt_dir/lists" \
-  -o Dir::Cache="$apt_dir/cache" \
-  -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=
-
-if [ "$(id -u)" = 0 ]; then
-  set -- "$@" -o APT::Sandbox::User=root
-fi
-
-echo "fetch-debian-source: apt-get update (private deb-src list: $mirror $suite)" >&2
-apt-get "$@" -q update >&2
+private_apt_init fetch-debian-source deb-src "$destdir" "$suite" || exit 1
+apt_dir=$private_apt_dir
 
 echo "fetch-debian-source: apt-get source --download-only ${pkg}=${version}" >&2
 rc=0
 aptlog="$apt_dir/source.log"
-(cd "$destdir" && apt-get "$@" -q source --download-only "${pkg}=${version}" > "$aptlog" 2>&1) || rc=$?
+(cd "$destdir" && private_apt -q source --download-only "${pkg}=${version}" > "$aptlog" 2>&1) || rc=$?
 cat "$aptlog" >&2
 
 if [ -z "$(list_origs)" ]; then
