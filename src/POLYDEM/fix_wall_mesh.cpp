@@ -43,7 +43,7 @@ FixWallMesh::FixWallMesh(LAMMPS *lmp, int narg, char **arg) :
     wall_mu(-1.0), wall_mur(-1.0), wall_coh(-1.0), servo_ivar(-1), core(1.0e-4), patch_angle(20.0), twosided(1), twist(1), depth_warn(0.25),
     overlap_warn(0.05), elapsed(0.0), hist(nullptr),
     ellipsoids(0), reduced(0), avec(nullptr), near_cap(128), near_skin(0.02), near_builds(0),
-    near_builds_all(0), near_overflows_all(0), near_builds_run(0), pertri(0), tri_reduced(0)
+    near_builds_all(0), near_overflows_all(0), near_lists_held(0), near_builds_run(0), pertri(0), tri_reduced(0)
 {
   if (narg < 4) error->all(FLERR, "fix wall/mesh: expected 'fix ID group wall/mesh file.stl ...'");
   file = arg[3];
@@ -273,11 +273,18 @@ void FixWallMesh::compute_forces(bool update)
   };
   // near lists index local atoms: stale after exchange/sort (reneighboring)
   // and at setup (anything may have changed between runs); one list per
-  // composite part (polydem::wall_part_near), nlists per atom
+  // composite part (polydem::wall_part_near), as many as atom i's template
+  // has parts from near_first[i] on (none for atoms outside the group)
+  avec->views(views);
   const bool stale = !update || neighbor->ago == 0;
-  const size_t nlists = near_lists();
-  if (near_cap > 0 && (stale || near_count.size() < nlists * nlocal)) {
-    const size_t n = nlists * std::max<size_t>(nlocal, near_count.size() / nlists);
+  if (near_cap > 0 && (stale || near_first.size() != (size_t) nlocal + 1)) {
+    near_first.resize(nlocal + 1);
+    near_first[0] = 0;
+    for (int i = 0; i < nlocal; i++)
+      near_first[i + 1] = near_first[i] +
+          ((mask[i] & groupbit) ? polydem::near_lists_of(views[atom->pshape[i]]) : 0);
+    const size_t n = near_first[nlocal];
+    near_lists_held = (bigint) n;
     near_ref.resize(13 * n);
     near_tri.resize((size_t) near_cap * n);
     near_gap.resize((size_t) near_cap * n);
@@ -286,7 +293,6 @@ void FixWallMesh::compute_forces(bool update)
   polydem::WallNear<double> nl;
   nl.cap = near_cap;
   polydem::WallTally<double> sum;
-  avec->views(views);
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     // gather: atom i with its template and semi-axes (0: a polyhedron)
@@ -299,10 +305,11 @@ void FixWallMesh::compute_forces(bool update)
                                                        : polydem::make_vec3(0.0, 0.0, 0.0));
     polydem::WallNear<double> *pn = nullptr;
     if (near_cap > 0) {
-      nl.ref = &near_ref[13 * nlists * i];
-      nl.count = &near_count[nlists * i];
-      nl.tri = &near_tri[near_cap * nlists * i];
-      nl.gap = &near_gap[near_cap * nlists * i];
+      const size_t l0 = near_first[i];
+      nl.ref = near_ref.data() + 13 * l0;
+      nl.count = near_count.data() + l0;
+      nl.tri = near_tri.data() + near_cap * l0;
+      nl.gap = near_gap.data() + near_cap * l0;
       pn = &nl;
     }
     // the contact (polydem_wall_pipeline.h; a composite's parts one by
@@ -562,6 +569,7 @@ void *FixWallMesh::extract(const char *name, int &dim)
   dim = 0;
   if (strcmp(name, "near_builds") == 0) return &near_builds_all;
   if (strcmp(name, "near_overflows") == 0) return &near_overflows_all;
+  if (strcmp(name, "near_lists") == 0) return &near_lists_held;
   return nullptr;
 }
 
@@ -573,6 +581,6 @@ double FixWallMesh::memory_usage()
   bytes += (geom.grid.plane.size() + geom.grid.box.size() + geom.grid.sphere.size()) * sizeof(double);
   bytes += (geom.grid.start.size() + geom.grid.items.size()) * sizeof(int);
   bytes += near_ref.size() * sizeof(double) + (near_count.size() + near_tri.size()) * sizeof(int) +
-      near_gap.size() * sizeof(float);
+      near_gap.size() * sizeof(float) + near_first.size() * sizeof(size_t);
   return bytes;
 }

@@ -90,8 +90,6 @@ class FixWallMesh : public Fix, public InsertionObstacle {
 
   double **hist;     // per atom: nh values
   int nh;            // WALL_HIST_SIZE per part of the largest template (composites)
-  // near lists per atom: one per part of the largest template
-  int near_lists() const { return nh / polydem::WALL_HIST_SIZE; }
   // the law table (polydem_law_table.h), built in init: per particle type
   // (1..ntypes) the particle's E, nu, the wall's E, nu (polyhedra), k_n
   // (ellipsoids), mu and the damping law; core, twist, k_t / k_n and
@@ -117,12 +115,14 @@ class FixWallMesh : public Fix, public InsertionObstacle {
   // per local atom, valid until the next reneighboring (plain fix; /kk has its own)
   int near_cap;
   double near_skin;
+  std::vector<size_t> near_first;    // atom i's lists: near_first[i] .. near_first[i + 1] - 1
   std::vector<double> near_ref;
   std::vector<int> near_count, near_tri;
   std::vector<float> near_gap;
   std::vector<polydem::ShapeView<double>> views;    // the templates', per step
   bigint near_builds;    // lists built (statistics, this rank)
   bigint near_builds_all, near_overflows_all;    // all ranks, since the fix was defined (post_run)
+  bigint near_lists_held;    // lists this rank holds (one per part of its particles in the group)
   bigint near_builds_run;    // near_builds at the start of the run
   // per-triangle forces (keyword pertriangle): force on each triangle this
   // step, this rank (3 per triangle, lab frame), and summed over ranks

@@ -44,6 +44,22 @@ template <class V, class S> void upload(V &d, const std::vector<S> &h, const cha
    one kernel, so that it stays in the thread's cache
 ------------------------------------------------------------------------- */
 
+// the first near list of each local atom (exclusive prefix sum of the lists
+// its template keeps, polydem::near_lists_of; none outside the group), and
+// after the last atom the total
+template <class DeviceType> struct NearFirstScan {
+  typename ArrayTypes<DeviceType>::t_int_1d_randomread mask, pshape;
+  Kokkos::View<polydem::ShapeView<double> *, DeviceType> shapes;
+  Kokkos::View<size_t *, DeviceType> first;
+  int groupbit, n;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, size_t &sum, const bool final) const
+  {
+    if (final) first(i) = sum;
+    if (mask(i) & groupbit) sum += polydem::near_lists_of(shapes(pshape(i)));
+    if (final && i == n - 1) first(n) = sum;
+  }
+};
+
 // pertriangle: shares of the patch forces go to their triangles (atomics:
 // particles on different threads touch the same triangle)
 template <class DeviceType> struct TriAdd {
@@ -69,11 +85,11 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
   Kokkos::View<double *[3], DeviceType> axes;    // ellipsoids' semi-axes (0: polyhedron)
   polydem::LawTable<double> laws;                // entries on the device
   Kokkos::View<char *, DeviceType> workspace;
-  Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> near_ref;
-  Kokkos::View<int *, DeviceType> near_count;
-  Kokkos::View<int **, Kokkos::LayoutRight, DeviceType> near_tri;
-  Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> near_gap;
-  int near_cap, near_lists;    // entries per list, lists per atom (composite parts)
+  Kokkos::View<size_t *, DeviceType> near_first;    // atom i's first list
+  Kokkos::View<double *, DeviceType> near_ref;
+  Kokkos::View<int *, DeviceType> near_count, near_tri;
+  Kokkos::View<float *, DeviceType> near_gap;
+  int near_cap;    // entries per list
   Kokkos::View<double *[3], DeviceType> trif;    // pertriangle: force on each triangle
   int pertri;
   polydem::WallScene<double> sc;    // grid pointers into device memory
@@ -94,10 +110,11 @@ template <class DeviceType> struct WallMeshKernel : PolyBodyViews<DeviceType> {
     polydem::WallNear<double> nl;
     polydem::WallNear<double> *pn = nullptr;
     if (near_cap > 0) {
-      nl.ref = &near_ref(i, 0);
-      nl.count = &near_count(near_lists * i);
-      nl.tri = &near_tri(i, 0);
-      nl.gap = &near_gap(i, 0);
+      const size_t l0 = near_first(i);
+      nl.ref = &near_ref(13 * l0);
+      nl.count = &near_count(l0);
+      nl.tri = &near_tri(near_cap * l0);
+      nl.gap = &near_gap(near_cap * l0);
       nl.cap = near_cap;
       pn = &nl;
     }
@@ -211,21 +228,35 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   }
 
   // near lists of local atoms: stale after reneighboring and at setup; one
-  // per composite part (polydem::wall_part_near), nlists per atom
+  // per composite part (polydem::wall_part_near), atom i's from
+  // d_near_first(i) on
   const bool stale = !stepping || neighbor->ago == 0;
-  const int nlists = near_lists();
-  if (near_cap > 0 && (stale || (int) d_near_ref.extent(0) < nlocal)) {
-    const int n = std::max<int>(std::max(1, nlocal), d_near_ref.extent(0));
-    if ((int) d_near_ref.extent(0) < n) {
-      d_near_ref = decltype(d_near_ref)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
-                                                          "wall/mesh/kk:near_ref"), n, 13 * nlists);
-      d_near_count = decltype(d_near_count)("wall/mesh/kk:near_count", (size_t) n * nlists);
-      d_near_tri = decltype(d_near_tri)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
-                                                          "wall/mesh/kk:near_tri"), n,
-                                        (size_t) near_cap * nlists);
-      d_near_gap = decltype(d_near_gap)(Kokkos::view_alloc(Kokkos::WithoutInitializing,
-                                                          "wall/mesh/kk:near_gap"), n,
-                                        (size_t) near_cap * nlists);
+  if (near_cap > 0 && (stale || near_first_n != nlocal)) {
+    if ((int) d_near_first.extent(0) < nlocal + 1)
+      d_near_first = Kokkos::View<size_t *, DeviceType>("wall/mesh/kk:near_first", nlocal + 1);
+    NearFirstScan<DeviceType> scan;
+    scan.mask = atomKK->k_mask.view<DeviceType>();
+    scan.pshape = avecKK->k_pshape.view<DeviceType>();
+    scan.shapes = shapes.views;
+    scan.first = d_near_first;
+    scan.groupbit = groupbit;
+    scan.n = nlocal;
+    size_t n = 0;
+    Kokkos::parallel_scan(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, nlocal),
+                          scan, n);
+    near_first_n = nlocal;
+    near_lists_held = (bigint) n;
+    if (d_near_count.extent(0) < std::max<size_t>(1, n)) {
+      const size_t room = std::max<size_t>(1, n + n / 5);    // grows with the atoms
+      d_near_ref = decltype(d_near_ref)(
+          Kokkos::view_alloc(Kokkos::WithoutInitializing, "wall/mesh/kk:near_ref"), 13 * room);
+      d_near_count = decltype(d_near_count)("wall/mesh/kk:near_count", room);
+      d_near_tri = decltype(d_near_tri)(
+          Kokkos::view_alloc(Kokkos::WithoutInitializing, "wall/mesh/kk:near_tri"),
+          (size_t) near_cap * room);
+      d_near_gap = decltype(d_near_gap)(
+          Kokkos::view_alloc(Kokkos::WithoutInitializing, "wall/mesh/kk:near_gap"),
+          (size_t) near_cap * room);
     }
     Kokkos::deep_copy(d_near_count, polydem::NEAR_REBUILD);
   }
@@ -241,12 +272,12 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
     k.trif = d_trif;
   }
   tri_reduced = 0;
+  k.near_first = d_near_first;
   k.near_ref = d_near_ref;
   k.near_count = d_near_count;
   k.near_tri = d_near_tri;
   k.near_gap = d_near_gap;
   k.near_cap = near_cap;
-  k.near_lists = nlists;
   k.bind_bodies(atomKK, avecKK);
   k.hist = k_hist.template view<DeviceType>();
   k.shapes = shapes.views;

@@ -61,11 +61,13 @@ template <class DeviceType> class FixWallMeshKokkos : public FixWallMesh {
   Kokkos::View<polydem::LawEntry<double> *, DeviceType> d_laws;
   polydem::LawTable<double> d_laws_table;
   Kokkos::View<char *, DeviceType> d_workspace;
-  // near lists (keyword cache), per local atom
-  Kokkos::View<double **, Kokkos::LayoutRight, DeviceType> d_near_ref;
-  Kokkos::View<int *, DeviceType> d_near_count;
-  Kokkos::View<int **, Kokkos::LayoutRight, DeviceType> d_near_tri;
-  Kokkos::View<float **, Kokkos::LayoutRight, DeviceType> d_near_gap;
+  // near lists (keyword cache): atom i's from d_near_first(i) on, one per
+  // part of its template; d_near_first for near_first_n local atoms
+  Kokkos::View<size_t *, DeviceType> d_near_first;
+  int near_first_n = -1;
+  Kokkos::View<double *, DeviceType> d_near_ref;
+  Kokkos::View<int *, DeviceType> d_near_count, d_near_tri;
+  Kokkos::View<float *, DeviceType> d_near_gap;
   Kokkos::View<double *[3], DeviceType> d_trif;    // pertriangle
   int nslots;
 

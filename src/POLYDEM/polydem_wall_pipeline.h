@@ -142,8 +142,15 @@ template <typename T> POLYDEM_FN WallBody<T> wall_part_body(const WallBody<T> &b
   return r;
 }
 
+// the near lists a particle of this template keeps: one per part of a
+// composite, else one
+template <typename T> POLYDEM_FN int near_lists_of(const ShapeView<T> &v)
+{
+  return v.nparts > 0 ? v.nparts : 1;
+}
+
 // part k's near list: a particle's lists lie one after the other (the
-// caller gives each particle room for as many lists as a composite has parts)
+// caller gives each particle room for near_lists_of(its template) lists)
 template <typename T> POLYDEM_FN WallNear<T> wall_part_near(const WallNear<T> &n, int k)
 {
   WallNear<T> r = n;

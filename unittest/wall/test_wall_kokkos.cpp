@@ -133,3 +133,37 @@ TEST(WallKokkos, WarningsAsPlain)
   EXPECT_NE(p.find("overlap/warn"), std::string::npos);
   EXPECT_EQ(p, k);
 }
+
+// The near lists are sized by each particle's own parts (polydem::
+// near_lists_of): with a template of three disjoint parts defined and every
+// second grain of the 18 using it, the wall keeps 9 x 3 + 9 = 36 lists (one
+// for each convex grain, not three), and 9 when it acts on the convex grains
+// only; plain and /kk alike.
+TEST(WallKokkos, NearListsOnePerPart)
+{
+  const std::string box = tmpdir() + "/kk_box.stl";
+  write_binary(box, closed_box(0.06, 5));
+  std::vector<std::vector<std::string>> variants = {{}};
+  if (polydem_test::has_kokkos()) variants.push_back(KK);
+  for (const auto &extra : variants)
+    for (const std::string group : {"all", "even"}) {
+      KkScene sc = scene();
+      sc.setup.insert(sc.setup.begin() + 7,
+                      {"polyhedron_shape tri composite part d -3 0 0 part d 3 0 0 part d 0 3 0",
+                       "variable odd atom id%2", "group odd variable odd",
+                       "group even subtract all odd",
+                       "polyhedron_set group odd shape tri scale 0.001"});
+      Lmp l(extra);
+      l.cmds(sc.setup);
+      l.cmds({"fix w " + group + " wall/mesh " + box, "run 0"});
+      ASSERT_EQ(l.lmp->atom->natoms, 18);
+      auto *fix = l.lmp->modify->fix[l.lmp->modify->find_fix("w")];
+      int dim;
+      const auto *held = (const LAMMPS_NS::bigint *) fix->extract("near_lists", dim);
+      ASSERT_NE(held, nullptr);
+      const LAMMPS_NS::bigint want = group == "all" ? 36 : 9;
+      EXPECT_EQ(*held, want) << fix->style << " on " << group;
+      l.cmd("run 20");    // the lists in use: rebuilt at each reneighboring, same count
+      EXPECT_EQ(*held, want) << fix->style << " on " << group;
+    }
+}
