@@ -5,7 +5,10 @@
 #   - the second revolution's torque balance (mill_balance.py: the mean
 #     torque on the drum = M g x_cm - dL/T_rev) closes within 1e-4 (full run:
 #     at most 1.3e-5);
-#   - the power draw is within 50-100 mW (full run: 68-77 mW).
+#   - the power draw is within 50-100 mW (full run: 68-77 mW);
+# then in.bond -var ore 1 (the 3-D mill with ore) for 5,000 steps (the ore
+# falling into the ball charge, about 5 s): 324 balls and 336 ore grains, no
+# warning (its time step is below the flat-face stability limit), none lost.
 # Usage: test_short.sh LMP
 set -euo pipefail
 # shellcheck source=SCRIPTDIR/../scratch.sh
@@ -32,3 +35,14 @@ if not 0.05 < power < 0.10:
     print("FAIL: power draw outside 50-100 mW"); ok = False
 sys.exit(0 if ok else 1)
 PY
+cp "$here/drum_3d.stl" .
+sed 's/^dump /# dump /' "$here/in.bond" > in.bond_short
+"$1" -in in.bond_short -screen none -log log.bond_short -var pot "$here/../../potentials" \
+  -var ore 1 -var nrev 0.05
+status=0
+grep -q "Created 324 atoms" log.bond_short || { echo "FAIL: not 324 balls"; status=1; }
+grep -q "Created 336 atoms" log.bond_short || { echo "FAIL: not 336 ore grains"; status=1; }
+grep -q "Loop time of .* for 5000 steps with 660 atoms" log.bond_short ||
+  { echo "FAIL: the run did not end with 660 grains after 5000 steps"; status=1; }
+! grep "WARNING" log.bond_short || { echo "FAIL: a warning in the 3-D mill's log"; status=1; }
+exit $status
