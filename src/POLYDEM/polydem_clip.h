@@ -55,6 +55,8 @@ struct ClipWorkspace {
   T qu[MAX_POLY], qv[MAX_POLY], qz[MAX_POLY];    // Sutherland-Hodgman ping-pong
   T key[MAX_POLY];                               // sort keys of the section
   unsigned char behind[MaxFaces];                // faces with a vertex behind the plane
+  int low[MaxEdges];      // the vertices on or behind the plane, in vertex order
+  int cross[MaxEdges];    // the section's edges (i << 16) | j (i < j), sorted
 };
 
 template <typename T, int MaxFaces = MAX_TEMPLATE_FACES, int MaxEdges = 3 * MAX_TEMPLATE_VERTS>
@@ -203,7 +205,7 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
     ws.vv[i] = dot(r, e2);
     ws.uv[i] = 1;
   };
-  int nbehind = 0;
+  int nbehind = 0, nlow = 0;
   for (int i = 0; i < sv.nverts; ++i) {
     const Vec3<T> r = rel(i);
     ws.vs[i] = sx + dot(r, nw);
@@ -214,6 +216,7 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
     ws.uv[i] = 0;
     if (ws.vs[i] <= T(0)) {
       in_plane(i, r);
+      ws.low[nlow++] = i;
       if (ws.vs[i] < T(0)) ++nbehind;
     }
   }
@@ -224,16 +227,45 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
   // the triangle in that frame (CCW seen from the front)
   const T ou = dot(d0, e1), ov = dot(d0, e2);
   const T tu[3] = {-ou, l1 - ou, dot(e2r, e1) - ou}, tv[3] = {-ov, -ov, dot(e2r, e2) - ov};
-  // --- section polygon: template edges crossing the plane (Algorithm VII)
+  // --- section polygon: template edges crossing the plane (Algorithm VII),
+  // in the template's edge order. With the vertex adjacency, from the
+  // vertices on or behind the plane only: their neighbours' (u, v) (the
+  // faces' loops below use them), and the edges with one end behind and the
+  // other not, sorted as the edge list is (i < j, lexicographic); else a
+  // scan of every edge. The same points in the same order either way.
+  int ncross = 0;
+  if (sv.vadj) {
+    for (int b = 0; b < nlow; ++b) {
+      const int u = ws.low[b];
+      const bool ub = ws.vs[u] < T(0);
+      for (int k = sv.vadj[u]; k < sv.vadj[u + 1]; ++k) {
+        const int w = sv.vadj[k];
+        if (!ws.uv[w]) in_plane(w, rel(w));
+        if (ub && !(ws.vs[w] < T(0)))
+          ws.cross[ncross++] = u < w ? (u << 16) | w : (w << 16) | u;
+      }
+    }
+    for (int a = 1; a < ncross; ++a) {    // a handful: insertion sort
+      const int key = ws.cross[a];
+      int b = a - 1;
+      for (; b >= 0 && ws.cross[b] > key; --b) ws.cross[b + 1] = ws.cross[b];
+      ws.cross[b + 1] = key;
+    }
+  } else {
+    for (int k = 0; k < sv.nedges; ++k) {
+      const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+      const T si = ws.vs[i], sj = ws.vs[j];
+      if (si > T(0) && sj > T(0)) continue;
+      if (!ws.uv[i]) in_plane(i, rel(i));
+      if (!ws.uv[j]) in_plane(j, rel(j));
+      if ((si < T(0)) != (sj < T(0))) ws.cross[ncross++] = (i << 16) | j;
+    }
+  }
   int n = 0;
   T mu = T(0), mv = T(0);
-  for (int k = 0; k < sv.nedges; ++k) {
-    const int i = sv.edges[2 * k], j = sv.edges[2 * k + 1];
+  for (int c = 0; c < ncross; ++c) {
+    const int i = ws.cross[c] >> 16, j = ws.cross[c] & 0xffff;
     const T si = ws.vs[i], sj = ws.vs[j];
-    if (si > T(0) && sj > T(0)) continue;
-    if (!ws.uv[i]) in_plane(i, rel(i));
-    if (!ws.uv[j]) in_plane(j, rel(j));
-    if ((si < T(0)) == (sj < T(0))) continue;
     const T t = si / (si - sj);
     ws.pu[n] = ws.vu[i] + t * (ws.vu[j] - ws.vu[i]);
     ws.pv[n] = ws.vv[i] + t * (ws.vv[j] - ws.vv[i]);
@@ -302,10 +334,22 @@ POLYDEM_FN ClipResult<T> polyhedron_triangle(const PosedShape<T> &a, const Trian
   // faces, and the triangles of a vertex name all its faces), else per face
   if (sv.dual != nullptr) {
     for (int f = 0; f < sv.nfaces; ++f) ws.behind[f] = 0;
-    for (int t = 0; t < sv.dual[0]; ++t) {
-      const int *q = sv.dual + 1 + DUAL_SEED_STRIDE_K * t;
-      if (ws.vs[q[6]] < T(0)) ws.behind[q[0]] = ws.behind[q[1]] = ws.behind[q[2]] = 1;
-    }
+    if (sv.vadj) {
+      // the fans of the vertices behind (dual_fan_first), not every triangle
+      for (int b = 0; b < nlow; ++b) {
+        const int v = ws.low[b];
+        if (!(ws.vs[v] < T(0))) continue;
+        const int t0 = dual_fan_first(sv, v), t1 = t0 + sv.vadj[v + 1] - sv.vadj[v] - 2;
+        for (int t = t0; t < t1; ++t) {
+          const int *q = sv.dual + 1 + DUAL_SEED_STRIDE_K * t;
+          ws.behind[q[0]] = ws.behind[q[1]] = ws.behind[q[2]] = 1;
+        }
+      }
+    } else
+      for (int t = 0; t < sv.dual[0]; ++t) {
+        const int *q = sv.dual + 1 + DUAL_SEED_STRIDE_K * t;
+        if (ws.vs[q[6]] < T(0)) ws.behind[q[0]] = ws.behind[q[1]] = ws.behind[q[2]] = 1;
+      }
   } else {
     for (int f = 0; f < sv.nfaces; ++f) {
       bool any = false;
