@@ -563,6 +563,24 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     }
     near.ref[12] = b.valid * T(1 - 1e-6);    // excluded triangles: e_t > m
     *near.count = b.n;
+    // The list serves while m <= ref[12], and the centre moves less than m:
+    // a kept triangle whose distance d_t from the centre here is below r by
+    // more than that (and the round-off margin of the build's test) passes
+    // every step's sphere test, so it is kept as -1 - t too and the steps
+    // skip that test for it (a particle at rest on a fine mesh: most of its
+    // list). The same triangles reach the candidates either way.
+    {
+      const T margin = T(1e-9) * r + T(1e-12) * (fabs(a.x.x) + fabs(a.x.y) + fabs(a.x.z));
+      const T lim = r - near.ref[12] - margin;
+      for (int e = 0; e < b.n && lim > T(0); ++e) {
+        const int t = near.tri[e];
+        if (t < 0) continue;
+        const T *q = g.tri + 9 * t;
+        const T dd = point_triangle_dist2(a.x, make_vec3(q[0], q[1], q[2]),
+                                          make_vec3(q[3], q[4], q[5]), make_vec3(q[6], q[7], q[8]));
+        if (sqrt(dd) < lim) near.tri[e] = -1 - t;
+      }
+    }
     near.ref[0] = a.x.x;
     near.ref[1] = a.x.y;
     near.ref[2] = a.x.z;
