@@ -53,7 +53,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         // more than the round-off of these distances, so does every vertex,
         // the part behind is empty (separated() needs no dist[]), and the
         // scan below would find none either.
-        ws->vlow = support_index_points(ws->verts, sv.nverts, sv.vadj,
+        ws->vlow = support_index_points_inl(ws->verts, sv.nverts, sv.vadj,
                                         make_vec3(-pl[0], -pl[1], -pl[2]), ws->vlow);
         const Vec3<T> v = wall_vert(ws->vlow);
         const T h = pl[0] * v.x + pl[1] * v.y + pl[2] * v.z - pl[3];
@@ -451,7 +451,7 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
   const T other = both ? sd * hc - T(WALL_SIDE_TOL) * r : T(1e300);
   // the vertex nearest the plane: a support search along -n (climbing the
   // template's edges from the previous triangle's answer, where vadj is set)
-  vstart = support_index_points(ws.verts, nv, vadj, make_vec3(-pl[0], -pl[1], -pl[2]), vstart);
+  vstart = support_index_points_inl(ws.verts, nv, vadj, make_vec3(-pl[0], -pl[1], -pl[2]), vstart);
   const T *vm = ws.verts + 3 * vstart;
   const T hmin = pl[0] * vm[0] + pl[1] * vm[1] + pl[2] * vm[2] - pl[3];
   if (hmin > T(0)) return hmin < other ? hmin : other;
