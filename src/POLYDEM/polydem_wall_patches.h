@@ -54,7 +54,7 @@ template <typename T, int MF, int ME> struct WallAccumulate {
         // the part behind is empty (separated() needs no dist[]), and the
         // scan below would find none either.
         ws->vlow = support_index_points_inl(ws->verts, sv.nverts, sv.vadj,
-                                        make_vec3(-pl[0], -pl[1], -pl[2]), ws->vlow);
+                                            make_vec3(-pl[0], -pl[1], -pl[2]), ws->vlow);
         const Vec3<T> v = wall_vert(ws->vlow);
         const T h = pl[0] * v.x + pl[1] * v.y + pl[2] * v.z - pl[3];
         const T scale = posed_radius(*a) + fabs(pl[3]) + fabs(a->x.x) + fabs(a->x.y) + fabs(a->x.z);
@@ -451,7 +451,8 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
   const T other = both ? sd * hc - T(WALL_SIDE_TOL) * r : T(1e300);
   // the vertex nearest the plane: a support search along -n (climbing the
   // template's edges from the previous triangle's answer, where vadj is set)
-  vstart = support_index_points_inl(ws.verts, nv, vadj, make_vec3(-pl[0], -pl[1], -pl[2]), vstart);
+  vstart =
+      support_index_points_inl(ws.verts, nv, vadj, make_vec3(-pl[0], -pl[1], -pl[2]), vstart);
   const T *vm = ws.verts + 3 * vstart;
   const T hmin = pl[0] * vm[0] + pl[1] * vm[1] + pl[2] * vm[2] - pl[3];
   if (hmin > T(0)) return hmin < other ? hmin : other;
@@ -473,9 +474,8 @@ POLYDEM_FN T wall_prism_gap(const MeshGridView<T> &g, int t, const WallWorkspace
 // e_t (or a lower bound of it) of the triangles left out, starting at the
 // query's extra reach S. A full list drops its largest e_t for a smaller one
 // (valid then shrinks to the dropped value), so it keeps the cap smallest.
-// A triangle that stays within r of the centre for every motion the list
-// allows (d_t + S below r by more than the round-off of the distance test)
-// is kept as -1 - t: the steps skip that test for it (wall_near_visit).
+// The entries within reach at every step are marked once valid is known
+// (wall_near_visit).
 template <typename T, int MF, int ME> struct WallNearBuild {
   const MeshGridView<T> *g;
   const WallWorkspace<T, MF, ME> *ws;
@@ -501,9 +501,7 @@ template <typename T, int MF, int ME> struct WallNearBuild {
       return;
     }
     const float e = float(gap * T(1 - 1e-6));    // float rounding is < 1e-7 relative
-    const T margin = T(1e-9) * r + T(1e-12) * (fabs(c.x) + fabs(c.y) + fabs(c.z));
-    const int code = sqrt(d2) + (reach - r) + margin < r ? -1 - t : t;
-    near_list_keep(*near, n, code, e, valid);
+    near_list_keep(*near, n, t, e, valid);
   }
 };
 
@@ -565,8 +563,8 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
     *near.count = b.n;
     // The list serves while m <= ref[12], and the centre moves less than m:
     // a kept triangle whose distance d_t from the centre here is below r by
-    // more than that (and the round-off margin of the build's test) passes
-    // every step's sphere test, so it is kept as -1 - t too and the steps
+    // more than that (and a margin for the round-off of the distances)
+    // passes every step's sphere test, so it is kept as -1 - t and the steps
     // skip that test for it (a particle at rest on a fine mesh: most of its
     // list). The same triangles reach the candidates either way.
     {
@@ -574,7 +572,6 @@ POLYDEM_FN bool wall_near_visit(const PosedShape<T> &a, const MeshGridView<T> &g
       const T lim = r - near.ref[12] - margin;
       for (int e = 0; e < b.n && lim > T(0); ++e) {
         const int t = near.tri[e];
-        if (t < 0) continue;
         const T *q = g.tri + 9 * t;
         const T dd = point_triangle_dist2(a.x, make_vec3(q[0], q[1], q[2]),
                                           make_vec3(q[3], q[4], q[5]), make_vec3(q[6], q[7], q[8]));
