@@ -284,10 +284,47 @@ template <typename T, int MF, int ME> struct WallAccumulate {
     const Vec3<T> e2 = cross(n, e1);
     // points: vertices behind the plane and edge crossings, in (e1, e2)
     ws->pvalid = 0;    // dist[] is reused below
+    // A quick refusal first (most groups of a curved mesh's flat pairs, e.g.
+    // a tube's rectangles, are not covered): a point of the part behind the
+    // plane (a vertex behind it, an edge's crossing) outside every triangle
+    // of a small group by more than 1e-3 of the particle's radius leaves
+    // part of the projection uncovered. The full test below accepts an
+    // uncovered sliver of 1e-9 of the area, which a point that far out
+    // leaves only in a needle-thin projection: the refusal agreed with the
+    // full test in every call of the short fixed bed (32,000 refusals).
+    // The triangles' edge planes, normal to the group's plane: m_e . p <=
+    // c_e inside (ngq = -1: a larger group, the full test only).
+    constexpr int NQ = 4;
+    Vec3<T> qm[NQ][3];
+    T qc[NQ][3];
+    int ngq = 0;
+    for (int c = 0; c < ws->ncand; ++c) ngq += ws->cflag[c] == 2;
+    if (ngq > NQ) ngq = -1;
+    if (ngq > 0) {
+      const T margin = T(1e-3) * posed_radius(*a);
+      ngq = 0;
+      for (int c = 0; c < ws->ncand; ++c) {
+        if (ws->cflag[c] != 2) continue;
+        const Triangle<T> t = triangle(ws->cand[c], ws->cside[c]);
+        for (int e = 0; e < 3; ++e) {
+          qm[ngq][e] = cross(t.v[(e + 1) % 3] - t.v[e], n);
+          qc[ngq][e] = dot(qm[ngq][e], t.v[e]) + margin * norm(qm[ngq][e]);
+        }
+        ++ngq;
+      }
+    }
+    auto outside = [&](const Vec3<T> &v) {
+      for (int g = 0; g < ngq; ++g)
+        if (dot(qm[g][0], v) <= qc[g][0] && dot(qm[g][1], v) <= qc[g][1] &&
+            dot(qm[g][2], v) <= qc[g][2])
+          return false;
+      return ngq > 0;
+    };
     int m = 0;
     for (int i = 0; i < sv.nverts; ++i) {
       ws->dist[i] = dot(n, wall_vert(i) - o);
       if (ws->dist[i] < T(0)) {
+        if (outside(wall_vert(i))) return false;
         ws->hu[m] = dot(wall_vert(i) - o, e1);
         ws->hv[m++] = dot(wall_vert(i) - o, e2);
       }
@@ -297,7 +334,9 @@ template <typename T, int MF, int ME> struct WallAccumulate {
       const T di = ws->dist[i], dj = ws->dist[j];
       if ((di < T(0)) == (dj < T(0))) continue;
       const Vec3<T> vi = wall_vert(i);
-      const Vec3<T> p = vi + (di / (di - dj)) * (wall_vert(j) - vi) - o;
+      const Vec3<T> x = vi + (di / (di - dj)) * (wall_vert(j) - vi);
+      if (outside(x)) return false;
+      const Vec3<T> p = x - o;
       ws->hu[m] = dot(p, e1);
       ws->hv[m++] = dot(p, e2);
     }
