@@ -14,20 +14,6 @@ common=(-var ex "$here/../../examples/fixed_bed" -var pot "$here/../../potential
 [ -f bed.data ] || "$A" -in "$here/in.fixed_bed_settled" -var mode make "${common[@]}" \
   -var mesh "$here/../../examples/fixed_bed" -var out final -var shape catalyst_cylinder \
   -var seed 1 -var n 100 -var tsettle 0.6 -log log.make -screen none
-us() {    # log -> CPU microseconds per grain-step of its (only) run
-  awk '/^Loop time of/ {t = $4; n = $9; N = $12} /% CPU use/ {c = $1 + 0}
-       END {printf "%.3f", 1e6 * t * c / 100 / (n * N)}' "$1"
-}
-declare -A res
-for r in $(seq "$rounds"); do
-  for which in A B; do
-    "${!which}" -in "$here/in.fixed_bed_settled" -var mode time "${common[@]}" \
-      -log "log.$which" -screen none
-    res[$which]+="$(us "log.$which") "
-  done
-done
-median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
-a=$(echo "${res[A]}" | median) b=$(echo "${res[B]}" | median)
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2); $(date -u)"
-printf "fixed bed  A: %s us   B: %s us   (CPU us/grain-step per run)  median B/A = %.3f\n" \
-  "${res[A]}" "${res[B]}" "$(echo "$b / $a" | bc -l)"
+# shellcheck source=../bed_ab.sh
+. "$here/../bed_ab.sh"
+bed_ab "fixed bed" "$rounds" "$here/in.fixed_bed_settled" "${common[@]}"

@@ -14,20 +14,6 @@ mkdir -p "$dir" && cd "$dir"
 [ -f silo.stl ] || python3 "$here/../../examples/silo/make_silo.py" silo.stl lid.stl
 [ -f bed.restart ] || "$A" -in "$here/in.silo_bed" -var mode make -var pot "$here/../../potentials" \
   -var mesh . -log log.make -screen none
-us() {    # log -> CPU microseconds per grain-step of its (only) run
-  awk '/^Loop time of/ {t = $4; n = $9; N = $12} /% CPU use/ {c = $1 + 0}
-       END {printf "%.3f", 1e6 * t * c / 100 / (n * N)}' "$1"
-}
-declare -A res
-for r in $(seq "$rounds"); do
-  for which in A B; do
-    "${!which}" -in "$here/in.silo_bed" -var mode time -var pot "$here/../../potentials" -var mesh . \
-      -log "log.$which" -screen none
-    res[$which]+="$(us "log.$which") "
-  done
-done
-median() { tr ' ' '\n' | grep -v '^$' | sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
-a=$(echo "${res[A]}" | median) b=$(echo "${res[B]}" | median)
-echo "machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2); $(date -u)"
-printf "silo bed  A: %s us   B: %s us   (CPU us/grain-step per run)  median B/A = %.3f\n" \
-  "${res[A]}" "${res[B]}" "$(echo "$b / $a" | bc -l)"
+# shellcheck source=../bed_ab.sh
+. "$here/../bed_ab.sh"
+bed_ab "silo bed" "$rounds" "$here/in.silo_bed" -var pot "$here/../../potentials" -var mesh .
