@@ -13,6 +13,7 @@
 #include "kokkos.h"
 #include "memory_kokkos.h"
 #include "modify.h"
+#include "polydem_launch_kokkos.h"
 
 #include <cstring>
 
@@ -876,7 +877,7 @@ int AtomVecPolyhedronKokkos::pack_comm_kokkos(const int &n, const polydem_tdual_
   on_space(atomKK, space, COMM_MASK, 0, [&](auto on) {
     PolyPackComm<typename decltype(on)::type, 0> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s,
                                                    0, dv);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
   return n * COMM_SIZE;
 }
@@ -887,7 +888,7 @@ void AtomVecPolyhedronKokkos::unpack_comm_kokkos(const int &n, const int &first,
   const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
   on_space(atomKK, space, COMM_MASK, COMM_MASK, [&](auto on) {
     PolyUnpackComm<typename decltype(on)::type, 0> f(atomKK, k_quat, buf, first);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
 }
 
@@ -904,7 +905,7 @@ int AtomVecPolyhedronKokkos::pack_comm_vel_kokkos(const int &n, const polydem_td
   on_space(atomKK, space, COMM_VEL_MASK, 0, [&](auto on) {
     PolyPackComm<typename decltype(on)::type, 1> f(atomKK, k_quat, buf, list, iswap, pbc_flag, s,
                                                    groupbit, dv);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
   return n * COMM_VEL_SIZE;
 }
@@ -915,7 +916,7 @@ void AtomVecPolyhedronKokkos::unpack_comm_vel_kokkos(const int &n, const int &fi
   const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
   on_space(atomKK, space, COMM_VEL_MASK, COMM_VEL_MASK, [&](auto on) {
     PolyUnpackComm<typename decltype(on)::type, 1> f(atomKK, k_quat, buf, first);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
 }
 
@@ -928,7 +929,7 @@ int AtomVecPolyhedronKokkos::pack_comm_self(const int &n, const polydem_tdual_se
   const ExecutionSpace space = POLYDEM_KK_FORWARD_COMM_ON_HOST ? Host : Device;
   on_space(atomKK, space, COMM_MASK, COMM_MASK, [&](auto on) {
     PolyCommSelf<typename decltype(on)::type> f(atomKK, k_quat, list, iswap, nfirst, pbc_flag, s);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
   return n * COMM_SIZE;
 }
@@ -944,7 +945,7 @@ int AtomVecPolyhedronKokkos::pack_comm_self_fused(const int &n, const DAT::tdual
   on_space(atomKK, space, COMM_MASK, COMM_MASK, [&](auto on) {
     PolyCommSelfFused<typename decltype(on)::type> f(atomKK, k_quat, list, pbc, pbc_flag,
                                                      firstrecv, sendnum_scan, g2l, domain);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
   return n * COMM_SIZE;
 }
@@ -963,7 +964,7 @@ int AtomVecPolyhedronKokkos::pack_border_kokkos(int n, polydem_tdual_sendlist k_
   on_space(atomKK, space, ALL_MASK, 0, [&](auto on) {
     PolyPackBorder<typename decltype(on)::type, 0> f(atomKK, this, buf, k_sendlist, iswap,
                                                      pbc_flag, s, 0, dv, size_border);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
   return n * size_border;
 }
@@ -975,7 +976,7 @@ void AtomVecPolyhedronKokkos::unpack_border_kokkos(const int &n, const int &firs
   while (first + n >= nmax) grow(0);
   on_space(atomKK, space, BORDER_MASK, BORDER_MASK, [&](auto on) {
     PolyUnpackBorder<typename decltype(on)::type, 0> f(atomKK, this, buf, first, size_border);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
 }
 
@@ -993,7 +994,7 @@ int AtomVecPolyhedronKokkos::pack_border_vel_kokkos(int n, polydem_tdual_sendlis
   on_space(atomKK, space, ALL_MASK, 0, [&](auto on) {
     PolyPackBorder<typename decltype(on)::type, 1> f(atomKK, this, buf, k_sendlist, iswap,
                                                      pbc_flag, s, groupbit, dv, stride);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
   return n * stride;
 }
@@ -1006,7 +1007,7 @@ void AtomVecPolyhedronKokkos::unpack_border_vel_kokkos(const int &n, const int &
   const int stride = size_border + size_velocity;
   on_space(atomKK, space, BORDER_VEL_MASK, BORDER_VEL_MASK, [&](auto on) {
     PolyUnpackBorder<typename decltype(on)::type, 1> f(atomKK, this, buf, first, stride);
-    Kokkos::parallel_for(n, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, n, f);
   });
 }
 
@@ -1024,7 +1025,7 @@ int AtomVecPolyhedronKokkos::pack_exchange_kokkos(const int &nsend, DAT::tdual_x
   }
   on_space(atomKK, space, EXCHANGE_MASK, EXCHANGE_MASK, [&](auto on) {
     PolyPackExchange<typename decltype(on)::type> f(atomKK, this, k_buf, k_sendlist, k_copylist);
-    Kokkos::parallel_for(nsend, f);
+    polydem_kk::for_range<typename decltype(on)::type::execution_space>(0, nsend, f);
   });
   return nsend * EXCHANGE_SIZE;
 }
@@ -1042,12 +1043,12 @@ int AtomVecPolyhedronKokkos::unpack_exchange_kokkos(DAT::tdual_xfloat_2d &k_buf,
   if (space == Host) {
     k_count.modify<LMPHostType>();
     PolyUnpackExchange<LMPHostType> f(atomKK, this, k_buf, k_count, dim, lo, hi);
-    Kokkos::parallel_for(nincoming, f);
+    polydem_kk::for_range<LMPHostType::execution_space>(0, nincoming, f);
   } else {
     k_count.modify<LMPHostType>();
     k_count.sync<LMPDeviceType>();
     PolyUnpackExchange<LMPDeviceType> f(atomKK, this, k_buf, k_count, dim, lo, hi);
-    Kokkos::parallel_for(nincoming, f);
+    polydem_kk::for_range<LMPDeviceType::execution_space>(0, nincoming, f);
     k_count.modify<LMPDeviceType>();
     k_count.sync<LMPHostType>();
   }

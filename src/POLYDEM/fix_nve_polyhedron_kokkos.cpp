@@ -9,6 +9,7 @@
 #include "atom_vec_polyhedron_kokkos.h"
 #include "error.h"
 #include "polydem_kokkos_masks.h"
+#include "polydem_launch_kokkos.h"
 #include "polydem_rigid.h"
 #include "polydem_shape_template.h"
 
@@ -178,7 +179,7 @@ void FixNVEPolyhedronKokkos<DeviceType>::integrate(int nlocal)
 
   FixNVEPolyhedronKokkosFunctor<DeviceType, MODE> functor(atomKK, avecKK, k_props, dtv, dtf,
                                                           groupbit);
-  Kokkos::parallel_for(nlocal, functor);
+  polydem_kk::for_range<typename DeviceType::execution_space>(0, nlocal, functor);
 
   atomKK->modified(execution_space, modify);
 }

@@ -242,8 +242,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
     scan.groupbit = groupbit;
     scan.n = nlocal;
     size_t n = 0;
-    Kokkos::parallel_scan(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, nlocal),
-                          scan, n);
+    polydem_kk::scan_range<typename DeviceType::execution_space>(0, nlocal, scan, n);
     near_first_n = nlocal;
     near_lists_held = (bigint) n;
     if (d_near_count.extent(0) < std::max<size_t>(1, n)) {
@@ -302,8 +301,7 @@ template <class DeviceType> void FixWallMeshKokkos<DeviceType>::compute_forces(b
   for (int i0 = 0; i0 < nlocal; i0 += batch) {
     k.ibase = i0;
     WallTally sum;
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<typename Kernel::ExecSpace>(0, std::min(batch, nlocal - i0)), k,
-                            sum);
+    polydem_kk::reduce_range<typename Kernel::ExecSpace>(0, std::min(batch, nlocal - i0), k, sum);
     total += sum;
   }
   atomKK->modified(execution_space, datamask_modify);

@@ -189,8 +189,7 @@ template <class DeviceType> void PairEllipsoidKokkos<DeviceType>::compute(int ef
   fn.dt = update->dt;
 
   EllReduce red;
-  Kokkos::parallel_reduce(
-      Kokkos::RangePolicy<typename DeviceType::execution_space>(0, list->inum), fn, red);
+  polydem_kk::reduce_range<typename DeviceType::execution_space>(0, list->inum, fn, red);
   if (use_history) {
     auto *fh = (FixNeighHistoryKokkos<DeviceType> *) fix_history;
     fh->k_firstflag.template modify<DeviceType>();

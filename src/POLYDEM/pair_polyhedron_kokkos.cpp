@@ -294,7 +294,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
     polydem_kk::reset_partners(d_npartner, nlocal, atom->nmax, "polyhedron/kk:npartner");
   cnt.npartner = d_npartner;
   cnt.nlocal = nlocal;
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), cnt);
+  polydem_kk::for_range<typename DeviceType::execution_space>(0, inum, cnt);
   if (cnt.count_partners) ensure_partners(nlocal);
 
   PolyScanFunctor<DeviceType> scan;
@@ -302,8 +302,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
   scan.offset = d_offset;
   scan.inum = inum;
   int total = 0;
-  Kokkos::parallel_scan(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum + 1),
-                        scan, total);
+  polydem_kk::scan_range<typename DeviceType::execution_space>(0, inum + 1, scan, total);
   npairs = total;
   if ((int) d_pairs.extent(0) < npairs)
     d_pairs = Kokkos::View<int *[2], DeviceType>("polyhedron/kk:pairs", npairs + npairs / 5 + 16);
@@ -311,7 +310,7 @@ template <class DeviceType> void PairPolyhedronKokkos<DeviceType>::build_pairs()
   if (npairs == 0) return;    // nothing to list (a dilute or wall-only step)
   cnt.fill = 1;
   cnt.pairs = d_pairs;
-  Kokkos::parallel_for(Kokkos::RangePolicy<typename DeviceType::execution_space>(0, inum), cnt);
+  polydem_kk::for_range<typename DeviceType::execution_space>(0, inum, cnt);
 }
 
 // shared with ellipsoid/kk: polydem_history_kokkos.h
@@ -385,8 +384,7 @@ template <class DeviceType> template <int MF> void PairPolyhedronKokkos<DeviceTy
     fn.first = first;
     if (store_contacts) Kokkos::deep_copy(d_records, 0.0);
     PolyReduce red;
-    Kokkos::parallel_reduce(Kokkos::RangePolicy<typename DeviceType::execution_space>(first, last),
-                            fn, red);
+    polydem_kk::reduce_range<ExecSpace>(first, last, fn, red);
     total += red;
     if (store_contacts) gather_records(last - first);
   }

@@ -9,6 +9,7 @@
 #define POLYDEM_TALLY_KOKKOS_H
 
 #include "polydem_contact_law.h"
+#include "polydem_launch_kokkos.h"
 
 #include <Kokkos_Core.hpp>
 
@@ -98,37 +99,40 @@ KOKKOS_INLINE_FUNCTION void ev_tally_xyz(Red &red, const TallyFlags &t, const EA
 // dodecahedra's step with 12 per contact)
 template <class ExecSpace> inline bool needs_atomics()
 {
-  return !(Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible &&
-           ExecSpace::concurrency() == 1);
+  return !one_host_thread<ExecSpace>();
 }
 
 // Which preallocated workspace a kernel's work item uses. CPU back ends (the
 // execution space reaches host memory): the thread's (Kokkos's UniqueToken),
 // so that all items run in one kernel with a workspace that stays in the
-// thread's cache; GPUs: the item's slot in its batch. count() is the number
-// of workspaces to allocate (the batch size on GPUs).
+// thread's cache, and with one thread the first, without asking the token;
+// GPUs: the item's slot in its batch. count() (on the host, before the
+// kernel) is the number of workspaces to allocate (the batch size on GPUs).
 template <class ExecSpace> struct WorkspaceSlot {
   static constexpr bool per_thread =
       Kokkos::SpaceAccessibility<ExecSpace, Kokkos::HostSpace>::accessible;
   typename std::conditional<per_thread, Kokkos::Experimental::UniqueToken<ExecSpace>, int>::type
       token{};
-  int count(int batch) const
+  bool alone = false;    // one host thread (one_host_thread)
+  int count(int batch)
   {
-    if constexpr (per_thread)
+    if constexpr (per_thread) {
+      alone = one_host_thread<ExecSpace>();
       return token.size();
-    else
+    } else
       return batch;
   }
   KOKKOS_INLINE_FUNCTION int acquire(int slot_in_batch) const
   {
     if constexpr (per_thread)
-      return token.acquire();
+      return alone ? 0 : token.acquire();
     else
       return slot_in_batch;
   }
   KOKKOS_INLINE_FUNCTION void release(int w) const
   {
-    if constexpr (per_thread) token.release(w);
+    if constexpr (per_thread)
+      if (!alone) token.release(w);
     (void) w;
   }
 };

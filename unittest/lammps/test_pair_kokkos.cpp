@@ -23,6 +23,7 @@
 #include "neighbor.h"
 #include "pair_polyhedron.h"
 #include "pair_polyhedron_kokkos.h"
+#include "polydem_launch_kokkos.h"
 
 #include <Kokkos_Core.hpp>
 #include <gtest/gtest.h>
@@ -676,4 +677,77 @@ TEST(PairKokkos, RunsTheRequestedThreads)
     std::printf("[threads] %s: concurrency %d, %d distinct threads ran\n", Exec::name(),
                 Exec::concurrency(), distinct);
   EXPECT_EQ(distinct, want);
+}
+
+// polydem_launch_kokkos.h: on one host thread the kernels run in place, with
+// the results of Kokkos's own launch bit for bit (the same items in the same
+// order: a sum of 10,000 terms of mixed magnitude, whose value depends on
+// the order); with N threads they are Kokkos's launches, on N threads.
+namespace {
+struct LaunchSum {
+  typedef double value_type;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, double &s) const
+  {
+    s += 1.0 / (1.0 + i) + ((i % 7) ? 1e-9 * i : 1e3);
+  }
+};
+struct LaunchScan {
+  typedef long value_type;
+  Kokkos::View<long *, Kokkos::DefaultExecutionSpace> first;
+  KOKKOS_INLINE_FUNCTION void operator()(const int i, long &partial, const bool final) const
+  {
+    if (final) first(i) = partial;
+    partial += i % 5;
+  }
+};
+}    // namespace
+
+TEST(PairKokkos, LaunchHelpersAreKokkosLaunches)
+{
+  Lmp kk(KK);
+  kk.cmds(setup());
+  kk.cmd("run 0");
+  using Exec = Kokkos::DefaultExecutionSpace;
+  const int want = polydem_test::kk_threads();
+  EXPECT_EQ(polydem_kk::one_host_thread<Exec>(), want == 1);
+  const int n = 10000;
+
+  double in_place = -1.0, kokkos = -2.0;
+  polydem_kk::reduce_range<Exec>(0, n, LaunchSum(), in_place);
+  Kokkos::parallel_reduce(Kokkos::RangePolicy<Exec>(0, n), LaunchSum(), kokkos);
+  if (want == 1)
+    EXPECT_EQ(in_place, kokkos);    // the same sum in the same order
+  else
+    EXPECT_NEAR(in_place, kokkos, 1e-12 * std::fabs(kokkos));
+
+  LaunchScan scan;
+  scan.first = Kokkos::View<long *, Exec>("first", n);
+  long total = -1;
+  polydem_kk::scan_range<Exec>(0, n, scan, total);
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), scan.first);
+  long expect = 0;
+  int wrong = 0;
+  for (int i = 0; i < n; i++) {
+    wrong += h(i) != expect;
+    expect += i % 5;
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(total, expect);
+
+  // for_range hands its items to as many distinct threads as Kokkos runs
+  Kokkos::Experimental::UniqueToken<Exec> token;
+  Kokkos::View<int *, Exec> seen("seen", token.size()), done("done", n);
+  polydem_kk::for_range<Exec>(0, n, KOKKOS_LAMBDA(const int i) {
+    const int id = token.acquire();
+    seen(id) = 1;
+    done(i) += 1;
+    token.release(id);
+  });
+  auto hs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), seen);
+  auto hd = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), done);
+  int distinct = 0, once = 0;
+  for (int i = 0; i < (int) hs.extent(0); i++) distinct += hs(i);
+  for (int i = 0; i < n; i++) once += hd(i) == 1;
+  EXPECT_EQ(distinct, want);
+  EXPECT_EQ(once, n);
 }
