@@ -649,36 +649,6 @@ TEST(PairKokkos, PlainRestartFileContinuedByKokkos)
   }
 }
 
-// The *_threads entries (POLYDEM_KK_THREADS=N, issue 19) must really run N
-// threads: Kokkos's concurrency is N, and a parallel_for hands its work to N
-// distinct threads (UniqueToken ids; each id is held by one thread at a time,
-// so the stores into seen() do not race).
-TEST(PairKokkos, RunsTheRequestedThreads)
-{
-  Lmp kk(KK);
-  kk.cmds(setup());
-  kk.cmd("run 0");
-  using Exec = Kokkos::DefaultExecutionSpace;
-  const int want = polydem_test::kk_threads();
-  EXPECT_EQ(Exec::concurrency(), want) << Exec::name();
-  Kokkos::Experimental::UniqueToken<Exec> token;
-  Kokkos::View<int *, Exec> seen("seen", token.size());
-  Kokkos::parallel_for(
-      "polydem_thread_ids", Kokkos::RangePolicy<Exec>(0, 1 << 20), KOKKOS_LAMBDA(const int) {
-        const int id = token.acquire();
-        seen(id) = 1;
-        token.release(id);
-      });
-  Kokkos::fence();
-  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), seen);
-  int distinct = 0;
-  for (int i = 0; i < (int) h.extent(0); i++) distinct += h(i);
-  if (me() == 0)
-    std::printf("[threads] %s: concurrency %d, %d distinct threads ran\n", Exec::name(),
-                Exec::concurrency(), distinct);
-  EXPECT_EQ(distinct, want);
-}
-
 // polydem_launch_kokkos.h: on one host thread the kernels run in place, with
 // the results of Kokkos's own launch bit for bit (the same items in the same
 // order: a sum of 10,000 terms of mixed magnitude, whose value depends on
@@ -700,18 +670,60 @@ struct LaunchScan {
     partial += i % 5;
   }
 };
+
+// how many distinct threads run the items of launch(n, item) (UniqueToken
+// ids; each id is held by one thread at a time, so the stores into seen()
+// do not race), and whether each item ran once
+template <class Launch> int distinct_threads(const Launch &launch, int n, bool &each_once)
+{
+  using Exec = Kokkos::DefaultExecutionSpace;
+  Kokkos::Experimental::UniqueToken<Exec> token;
+  Kokkos::View<int *, Exec> seen("seen", token.size()), done("done", n);
+  launch(n, KOKKOS_LAMBDA(const int i) {
+    const int id = token.acquire();
+    seen(id) = 1;
+    done(i) += 1;
+    token.release(id);
+  });
+  Kokkos::fence();
+  auto hs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), seen);
+  auto hd = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), done);
+  int distinct = 0, once = 0;
+  for (int i = 0; i < (int) hs.extent(0); i++) distinct += hs(i);
+  for (int i = 0; i < n; i++) once += hd(i) == 1;
+  each_once = once == n;
+  return distinct;
+}
 }    // namespace
 
-TEST(PairKokkos, LaunchHelpersAreKokkosLaunches)
+// The *_threads entries (POLYDEM_KK_THREADS=N, issue 19) must really run N
+// threads: Kokkos's concurrency is N, and a parallel_for hands its work to N
+// distinct threads; so does polydem_kk::for_range, and the launch helpers
+// give Kokkos's results.
+TEST(PairKokkos, RunsTheRequestedThreads)
 {
   Lmp kk(KK);
   kk.cmds(setup());
   kk.cmd("run 0");
   using Exec = Kokkos::DefaultExecutionSpace;
   const int want = polydem_test::kk_threads();
+  EXPECT_EQ(Exec::concurrency(), want) << Exec::name();
   EXPECT_EQ(polydem_kk::one_host_thread<Exec>(), want == 1);
-  const int n = 10000;
+  bool once = false;
+  const int distinct = distinct_threads(
+      [](int n, const auto &item) { Kokkos::parallel_for(Kokkos::RangePolicy<Exec>(0, n), item); },
+      1 << 20, once);
+  EXPECT_TRUE(once);
+  if (me() == 0)
+    std::printf("[threads] %s: concurrency %d, %d distinct threads ran\n", Exec::name(),
+                Exec::concurrency(), distinct);
+  EXPECT_EQ(distinct, want);
+  EXPECT_EQ(distinct_threads([](int n, const auto &item) { polydem_kk::for_range<Exec>(0, n, item); },
+                             10000, once),
+            want);
+  EXPECT_TRUE(once);
 
+  const int n = 10000;
   double in_place = -1.0, kokkos = -2.0;
   polydem_kk::reduce_range<Exec>(0, n, LaunchSum(), in_place);
   Kokkos::parallel_reduce(Kokkos::RangePolicy<Exec>(0, n), LaunchSum(), kokkos);
@@ -733,21 +745,4 @@ TEST(PairKokkos, LaunchHelpersAreKokkosLaunches)
   }
   EXPECT_EQ(wrong, 0);
   EXPECT_EQ(total, expect);
-
-  // for_range hands its items to as many distinct threads as Kokkos runs
-  Kokkos::Experimental::UniqueToken<Exec> token;
-  Kokkos::View<int *, Exec> seen("seen", token.size()), done("done", n);
-  polydem_kk::for_range<Exec>(0, n, KOKKOS_LAMBDA(const int i) {
-    const int id = token.acquire();
-    seen(id) = 1;
-    done(i) += 1;
-    token.release(id);
-  });
-  auto hs = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), seen);
-  auto hd = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), done);
-  int distinct = 0, once = 0;
-  for (int i = 0; i < (int) hs.extent(0); i++) distinct += hs(i);
-  for (int i = 0; i < n; i++) once += hd(i) == 1;
-  EXPECT_EQ(distinct, want);
-  EXPECT_EQ(once, n);
 }
